@@ -1,0 +1,53 @@
+# mirage: the front door.  `make render` and `make test` take a fresh Debian 12 machine
+# from nothing to working: they install the Debian packages the project needs, configure,
+# build and then render or test.
+#
+#   make                 install what is missing, build build/mirage
+#   make render          compile scenes/desert.pov to a banded medium and render it with POV-Ray
+#                        (SCENE=scenes/road.pov W=640 H=480 TOL=0.5 to choose)
+#   make test            build and run every test through CTest
+#   make bench           Google Benchmark for the path kernels
+#   make compare         band models against the continuous tracer: error against run time
+#   make clean
+
+BUILD   ?= build
+SCENE   ?= scenes/desert.pov
+W       ?= 320
+H       ?= 240
+TOL     ?=
+JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+NAME    := $(basename $(notdir $(SCENE)))
+
+# Debian 12 packages the build, the tests and the renders need.
+PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev openimageio-tools \
+            libglm-dev libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
+
+.PHONY: all deps configure build test render bench compare clean
+
+all: build
+
+deps:
+	@sh tools/install-deps.sh $(PACKAGES)
+
+$(BUILD)/CMakeCache.txt: CMakeLists.txt | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+configure: deps $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+render: build
+	$(BUILD)/mirage compile $(SCENE) --width $(W) --height $(H) $(if $(TOL),--tolerance $(TOL)) \
+	    -o $(BUILD)/render/$(NAME)
+	povray $(BUILD)/render/$(NAME)/$(NAME).ini
+	@echo "image: $(BUILD)/render/$(NAME).png"
+
+bench: build
+	$(BUILD)/mirage_bench
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,168 @@
+// The parsed scene: what `mirage compile` and `mirage trace` read from a .pov file.
+// Plain data; the parser (scene/parser.h) fills it, the tracer and the compiler read it.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace mirage {
+
+/// A place in a source file, 1-based line and column.
+struct FileLoc {
+    std::string file;
+    int line = 0;
+    int column = 0;
+};
+
+/// A POV-Ray colour: linear rgb plus filter and transmit.
+struct Colour {
+    glm::dvec3 rgb{0.0};
+    double filter = 0.0;
+    double transmit = 0.0;
+};
+
+/// An affine map from an object's (or a pattern's) own space to world space.
+struct Transform {
+    glm::dmat4 matrix{1.0};
+    glm::dmat4 inverse{1.0};
+};
+
+struct ColourMapEntry {
+    double position = 0.0;
+    Colour colour;
+};
+
+enum class PigmentKind { Solid, Checker, Gradient };
+
+/// A pigment of the supported subset.  Patterns are evaluated at
+/// `transform.inverse * world_point` (the parser composes the transforms that apply).
+struct Pigment {
+    PigmentKind kind = PigmentKind::Solid;
+    Colour colour;                           // Solid
+    Colour checker[2];                       // Checker: the two colours, in POV-Ray's order
+    glm::dvec3 gradient_axis{0.0, 1.0, 0.0};  // Gradient: the vector given after `gradient`
+    std::vector<ColourMapEntry> colour_map;  // Gradient: POV-Ray's default map when absent
+    Transform transform;
+};
+
+/// POV-Ray 3.7's finish subset, with POV-Ray's defaults.
+struct Finish {
+    glm::dvec3 ambient{0.1};
+    glm::dvec3 emission{0.0};
+    double diffuse = 0.6;
+    double brilliance = 1.0;
+    double specular = 0.0;
+    double roughness = 0.05;
+    double phong = 0.0;
+    double phong_size = 40.0;
+    glm::dvec3 reflection{0.0};  // reflection colour (POV-Ray's reflection_max)
+};
+
+struct Texture {
+    Pigment pigment;
+    Finish finish;
+};
+
+// Shapes, in their own space as written in the scene file.
+struct Sphere {
+    glm::dvec3 center{0.0};
+    double radius = 1.0;
+};
+struct Plane {  // points p with dot(normal, p) = distance; normal normalised by the parser
+    glm::dvec3 normal{0.0, 1.0, 0.0};
+    double distance = 0.0;
+};
+struct Box {
+    glm::dvec3 corner1{-1.0};
+    glm::dvec3 corner2{1.0};
+};
+struct Cylinder {
+    glm::dvec3 base{0.0};
+    glm::dvec3 cap{0.0, 1.0, 0.0};
+    double radius = 1.0;
+    bool open = false;
+};
+struct Disc {
+    glm::dvec3 center{0.0};
+    glm::dvec3 normal{0.0, 1.0, 0.0};
+    double radius = 1.0;
+    double hole_radius = 0.0;
+};
+
+using Shape = std::variant<Sphere, Plane, Box, Cylinder, Disc>;
+
+/// One primitive of the scene: `union`s and `object`s are flattened by the parser, every
+/// primitive carries its world transform and its resolved texture (its own, the one it
+/// inherits from an enclosing union, or POV-Ray's default).
+struct Primitive {
+    Shape shape;
+    Transform transform;  // shape space -> world space
+    Texture texture;
+    bool no_shadow = false;
+    bool inverse = false;
+    FileLoc loc;
+};
+
+struct PointLight {
+    glm::dvec3 location{0.0};
+    glm::dvec3 colour{1.0};
+    bool shadowless = false;
+    FileLoc loc;
+};
+
+/// A perspective camera, held as POV-Ray holds it after parsing: the final location,
+/// direction, right, up and sky vectors with look_at, angle and transforms applied.
+struct Camera {
+    glm::dvec3 location{0.0};
+    glm::dvec3 direction{0.0, 0.0, 1.0};
+    glm::dvec3 right{1.33, 0.0, 0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    glm::dvec3 sky{0.0, 1.0, 0.0};
+    FileLoc loc;
+};
+
+struct SkySphere {
+    std::vector<Pigment> pigments;  // layered, the first on top, as POV-Ray
+    Transform transform;
+    FileLoc loc;
+};
+
+struct GlobalSettings {
+    double assumed_gamma = 1.0;
+    int max_trace_level = 5;
+    glm::dvec3 ambient_light{1.0};
+};
+
+/// A value declared at the top level (#declare), kept for tools that read settings from
+/// the scene, such as the Mirage_... atmosphere declarations.
+struct Declared {
+    std::variant<double, glm::dvec3, std::string> value;
+    FileLoc loc;
+};
+
+/// Something the parser skipped in lenient mode (an object kind outside the subset).
+struct Skipped {
+    std::string what;
+    FileLoc loc;
+};
+
+struct Scene {
+    std::string file;
+    Camera camera;  // POV-Ray's default camera when the file has none
+    bool has_camera = false;
+    std::vector<PointLight> lights;
+    std::vector<Primitive> primitives;
+    Colour background;
+    std::optional<SkySphere> sky_sphere;
+    GlobalSettings global;
+    std::map<std::string, Declared> symbols;
+    std::vector<std::string> messages;  // #warning and #debug output, with their place
+    std::vector<Skipped> skipped;
+};
+
+}  // namespace mirage
