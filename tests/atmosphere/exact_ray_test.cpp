@@ -108,3 +108,90 @@ TEST(ExactRay, ExtremeFamiliesPassAsAccuratelyAsTheirConditioningAllows) {
 
 }  // namespace
 }  // namespace mirage
+
+namespace mirage {
+namespace {
+
+struct Case {
+    const char* preset;
+    double y0, elev;
+};
+
+// A ray started at a point of another ray's path, in the direction of that path, is the same
+// ray: the invariant and the closed forms agree wherever the second ray starts.
+TEST(ExactRay, RayStartedOnAnotherRaysPathContinuesIt) {
+    const Case cases[] = {{"paper", 1.5, -0.2},        {"paper", 1.5, 0.1},
+                          {"hot-road", 1.5, -2e-3},    {"hot-road", 0.3, -1e-4},
+                          {"paper-superior", 1.0, 0.05}, {"paper-superior", 1.0, -0.3},
+                          {"cold-sea", 2.0, 1e-3},     {"cold-sea", 2.0, -5e-3}};
+    for (const auto& c : cases) {
+        auto a = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
+        ASSERT_TRUE(a.ok());
+        const double reach = a->hits_ground ? a->dz_ground : 4.0 / a->c;
+        for (double f : {0.1, 0.35, 0.6}) {
+            const double d = f * reach;
+            const double y = height_at(*a, d);
+            const double slope = slope_at(*a, d);
+            auto b = make_exact_ray(*preset_profile(c.preset), y, M_PI / 2 - std::atan(slope));
+            ASSERT_TRUE(b.ok()) << b.message();
+            EXPECT_NEAR(b->beta, a->beta, 1e-13 * a->beta) << c.preset << " " << c.elev;
+            EXPECT_EQ(b->hits_ground, a->hits_ground) << c.preset << " " << c.elev;
+            if (a->hits_ground) {
+                EXPECT_NEAR(b->dz_ground, a->dz_ground - d, 1e-9 * a->dz_ground);
+            }
+            for (double g : {0.05, 0.2, 0.35}) {
+                const double e = g * reach;
+                EXPECT_NEAR(height_at(*b, e), height_at(*a, d + e),
+                            1e-10 * std::max(c.y0, std::fabs(height_at(*a, d + e))))
+                    << c.preset << " " << c.elev << " from " << d << " at +" << e;
+            }
+        }
+    }
+}
+
+TEST(ExactRay, PathIsSymmetricAboutItsTurningPoint) {
+    const Case cases[] = {{"paper", 1.5, -0.2}, {"hot-road", 1.5, -3e-3},
+                          {"paper-superior", 1.0, 0.05}, {"cold-sea", 2.0, 2e-3}};
+    for (const auto& c : cases) {
+        auto r = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
+        ASSERT_TRUE(r.ok());
+        ASSERT_EQ(r->turn_kind, TurnKind::Ahead) << c.preset;
+        EXPECT_NEAR(height_at(*r, r->dz_turn), r->y_turn, 1e-13 * c.y0);
+        EXPECT_NEAR(slope_at(*r, r->dz_turn), 0.0, 1e-9);
+        for (double f : {0.1, 0.5, 0.9, 1.0}) {
+            const double u = f * r->dz_turn;
+            EXPECT_NEAR(height_at(*r, r->dz_turn - u), height_at(*r, r->dz_turn + u), 1e-12 * c.y0)
+                << c.preset << " u = " << u;
+            EXPECT_NEAR(slope_at(*r, r->dz_turn - u), -slope_at(*r, r->dz_turn + u),
+                        1e-10 * std::fabs(slope_at(*r, r->dz_turn + u)))
+                << c.preset << " u = " << u;
+        }
+    }
+}
+
+// Rays that just touch the ground: k^2 = 1 separates turning rays from ground hits; both
+// sides stay finite and consistent.
+TEST(ExactRay, RaysThatJustTouchTheGroundAreConsistent) {
+    const Profile p = *preset_profile("paper");
+    const double y0 = 1.5;
+    const double eta_p = eta(p, y0);
+    for (double k2 : {1.0 - 1e-12, 1.0 + 1e-12}) {
+        const double cos_i = -std::sqrt(k2 - std::exp(-p.alpha * y0)) * p.eta1 / eta_p;
+        auto r = make_exact_ray(p, y0, std::acos(cos_i));
+        ASSERT_TRUE(r.ok());
+        EXPECT_NEAR(r->k2, k2, 1e-14);
+        EXPECT_NEAR(r->y_turn, 0.0, 1e-12);
+        EXPECT_EQ(r->hits_ground, k2 > 1.0);
+        EXPECT_TRUE(std::isfinite(r->dz_turn));
+        if (r->hits_ground) {
+            // It hits the ground very close to the vertex it never reaches.
+            EXPECT_NEAR(r->dz_ground, r->dz_turn, 1e-5 * r->dz_turn);
+            EXPECT_NEAR(height_at(*r, r->dz_ground), 0.0, 1e-12);
+        } else {
+            EXPECT_GT(height_at(*r, r->dz_turn), 0.0);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace mirage
