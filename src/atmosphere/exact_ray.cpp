@@ -313,6 +313,40 @@ double curvature_at_height(const ExactRay& r, double y) {
            (2.0 * r.beta * r.beta);
 }
 
+double distance_to_height(const ExactRay& r, double y) {
+    if (y == r.y0) return 0.0;
+    const bool down = y < r.y0;
+    if (down != (r.sg < 0)) return kInf;  // moving away from y
+    // The monotone stretch: up to the turning point ahead, the ground, or far away.
+    double end = kInf;
+    if (r.turn_kind == TurnKind::Ahead) end = r.dz_turn;
+    if (r.hits_ground) end = std::min(end, r.dz_ground);
+    const double y_end = std::isfinite(end) ? height_at(r, end) : (down ? -kInf : kInf);
+    if (down ? y < y_end : y > y_end) return kInf;
+    if (r.s > 0 && r.c > 0.0) {
+        // Inferior, closed form: F = a e^x + b e^-x (a, b the coefficients of the height's
+        // form), solved for the root on the way to y (before the vertex going down).
+        const double F = std::exp(0.5 * r.profile.alpha * (y - r.y0));
+        const double a = std::exp(r.ln_coef_hi), b = std::exp(r.ln_coef_lo);
+        const double disc = std::sqrt(std::max(0.0, F * F - 4.0 * a * b));
+        const double x = down ? std::log(2.0 * b) - std::log(F + disc)
+                              : std::log(F + disc) - std::log(2.0 * a);
+        return x / r.c;
+    }
+    double lo = 0.0, hi = end;
+    if (!std::isfinite(hi)) {
+        hi = 1.0;
+        while ((down ? height_at(r, hi) > y : height_at(r, hi) < y) && hi < 1e12) hi *= 2.0;
+        if (hi >= 1e12) return kInf;
+    }
+    for (int i = 0; i < 100 && hi - lo > 1e-15 * hi; ++i) {
+        const double m = 0.5 * (lo + hi);
+        const double hm = height_at(r, m);
+        if (down ? hm > y : hm < y) lo = m; else hi = m;
+    }
+    return 0.5 * (lo + hi);
+}
+
 double asymptotic_slope(const ExactRay& r) {
     if (r.s == 0) return r.cos_i >= 0.0 ? r.cos_i / r.sin_i : kNaN;
     if (r.s > 0) return r.hits_ground ? kNaN : r.profile.eta1 * r.q / r.beta;

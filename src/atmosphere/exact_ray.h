@@ -89,6 +89,10 @@ double slope_at(const ExactRay& ray, double dz);
 /// d2y/dz2 of any ray of this invariant at height y: s alpha eta1^2 exp(-alpha y) / (2 beta^2).
 double curvature_at_height(const ExactRay& ray, double y);
 
+/// The first horizontal distance at which the path reaches height y while still moving
+/// towards it from y0 (before any turning point), or +infinity if it never does.
+double distance_to_height(const ExactRay& ray, double y);
+
 /// The slope the path tends to far from the start, for rays that never reach the ground
 /// (inferior rays after their turn, escaping superior rays going up); NaN otherwise.
 double asymptotic_slope(const ExactRay& ray);

@@ -1,0 +1,97 @@
+#include "layers/band_tracer3d.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "util/check.h"
+
+namespace mirage {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+double distance_to_box_edge(const HorizontalBox& b, double x, double z, double hx, double hz) {
+    double t = kInf;
+    if (hx > 0.0) t = std::min(t, (b.x1 - x) / hx);
+    if (hx < 0.0) t = std::min(t, (b.x0 - x) / hx);
+    if (hz > 0.0) t = std::min(t, (b.z1 - z) / hz);
+    if (hz < 0.0) t = std::min(t, (b.z0 - z) / hz);
+    return std::max(t, 0.0);
+}
+
+Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
+                               const glm::dvec3& dir_in, const HorizontalBox& scene,
+                               const HorizontalBox& layers, int max_events) {
+    MIRAGE_CHECK(origin.y > 0.0);
+    // The indices POV-Ray gets: each layer's index divided by the camera layer's.
+    const int k0 = s.layer_at(origin.y);
+    const double n_cam = s.index(k0);
+    auto rel_index = [&](int k) { return s.index(k) / n_cam; };
+
+    Trace3dOutcome out;
+    glm::dvec3 p = origin;
+    glm::dvec3 d = glm::normalize(dir_in);
+    int k = k0;
+    bool in_scene = true;
+    const int top = s.boundaries();
+    for (int events = 0;; ++events) {
+        if (events >= max_events) {
+            out.cut_off = true;
+            return out;
+        }
+        // Next boundary along d, and the edges of the scene and of the layers.
+        double t_plane = kInf;
+        int next = k;
+        if (d.y > 0.0 && k < top) {
+            t_plane = (s.heights[k] - p.y) / d.y;
+            next = k + 1;
+        } else if (d.y < 0.0) {
+            const double floor = k == 0 ? 0.0 : s.heights[k - 1];
+            t_plane = (floor - p.y) / d.y;
+            next = k - 1;  // -1: the ground
+        }
+        const double hlen = std::hypot(d.x, d.z);
+        const double t_scene = in_scene && hlen > 0.0
+                                   ? distance_to_box_edge(scene, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
+                                   : kInf;
+        const double t_layers = hlen > 0.0
+                                    ? distance_to_box_edge(layers, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
+                                    : kInf;
+        if (in_scene && t_scene <= t_plane) {
+            out.scene_point = p + t_scene * d;
+            out.scene_dir = d;
+            in_scene = false;
+        }
+        if (t_layers <= t_plane || !std::isfinite(t_plane)) {
+            out.sky = d.y > 0.0;
+            out.final_dir = d;
+            return out;
+        }
+        p += t_plane * d;
+        if (next < 0) {  // the ground
+            if (in_scene) {
+                out.ground = true;
+                out.scene_point = glm::dvec3(p.x, 0.0, p.z);
+                out.scene_dir = d;
+            }
+            return out;
+        }
+        ++out.crossings;
+        // Snell's law at the horizontal boundary, as POV-Ray: eta = n_from / n_to.
+        const double eta = rel_index(k) / rel_index(next);
+        const glm::dvec3 normal(0.0, d.y > 0.0 ? -1.0 : 1.0, 0.0);  // facing the incoming ray
+        const glm::dvec3 t = glm::refract(d, normal, eta);
+        if (t == glm::dvec3(0.0)) {
+            d = glm::reflect(d, normal);  // total internal reflection (GLM returns zero)
+        } else {
+            d = glm::normalize(t);
+            k = next;
+        }
+    }
+}
+
+}  // namespace mirage

@@ -1,0 +1,44 @@
+#include "layers/outcome.h"
+
+#include <cmath>
+
+#include "atmosphere/exact_ray.h"
+#include "util/check.h"
+
+namespace mirage {
+
+BandOutcome exact_outcome(const Profile& profile, double y0, double elevation, double scene_dz) {
+    BandOutcome out;
+    auto ray = make_exact_ray(profile, y0, M_PI / 2 - elevation);
+    MIRAGE_CHECK(ray.ok());
+    if (ray->hits_ground && ray->dz_ground < scene_dz) {
+        out.ground = true;
+        out.dz = ray->dz_ground;
+        out.y = 0.0;
+        return out;
+    }
+    out.dz = scene_dz;
+    out.y = height_at(*ray, scene_dz);
+    out.slope = slope_at(*ray, scene_dz);
+    out.sky = !ray->hits_ground;
+    out.final_slope = out.sky ? asymptotic_slope(*ray) : 0.0;
+    MIRAGE_CHECK(std::isfinite(out.y) && std::isfinite(out.slope));
+    return out;
+}
+
+double outcome_error_rad(double y0, const BandOutcome& exact, const BandOutcome& model) {
+    const double a_exact = std::atan2(exact.y - y0, exact.dz);
+    const double a_model = std::atan2(model.y - y0, model.dz);
+    double err = std::fabs(a_model - a_exact);
+    if (exact.ground || model.ground) return err;
+    if (exact.sky && model.sky) {
+        err = std::max(err, std::fabs(std::atan(model.final_slope) - std::atan(exact.final_slope)));
+    } else if (exact.sky != model.sky) {
+        // One goes to the sky, the other comes down beyond the scene: compare the directions
+        // in which they leave it.
+        err = std::max(err, std::fabs(std::atan(model.slope) - std::atan(exact.slope)));
+    }
+    return err;
+}
+
+}  // namespace mirage
