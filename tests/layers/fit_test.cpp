@@ -77,11 +77,11 @@ TEST(Fit, ReportsTheErrorItReachedWhenTheToleranceIsOutOfReach) {
     const Profile p = *preset_profile("paper");
     const auto rays = level_column(46.83, 240, 60.0);
     FitSettings st;
-    st.tolerance_px = 0.02;
+    st.tolerance_px = 0.001;
     const FitResult f = fit_layers(p, 1.5, rays, st);
     const Measured m = measure(f, p, 1.5, rays);
     EXPECT_LE(m.max_crossings, 255);
-    EXPECT_GT(f.quality.max_error_px, 0.02);
+    EXPECT_GT(f.quality.max_error_px, 0.001);
     EXPECT_NEAR(f.quality.max_error_px, m.max_px, 1e-6);
 }
 
