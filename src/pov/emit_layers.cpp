@@ -1,0 +1,107 @@
+#include "pov/emit_layers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "util/check.h"
+#include "util/format.h"
+
+namespace mirage {
+
+namespace {
+
+// 17 significant digits: every index and height reads back as the same double (the index
+// steps of real air are near 1e-11).
+std::string g17(double v) { return sig(v, 17); }
+
+}  // namespace
+
+std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
+    MIRAGE_CHECK(well_formed(s));
+    const int k_cam = s.layer_at(st.camera_y);
+    const double n_cam = s.index(k_cam);
+    std::ostringstream out;
+    for (const auto& line : st.header) out << "// " << line << "\n";
+    out << "//\n// " << s.boundaries() << " boundaries; the camera at y = " << g17(st.camera_y)
+        << " is in layer " << k_cam << " of index " << g17(n_cam)
+        << ", the index every ior below is relative to.\n";
+    out << "// Planes split at the camera's layer: below it plane { y, h } (inside is below),\n"
+           "// above it plane { -y, -h } (inside is above); each clipped to a thin slab.\n\n";
+    out << "global_settings { max_trace_level 256 }\n\n";
+    out << "#declare Mirage_Layer_Texture = texture {\n"
+           "    pigment { rgbf 1 }\n"
+           "    finish { ambient 0 diffuse 0 specular 0 phong 0 reflection 0 }\n"
+           "}\n\n";
+    const auto& h = s.heights;
+    const int N = s.boundaries();
+    for (int j = 0; j < N; ++j) {
+        // Half-thickness of the clipping slab: well inside the gap to the neighbours.
+        const double below = j == 0 ? h[0] : h[j] - h[j - 1];
+        const double above = j + 1 < N ? h[j + 1] - h[j] : below;
+        double gap = std::min(below, above);
+        if (h[j] < st.camera_y) gap = std::min(gap, st.camera_y - h[j]);
+        if (h[j] > st.camera_y) gap = std::min(gap, h[j] - st.camera_y);
+        const double half = std::max(0.4 * gap, 1e-7 * std::max(1.0, std::fabs(h[j])));
+        const bool under = j < k_cam;  // boundary below the camera
+        // The layer this plane's interior stands for: the one just below (under the camera)
+        // or just above it.
+        const int layer = under ? j : j + 1;
+        const double ior = s.index(layer) / n_cam;
+        out << "plane { " << (under ? "y, " : "-y, ") << (under ? g17(h[j]) : g17(-h[j]))
+            << "\n    clipped_by { box { <" << g17(st.extent.x0) << ", " << g17(h[j] - half)
+            << ", " << g17(st.extent.z0) << ">, <" << g17(st.extent.x1) << ", "
+            << g17(h[j] + half) << ", " << g17(st.extent.z1) << "> } }\n"
+            << "    texture { Mirage_Layer_Texture }\n"
+            << "    interior { ior " << g17(ior) << " }\n"
+            << "    no_shadow\n}\n";
+    }
+    return out.str();
+}
+
+std::string layers_csv(const LayerStack& s, double camera_y) {
+    const int k_cam = s.layer_at(camera_y);
+    const double n_cam = s.index(k_cam);
+    std::ostringstream out;
+    out << "layer,bottom,top,index,eta2_minus_eta0_2,ior_as_emitted,object\n";
+    const int N = s.boundaries();
+    for (int k = 0; k <= N; ++k) {
+        const double bottom = k == 0 ? 0.0 : s.heights[k - 1];
+        const std::string top = k == N ? "inf" : g17(s.heights[k]);
+        out << k << "," << g17(bottom) << "," << top << "," << g17(s.index(k)) << ","
+            << g17(s.excess[k]) << ",";
+        if (k == k_cam) {
+            out << "1,camera layer (no object)\n";
+        } else if (k < k_cam) {
+            out << g17(s.index(k) / n_cam) << ",plane { y, " << g17(s.heights[k]) << " }\n";
+        } else {
+            out << g17(s.index(k) / n_cam) << ",plane { -y, " << g17(-s.heights[k - 1]) << " }\n";
+        }
+    }
+    return out.str();
+}
+
+std::string render_ini(const IniSettings& st) {
+    auto quote = [](const std::string& p) { return "\"" + p + "\""; };
+    std::ostringstream out;
+    out << "; Renders " << st.scene << " with its compiled mirage atmosphere.\n"
+        << "; Written by mirage compile; run: povray <this file>\n"
+        << "Input_File_Name=" << quote(st.scene) << "\n"
+        << "Output_File_Name=" << quote(st.output_image) << "\n"
+        << "Output_File_Type=N\n"
+        << "Width=" << st.width << "\n"
+        << "Height=" << st.height << "\n"
+        << "Display=Off\n"
+        << "Bounding_Method=2\n";
+    if (st.antialias) {
+        out << "Antialias=On\nAntialias_Threshold=" << sig(st.antialias_threshold, 6) << "\n";
+    } else {
+        out << "Antialias=Off\n";
+    }
+    for (const auto& p : st.library_paths) out << "Library_Path=" << quote(p) << "\n";
+    out << "Declare=Mirage_Compiled=1\n";
+    return out.str();
+}
+
+}  // namespace mirage

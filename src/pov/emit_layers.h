@@ -1,0 +1,46 @@
+// Writing a layer design for POV-Ray: the include with the layers, the .ini that renders the
+// scene with them, and the layer table as CSV.
+//
+// The layout follows the measured facts about POV-Ray (DESIGN.md): never adjacent boxes
+// (their coincident faces corrupt POV-Ray's list of interiors); instead planes split at the
+// camera's layer, `plane { y, h }` below it (inside is below) and `plane { -y, -h }` above it
+// (inside is above), each plane's index divided by the camera layer's.  The camera is then
+// inside no layer and POV-Ray's outside index of 1 stands for its layer.  Each plane is
+// clipped to a thin slab around it spanning the layers' horizontal extent, which with +BM2
+// bounds it tightly; layers are invisible (rgbf 1, no finish) and cast no shadow.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "layers/band_tracer3d.h"
+#include "layers/stack.h"
+
+namespace mirage {
+
+struct LayerEmitSettings {
+    double camera_y = 0.0;           // height of the camera, scene units
+    HorizontalBox extent;            // horizontal extent of the layers, scene units
+    std::vector<std::string> header; // comment lines at the top of the include
+};
+
+/// The text of mirage_layers.inc.
+std::string layers_include(const LayerStack& stack, const LayerEmitSettings& settings);
+
+/// The layer table: per layer its bottom and top (scene units), absolute index, eta^2 - eta0^2
+/// and the ior as written to POV-Ray (relative to the camera's layer).
+std::string layers_csv(const LayerStack& stack, double camera_y);
+
+struct IniSettings {
+    std::string scene;                       // the template, absolute
+    std::string output_image;                // absolute
+    int width = 320, height = 240;
+    std::vector<std::string> library_paths;  // absolute, searched in order
+    bool antialias = false;
+    double antialias_threshold = 0.3;
+};
+
+/// The text of the .ini that renders the scene with its compiled layers.
+std::string render_ini(const IniSettings& settings);
+
+}  // namespace mirage
