@@ -374,7 +374,7 @@ Numeric SceneParser::parse_identifier_value(const Token& t) {
     if (!sym) fail(t, "undefined identifier '" + t.text() + "'");
     const Value* value = &sym->value;
     if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
-        if (!peek_punct("[")) {
+        if (!peek_array_index()) {
             fail(peek(0),
                  "expected '[' after the array '" + t.text() + "', got " + describe(peek(0)));
         }

@@ -506,6 +506,7 @@ CameraState SceneParser::parse_camera(const Token& kw) {
         return *result;
     }
     CameraModifiers mods;
+    bool other_type = false;  // lenient mode after an unsupported camera type
     while (true) {
         const Token t = peek(0);
         if (t.is_punct("}")) break;
@@ -536,6 +537,13 @@ CameraState SceneParser::parse_camera(const Token& kw) {
                 next();
                 Token at = peek(0);
                 double angle = parse_float();
+                if (other_type) {
+                    // The angle of another projection (spherical takes two) means nothing
+                    // to the perspective camera the lenient parser falls back to.
+                    accept_comma();
+                    allow_float(0.0);
+                    continue;
+                }
                 if (angle < 0.0) fail(at, "negative viewing angle");
                 if (angle >= 180.0) fail(at, "the viewing angle must be smaller than 180 degrees");
                 mods.angle_deg = angle;
@@ -543,6 +551,7 @@ CameraState SceneParser::parse_camera(const Token& kw) {
             }
             if (const ModifierArity* m = find_arity(kUnsupportedCameraItems, w)) {
                 Token item = next();
+                if (m->arity == Arity::None || w == "cylinder") other_type = true;
                 skip_unsupported(item, m->arity,
                                  "camera item '" + item.text() + "' (only the perspective camera)");
                 continue;

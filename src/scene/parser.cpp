@@ -72,6 +72,11 @@ void SceneParser::parse_top_level() {
                 add_message(item, "warning", "max_trace_level belongs in global_settings");
                 continue;
             }
+            if (w == "default") {
+                // POV-Ray still takes the old form without '#'.
+                directive_default(next());
+                continue;
+            }
             if (w == "fog" || w == "media" || w == "rainbow") {
                 Token item = next();
                 skip_unsupported(item, Arity::Block, "atmospheric effect '" + w + "'");
@@ -172,9 +177,21 @@ void SceneParser::parse_background(const Token& kw) {
 }
 
 void SceneParser::parse_sky_sphere(const Token& kw) {
+    SkySphere sky = parse_sky_sphere_value(kw);
+    if (scene_.sky_sphere) {
+        add_message(kw, "warning", "more than one sky_sphere: the last one is used");
+    }
+    scene_.sky_sphere = std::move(sky);
+}
+
+SkySphere SceneParser::parse_sky_sphere_value(const Token& kw) {
     expect_open_brace(kw);
     SkySphere sky;
     sky.loc = kw.loc();
+    if (const Value* v = peek_identifier_value(0);
+        v && std::holds_alternative<SkySphere>(v->data)) {
+        sky = std::get<SkySphere>(identifier_value(next()).data);
+    }
     while (true) {
         const Token t = peek(0);
         if (t.is_punct("}")) break;
@@ -205,10 +222,7 @@ void SceneParser::parse_sky_sphere(const Token& kw) {
     }
     expect_close_brace(kw);
     if (sky.pigments.empty()) fail(kw, "a sky_sphere needs at least one pigment");
-    if (scene_.sky_sphere) {
-        add_message(kw, "warning", "more than one sky_sphere: the last one is used");
-    }
-    scene_.sky_sphere = std::move(sky);
+    return sky;
 }
 
 void SceneParser::export_symbols() {

@@ -414,21 +414,8 @@ bool SceneParser::parse_ifdef_param() {
     }
     auto sym = lookup(name.text());
     bool defined = sym != nullptr;
-    if (sym && std::holds_alternative<ArrayValue>(sym->value.data) && peek_punct("[")) {
-        auto& array = std::get<ArrayValue>(sym->value.data);
-        std::size_t index = 0;
-        for (std::size_t d = 0; d < array.sizes.size(); ++d) {
-            Token open = expect_punct("[", "for an array index");
-            double v = parse_float();
-            int k = static_cast<int>(v + kEpsilon);
-            if (k < 0 || v < -kEpsilon || k >= array.sizes[d]) {
-                fail(open, "array index " + std::to_string(k) + " out of range 0 to " +
-                               std::to_string(array.sizes[d] - 1));
-            }
-            index = index * static_cast<std::size_t>(array.sizes[d]) + static_cast<std::size_t>(k);
-            expect_punct("]", "after an array index");
-        }
-        defined = array.elements[index] != nullptr;
+    if (sym && std::holds_alternative<ArrayValue>(sym->value.data) && peek_array_index()) {
+        defined = index_array(std::get<ArrayValue>(sym->value.data), name) != nullptr;
     }
     expect_punct(")", "after the identifier");
     return defined;
@@ -438,8 +425,9 @@ void SceneParser::handle_directive(const Token& hash) {
     // The keyword follows the '#' as written (POV-Ray allows white space between them).
     Token keyword = lookahead_.empty() ? raw_next() : next();
     if (keyword.kind() != TokenKind::Identifier) {
-        if (skipping_) return;
-        fail(keyword, "expected a directive after '#', got " + describe(keyword));
+        // POV-Ray reads on: a '#' before something that is not a directive is ignored.
+        if (!skipping_) lookahead_.push_back(keyword);
+        return;
     }
     const std::string& w = keyword.text();
 
@@ -806,21 +794,8 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
     }
     std::shared_ptr<Symbol> sym = lookup(name.text());
     std::shared_ptr<Value>* element = nullptr;
-    if (sym && std::holds_alternative<ArrayValue>(sym->value.data) && peek_punct("[")) {
-        auto& array = std::get<ArrayValue>(sym->value.data);
-        std::size_t index = 0;
-        for (std::size_t d = 0; d < array.sizes.size(); ++d) {
-            Token open = expect_punct("[", "for an array index");
-            double v = parse_float();
-            int k = static_cast<int>(v + kEpsilon);
-            if (k < 0 || v < -kEpsilon || k >= array.sizes[d]) {
-                fail(open, "array index " + std::to_string(k) + " out of range 0 to " +
-                               std::to_string(array.sizes[d] - 1));
-            }
-            index = index * static_cast<std::size_t>(array.sizes[d]) + static_cast<std::size_t>(k);
-            expect_punct("]", "after an array index");
-        }
-        element = &array.elements[index];
+    if (sym && std::holds_alternative<ArrayValue>(sym->value.data) && peek_array_index()) {
+        element = &index_array(std::get<ArrayValue>(sym->value.data), name);
     }
     expect_punct("=", "after '" + name.text() + "'");
     Value value = parse_rvalue(name, false);
@@ -957,7 +932,7 @@ const Value* SceneParser::peek_identifier_value(std::size_t ahead) {
     std::shared_ptr<Symbol> sym = t.symbol ? t.symbol : lookup(t.text());
     if (!sym) return nullptr;
     if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
-        if (peek_punct("[", ahead + 1)) {
+        if (peek_array_index(ahead + 1)) {
             // The first element assigned stands for the type of the array's elements.
             for (const auto& e : a->elements) {
                 if (e) return e.get();
@@ -988,7 +963,7 @@ Value SceneParser::identifier_value(const Token& name) {
     std::shared_ptr<Symbol> sym = name.symbol ? name.symbol : lookup(name.text());
     if (!sym) fail(name, "undefined identifier '" + name.text() + "'");
     if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
-        if (peek_punct("[")) {
+        if (peek_array_index()) {
             Token at = peek(0);
             std::shared_ptr<Value>& e = index_array(*a, name);
             if (!e) fail(at, "element of the array '" + name.text() + "' used before it is set");
@@ -1097,15 +1072,18 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
             Token kw = next();
             return finish_other(Value{parse_camera(kw)});
         }
+        if (w == "sky_sphere") {
+            Token kw = next();
+            return finish_other(Value{parse_sky_sphere_value(kw)});
+        }
         if (w == "array") {
             Token kw = next();
             return finish_other(parse_array_declaration(kw));
         }
         static const char* const kUnsupportedValues[] = {
-            "normal",      "interior",  "material",    "media",
-            "density",     "fog",       "rainbow",     "sky_sphere",
-            "spline",      "function",  "pigment_map", "normal_map",
-            "texture_map", "slope_map", "density_map", "interior_texture"};
+            "normal",     "interior",    "material",  "media",       "density",
+            "fog",        "rainbow",     "spline",    "function",    "pigment_map",
+            "normal_map", "texture_map", "slope_map", "density_map", "interior_texture"};
         for (const char* u : kUnsupportedValues) {
             if (w == u) return finish_other(parse_unsupported_value(next()));
         }
@@ -1130,7 +1108,13 @@ Value SceneParser::parse_unsupported_value(const Token& keyword) {
 
 Value SceneParser::parse_array_declaration(const Token& keyword) {
     ArrayValue array;
-    while (peek_punct("[")) {
+    // Looking for one more dimension or an initializer must not run the directive that
+    // may follow (POV-Ray's Parse_Array_Declare clears Ok_To_Declare).
+    auto peek_deferred = [&](std::string_view p) {
+        ScopedFlag defer(defer_directives_, true);
+        return peek_punct(p);
+    };
+    while (peek_deferred("[")) {
         Token open = next();
         double v = parse_float();
         int n = static_cast<int>(v + kEpsilon);
@@ -1145,7 +1129,7 @@ Value SceneParser::parse_array_declaration(const Token& keyword) {
     for (int s : array.sizes) total *= static_cast<std::size_t>(s);
     if (total > 100000000) fail(keyword, "array too large");
     array.elements.resize(total);
-    if (peek_punct("{")) parse_array_initializer(array, 0, 0, keyword);
+    if (peek_deferred("{")) parse_array_initializer(array, 0, 0, keyword);
     return Value{std::move(array)};
 }
 
@@ -1175,7 +1159,7 @@ void SceneParser::parse_array_initializer(ArrayValue& array, std::size_t dim, st
                           std::to_string(array.sizes[dim]) + " elements");
     }
     next();
-    accept_comma();
+    if (dim > 0) accept_comma();
     (void)open;
 }
 

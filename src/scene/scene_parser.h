@@ -128,6 +128,19 @@ enum class Arity {
     Rest,       // unknown: skip to the end of the enclosing block
 };
 
+/// Sets a flag for the lifetime of the scope.
+class ScopedFlag {
+  public:
+    ScopedFlag(bool& flag, bool value) : flag_(flag), saved_(flag) { flag_ = value; }
+    ~ScopedFlag() { flag_ = saved_; }
+    ScopedFlag(const ScopedFlag&) = delete;
+    ScopedFlag& operator=(const ScopedFlag&) = delete;
+
+  private:
+    bool& flag_;
+    bool saved_;
+};
+
 class SceneParser {
   public:
     explicit SceneParser(const ParseOptions& options);
@@ -217,6 +230,12 @@ class SceneParser {
     const Value* peek_identifier_value(std::size_t ahead = 0);
     Value identifier_value(const Token& name);
     std::shared_ptr<Value>& index_array(ArrayValue& array, const Token& name);
+    // Whether '[' follows (an array index).  The look never runs a directive: POV-Ray peeks
+    // at the characters after an array name.
+    bool peek_array_index(std::size_t ahead = 0) {
+        ScopedFlag defer(defer_directives_, true);
+        return peek_punct("[", ahead);
+    }
 
     // ---- expressions (parse_expressions.cpp) ----
     Numeric parse_express();
@@ -273,6 +292,7 @@ class SceneParser {
     void parse_global_settings(const Token& keyword);
     void parse_background(const Token& keyword);
     void parse_sky_sphere(const Token& keyword);
+    SkySphere parse_sky_sphere_value(const Token& keyword);
     void add_object_to_scene(const ObjectNode& object);
     void export_symbols();
 
@@ -305,19 +325,6 @@ class SceneParser {
     Texture default_texture_;
     std::vector<unsigned> rand_streams_;
     bool had_camera_ = false;
-};
-
-/// Sets `*defer` for the lifetime of the scope.
-class ScopedFlag {
-  public:
-    ScopedFlag(bool& flag, bool value) : flag_(flag), saved_(flag) { flag_ = value; }
-    ~ScopedFlag() { flag_ = saved_; }
-    ScopedFlag(const ScopedFlag&) = delete;
-    ScopedFlag& operator=(const ScopedFlag&) = delete;
-
-  private:
-    bool& flag_;
-    bool saved_;
 };
 
 }  // namespace mirage::scene_detail

@@ -69,7 +69,7 @@ struct UnsupportedValue {
 struct Value {
     std::variant<Numeric, std::string, ObjectNode, Texture, Pigment, Finish, Transform,
                  ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
-                 UnsupportedValue>
+                 UnsupportedValue, SkySphere>
         data;
 };
 

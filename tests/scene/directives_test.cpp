@@ -249,6 +249,26 @@ TEST(Directives, DeclarationAssignsBeforeTheNextDirectiveRuns) {
     EXPECT_EQ(float_symbol(s, "Ok"), 1.0);
 }
 
+TEST(Directives, ArraysAreDeclaredBeforeTheNextDirectiveRuns) {
+    // Neither needs a ';': looking past the array or the copied name must not run the
+    // #declare that follows before the array exists (found parsing POV-Ray's sample scenes).
+    Scene s = parse_ok(R"(
+        #declare TG = array[2]
+        #declare TG[0] = 5;
+        #declare Init = array[2] { 1, 2 }
+        #declare Sum = Init[0] + Init[1];
+        #declare Copy = Init
+        #declare CopySum = Copy[0] + Copy[1];
+    )");
+    EXPECT_EQ(float_symbol(s, "Sum"), 3.0);
+    EXPECT_EQ(float_symbol(s, "CopySum"), 3.0);
+}
+
+TEST(Directives, AStrayHashIsIgnoredAsInPovRay) {
+    Scene s = parse_ok("sphere { 0, 1 # }");
+    EXPECT_EQ(s.primitives.size(), 1u);
+}
+
 TEST(Directives, VersionSetsTheLanguageVersion) {
     Scene s = parse_ok("#version 3.6;\n#declare V = version;");
     EXPECT_DOUBLE_EQ(float_symbol(s, "V"), 3.6);

@@ -196,6 +196,20 @@ TEST(SceneItems, BackgroundSkySphereGlobalSettings) {
                glm::dvec3(0, 1, 0));
 }
 
+TEST(SceneItems, DeclaredSkySphereAndOldDefault) {
+    Scene s = parse_ok(R"(
+        #declare Sky = sky_sphere { pigment { rgb <0, 0, 1> } }
+        sky_sphere { Sky rotate 90 * y }
+        default { finish { ambient 0 } }
+        sphere { 0, 1 }
+    )");
+    ASSERT_TRUE(s.sky_sphere.has_value());
+    ASSERT_EQ(s.sky_sphere->pigments.size(), 1u);
+    expect_vec(s.sky_sphere->pigments[0].colour.rgb, glm::dvec3(0, 0, 1));
+    expect_vec(transform_point(s.sky_sphere->transform, glm::dvec3(1, 0, 0)), glm::dvec3(0, 0, -1));
+    expect_vec(s.primitives.at(0).texture.finish.ambient, glm::dvec3(0));
+}
+
 TEST(SceneItems, SrgbColoursNeedAssumedGamma) {
     EXPECT_NE(parse_error("background { srgb 0.5 }").find("needs assumed_gamma"),
               std::string::npos);
