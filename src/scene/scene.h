@@ -43,10 +43,11 @@ enum class PigmentKind { Solid, Checker, Gradient };
 /// `transform.inverse * world_point` (the parser composes the transforms that apply).
 struct Pigment {
     PigmentKind kind = PigmentKind::Solid;
-    Colour colour;                           // Solid
-    Colour checker[2];                       // Checker: the two colours, in POV-Ray's order
+    Colour colour;                            // Solid
+    Colour checker[2];                        // Checker: the two colours, in POV-Ray's order
     glm::dvec3 gradient_axis{0.0, 1.0, 0.0};  // Gradient: the vector given after `gradient`
-    std::vector<ColourMapEntry> colour_map;  // Gradient: POV-Ray's default map when absent
+                                              // (normalised by the parser, as POV-Ray does)
+    std::vector<ColourMapEntry> colour_map;   // Gradient: POV-Ray's default map when absent
     Transform transform;
 };
 
@@ -128,8 +129,10 @@ struct Camera {
 
 struct SkySphere {
     std::vector<Pigment> pigments;  // layered, the first on top, as POV-Ray
+    // (in file order; note POV-Ray 3.7's trace.cpp composites the LAST pigment on top)
     Transform transform;
     FileLoc loc;
+    glm::dvec3 emission{1.0};  // POV-Ray 3.7's sky_sphere `emission`: scales the sky colour
 };
 
 struct GlobalSettings {
@@ -157,7 +160,7 @@ struct Scene {
     bool has_camera = false;
     std::vector<PointLight> lights;
     std::vector<Primitive> primitives;
-    Colour background;
+    Colour background;  // as written; POV-Ray 3.7 without alpha output shows rgb * (1 - transmit)
     std::optional<SkySphere> sky_sphere;
     GlobalSettings global;
     std::map<std::string, Declared> symbols;

@@ -1,0 +1,61 @@
+// POV-Ray's perspective camera: how a `camera { ... }` statement sets its vectors (POV-Ray
+// 3.5 and later apply the modifiers in a fixed order, whatever order they are written in)
+// and the primary ray POV-Ray 3.7 shoots through an image position.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <optional>
+
+#include "scene/scene.h"
+#include "util/result.h"
+
+namespace mirage {
+
+struct CameraRay {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, 1.0};  // normalised
+};
+
+/// The primary ray POV-Ray 3.7 traces for image position (x, y) in pixels of a width x height
+/// image: (col + 0.5, row + 0.5) is the centre of pixel (col, row), row 0 at the top.  As in
+/// POV-Ray's TracePixel::CreateCameraRay (perspective), the ray leaves `location` along
+/// direction + (x / width - 1/2) right + (1/2 - y / height) up; the image aspect ratio is not
+/// applied, the lengths of right and up carry it.
+CameraRay camera_ray(const Camera& camera, double x, double y, int width, int height);
+
+/// The state POV-Ray keeps for a camera while parsing: its vectors plus look_at and angle.
+/// The defaults are POV-Ray's default camera.
+struct CameraState {
+    glm::dvec3 location{0.0, 0.0, 0.0};
+    glm::dvec3 direction{0.0, 0.0, 1.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    glm::dvec3 right{1.33, 0.0, 0.0};
+    glm::dvec3 sky{0.0, 1.0, 0.0};
+    glm::dvec3 look_at{0.0, 0.0, 1.0};
+    double angle_deg = 90.0;
+};
+
+/// The modifiers of one camera statement, each present only when written.
+struct CameraModifiers {
+    std::optional<glm::dvec3> location, direction, up, right, sky, look_at;
+    std::optional<double> angle_deg;
+    Transform transform;  // translate, rotate, scale, matrix and transform, composed in order
+};
+
+/// Applies a camera statement to `base` the way POV-Ray 3.5+ does (parse.cpp, Parse_Camera):
+/// location, direction, up, right and sky replace the base's; then `angle` rescales
+/// direction to |right| / (2 tan(angle / 2)); then `look_at` turns direction toward the
+/// point (keeping its length), sets right to sky x direction and up to direction x right
+/// (keeping their lengths and the handedness of right); last the transforms move location
+/// and turn direction, up and right (not sky).  Errors: an angle outside [0, 180) and a
+/// look_at point equal to the location.
+Result<CameraState> apply_camera_statement(const CameraState& base, const CameraModifiers& mods);
+
+/// The camera the scene holds (scene.h) for a parsed camera state.
+Camera camera_from_state(const CameraState& state);
+
+/// True when direction, up and right are pairwise perpendicular within POV-Ray's tolerance
+/// (POV-Ray warns otherwise).
+bool camera_vectors_perpendicular(const CameraState& state);
+
+}  // namespace mirage

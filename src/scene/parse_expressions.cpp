@@ -1,0 +1,864 @@
+// Expressions of the scene language, after POV-Ray 3.7's express.cpp and parsestr.cpp.
+//
+// Precedence, from loosest: ?: (POV-Ray's Parse_Express), & and | (Parse_Logical),
+// comparisons (Parse_Rel_Term), + and - (Parse_Rel_Factor), * and / (Parse_Num_Term),
+// factors with unary - + ! and a trailing .x (Parse_Num_Factor).  Where POV-Ray wants a
+// float or a vector (a vector's components, an object's parameters) it parses only down from
+// + and -, so comparisons there need parentheses, as in POV-Ray.  Mixed sizes widen: a float
+// is repeated, a shorter vector padded with zeros.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "scene/keywords.h"
+#include "scene/scene_parser.h"
+#include "scene/transform.h"
+
+namespace mirage::scene_detail {
+namespace {
+
+constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
+constexpr double kPi = 3.14159265358979323846;
+
+bool ftrue(double x) { return std::abs(x) > kEpsilon; }
+
+bool one_of(const std::string& w, std::initializer_list<const char*> words) {
+    for (const char* x : words) {
+        if (w == x) return true;
+    }
+    return false;
+}
+
+bool is_float_function(const std::string& w) {
+    return one_of(w, {"abs",        "acos",        "acosh",   "asc",         "asin",
+                      "asinh",      "atan",        "atan2",   "atanh",       "bitwise_and",
+                      "bitwise_or", "bitwise_xor", "ceil",    "clock",       "clock_on",
+                      "cos",        "cosh",        "defined", "degrees",     "dimension_size",
+                      "dimensions", "div",         "exp",     "file_exists", "false",
+                      "floor",      "inside",      "int",     "ln",          "log",
+                      "max",        "min",         "mod",     "no",          "now",
+                      "off",        "on",          "pi",      "pow",         "radians",
+                      "rand",       "seed",        "select",  "sin",         "sinh",
+                      "sqr",        "sqrt",        "strcmp",  "strlen",      "tan",
+                      "tanh",       "true",        "val",     "vdot",        "version",
+                      "vlength",    "yes"});
+}
+
+bool is_vector_function(const std::string& w) {
+    return one_of(w, {"vaxis_rotate", "vcross", "vnormalize", "vrotate", "vturbulence", "x", "y",
+                      "z", "min_extent", "max_extent", "trace", "u", "v"});
+}
+
+bool is_colour_keyword(const std::string& w) {
+    return one_of(w, {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf", "srgbt",
+                      "srgbft", "red", "green", "blue", "filter", "transmit", "alpha"});
+}
+
+bool is_string_function(const std::string& w) {
+    return one_of(w, {"str", "vstr", "concat", "chr", "substr", "strupr", "strlwr", "datetime"});
+}
+
+Numeric binary(const Numeric& a0, const Numeric& b0, double (*op)(double, double)) {
+    int size = std::max(a0.size, b0.size);
+    Numeric a = promote(a0, size), b = promote(b0, size);
+    Numeric r;
+    r.size = size;
+    for (int i = 0; i < size; ++i) r.v[i] = op(a.v[i], b.v[i]);
+    return r;
+}
+
+void append_utf8(std::string& out, unsigned code) {
+    if (code < 0x80) {
+        out += static_cast<char>(code);
+    } else if (code < 0x800) {
+        out += static_cast<char>(0xC0 | (code >> 6));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+    } else {
+        out += static_cast<char>(0xE0 | ((code >> 12) & 0x0F));
+        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+    }
+}
+
+double srgb_to_linear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// What can start what
+
+bool SceneParser::starts_string(const Token& t) const {
+    if (t.kind() == TokenKind::String) return true;
+    if (is_keyword(t)) return is_string_function(t.text());
+    if (is_identifier(t)) {
+        auto sym = t.symbol ? t.symbol : lookup(t.text());
+        if (!sym) return false;
+        if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+            for (const auto& e : a->elements) {
+                if (e) return std::holds_alternative<std::string>(e->data);
+            }
+            return false;
+        }
+        return std::holds_alternative<std::string>(sym->value.data);
+    }
+    return false;
+}
+
+namespace {
+// The size of the numeric value an identifier names (an array: of its elements), or 0.
+int identifier_numeric_size(const std::shared_ptr<Symbol>& sym) {
+    if (!sym) return 0;
+    const Value* v = &sym->value;
+    if (auto* a = std::get_if<ArrayValue>(&v->data)) {
+        v = nullptr;
+        for (const auto& e : a->elements) {
+            if (e) {
+                v = e.get();
+                break;
+            }
+        }
+        if (!v) return 0;
+    }
+    if (auto* n = std::get_if<Numeric>(&v->data)) return n->size;
+    return 0;
+}
+}  // namespace
+
+bool SceneParser::starts_float(const Token& t) const {
+    switch (t.kind()) {
+        case TokenKind::Number:
+            return true;
+        case TokenKind::Punct:
+            return t.is_punct("(") || t.is_punct("+") || t.is_punct("-") || t.is_punct("!");
+        case TokenKind::Identifier:
+            if (is_keyword(t)) return is_float_function(t.text());
+            return identifier_numeric_size(t.symbol ? t.symbol : lookup(t.text())) == 1;
+        default:
+            return false;
+    }
+}
+
+bool SceneParser::starts_vector(const Token& t) const {
+    if (starts_float(t) || t.is_punct("<")) return true;
+    if (is_keyword(t)) return is_vector_function(t.text());
+    if (is_identifier(t)) {
+        int size = identifier_numeric_size(t.symbol ? t.symbol : lookup(t.text()));
+        return size >= 2 && size <= 4;
+    }
+    return false;
+}
+
+bool SceneParser::starts_colour(const Token& t) const {
+    if (is_keyword(t)) return is_colour_keyword(t.text());
+    if (is_identifier(t)) {
+        return identifier_numeric_size(t.symbol ? t.symbol : lookup(t.text())) == 5;
+    }
+    return false;
+}
+
+// ---------------------------------------------------------------------------------------
+// Numeric expressions
+
+Numeric SceneParser::parse_express() {
+    Numeric c = parse_logical();
+    if (!peek_punct("?")) return c;
+    Token q = next();
+    if (c.size != 1) {
+        fail(q, "the condition before '?' must be a float, got a " + numeric_type_name(c.size));
+    }
+    Numeric a = parse_express();
+    expect_punct(":", "between the two choices of '?'");
+    Numeric b = parse_express();
+    return ftrue(c.v[0]) ? a : b;
+}
+
+Numeric SceneParser::parse_logical() {
+    Numeric a = parse_rel_term();
+    while (true) {
+        if (accept_punct("&")) {
+            a = binary(a, parse_rel_term(),
+                       [](double x, double y) { return (ftrue(x) && ftrue(y)) ? 1.0 : 0.0; });
+        } else if (accept_punct("|")) {
+            a = binary(a, parse_rel_term(),
+                       [](double x, double y) { return (ftrue(x) || ftrue(y)) ? 1.0 : 0.0; });
+        } else {
+            return a;
+        }
+    }
+}
+
+Numeric SceneParser::parse_rel_term() {
+    if (starts_string(peek(0))) {
+        std::string lhs = parse_string(false);
+        Token op = next();
+        std::string rhs = parse_string(false);
+        int c = lhs.compare(rhs);
+        bool r;
+        if (op.is_punct("<")) {
+            r = c < 0;
+        } else if (op.is_punct("<=")) {
+            r = c <= 0;
+        } else if (op.is_punct("=")) {
+            r = c == 0;
+        } else if (op.is_punct("!=")) {
+            r = c != 0;
+        } else if (op.is_punct(">=")) {
+            r = c >= 0;
+        } else if (op.is_punct(">")) {
+            r = c > 0;
+        } else {
+            fail(op, "expected a comparison after a string, got " + describe(op));
+        }
+        return Numeric::scalar(r ? 1.0 : 0.0);
+    }
+    Numeric a = parse_rel_factor();
+    while (true) {
+        const Token& op = peek(0);
+        double (*f)(double, double) = nullptr;
+        if (op.is_punct("<")) {
+            f = [](double x, double y) { return x < y ? 1.0 : 0.0; };
+        } else if (op.is_punct("<=")) {
+            f = [](double x, double y) { return (x <= y || !ftrue(x - y)) ? 1.0 : 0.0; };
+        } else if (op.is_punct("=")) {
+            f = [](double x, double y) { return !ftrue(x - y) ? 1.0 : 0.0; };
+        } else if (op.is_punct("!=")) {
+            f = [](double x, double y) { return ftrue(x - y) ? 1.0 : 0.0; };
+        } else if (op.is_punct(">=")) {
+            f = [](double x, double y) { return (x >= y || !ftrue(x - y)) ? 1.0 : 0.0; };
+        } else if (op.is_punct(">")) {
+            f = [](double x, double y) { return x > y ? 1.0 : 0.0; };
+        } else {
+            return a;
+        }
+        next();
+        a = binary(a, parse_rel_factor(), f);
+    }
+}
+
+Numeric SceneParser::parse_rel_factor() {
+    Numeric a = parse_num_term();
+    while (true) {
+        if (accept_punct("+")) {
+            a = binary(a, parse_num_term(), [](double x, double y) { return x + y; });
+        } else if (accept_punct("-")) {
+            a = binary(a, parse_num_term(), [](double x, double y) { return x - y; });
+        } else {
+            return a;
+        }
+    }
+}
+
+Numeric SceneParser::parse_num_term() {
+    Numeric a = parse_num_factor();
+    while (true) {
+        if (accept_punct("*")) {
+            a = binary(a, parse_num_factor(), [](double x, double y) { return x * y; });
+        } else if (peek_punct("/")) {
+            Token op = next();
+            Numeric b = parse_num_factor();
+            int size = std::max(a.size, b.size);
+            Numeric pb = promote(b, size);
+            for (int i = 0; i < size; ++i) {
+                // POV-Ray warns and goes on with a huge value; a scene that divides by zero
+                // is wrong, so it is an error here.
+                if (pb.v[i] == 0.0) fail(op, "division by zero");
+            }
+            a = binary(a, b, [](double x, double y) { return x / y; });
+        } else {
+            return a;
+        }
+    }
+}
+
+Numeric SceneParser::parse_num_factor() {
+    Numeric value;
+    {
+        // A factor's own tokens may hold directives and macro calls even where the
+        // surrounding expression defers them (POV-Ray's Ok_To_Declare).
+        ScopedFlag not_deferred(defer_directives_, false);
+        value = parse_factor_body();
+    }
+    if (peek_punct(".")) {
+        Token dot = next();
+        value = apply_period(value, dot);
+    }
+    return value;
+}
+
+Numeric SceneParser::apply_period(const Numeric& value, const Token& dot) {
+    Token c = next();
+    static const std::pair<const char*, int> kComponents[] = {
+        {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},       {"v", 1},
+        {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
+    if (c.is_word("gray")) {
+        Numeric n = promote(value, 3);
+        return Numeric::scalar(0.297 * n.v[0] + 0.589 * n.v[1] + 0.114 * n.v[2]);
+    }
+    for (const auto& [name, index] : kComponents) {
+        if (c.is_word(name)) {
+            if (index >= value.size) {
+                fail(c, "cannot take '." + c.text() + "' of a " + numeric_type_name(value.size));
+            }
+            return Numeric::scalar(value.v[index]);
+        }
+    }
+    fail(c,
+         "expected x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.', got " +
+             describe(c));
+    (void)dot;
+}
+
+Numeric SceneParser::parse_factor_body() {
+    Token t = next();
+    switch (t.kind()) {
+        case TokenKind::Number:
+            return Numeric::scalar(t.raw->number);
+        case TokenKind::Punct:
+            if (t.is_punct("(")) {
+                Numeric n = parse_express();
+                const Token& close = peek(0);
+                if (!close.is_punct(")")) {
+                    fail(close, "expected ')' to close the '(' at " + place(t.loc(), close) +
+                                    ", got " + describe(close));
+                }
+                next();
+                return n;
+            }
+            if (t.is_punct("<")) {
+                Numeric n;
+                n.v[0] = parse_float();
+                accept_comma();
+                n.v[1] = parse_float();
+                accept_comma();
+                n.size = 2;
+                while (n.size < 5 && starts_expression(peek(0))) {
+                    n.v[n.size++] = parse_float();
+                    accept_comma();
+                }
+                const Token& close = peek(0);
+                if (!close.is_punct(">")) {
+                    fail(close, "expected '>' to close the vector opened at " +
+                                    place(t.loc(), close) + ", got " + describe(close));
+                }
+                next();
+                return n;
+            }
+            if (t.is_punct("-")) {
+                Numeric n = parse_num_factor();
+                for (int i = 0; i < n.size; ++i) n.v[i] = -n.v[i];
+                return n;
+            }
+            if (t.is_punct("+")) return parse_factor_body();
+            if (t.is_punct("!")) {
+                Numeric n = parse_num_factor();
+                for (int i = 0; i < n.size; ++i) n.v[i] = ftrue(n.v[i]) ? 0.0 : 1.0;
+                return n;
+            }
+            break;
+        case TokenKind::Identifier:
+            if (is_keyword(t)) return parse_function(t);
+            return parse_identifier_value(t);
+        default:
+            break;
+    }
+    fail(t, "expected a numeric expression, got " + describe(t));
+}
+
+Numeric SceneParser::parse_identifier_value(const Token& t) {
+    std::shared_ptr<Symbol> sym = t.symbol ? t.symbol : lookup(t.text());
+    if (!sym) fail(t, "undefined identifier '" + t.text() + "'");
+    const Value* value = &sym->value;
+    if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+        if (!peek_array_index()) {
+            fail(peek(0),
+                 "expected '[' after the array '" + t.text() + "', got " + describe(peek(0)));
+        }
+        Token at = peek(0);
+        std::shared_ptr<Value>& e = index_array(*a, t);
+        if (!e) fail(at, "element of the array '" + t.text() + "' used before it is set");
+        value = e.get();
+    }
+    if (auto* n = std::get_if<Numeric>(&value->data)) return *n;
+    fail(t, "expected a numeric expression, got " + value_type_name(*value) + " identifier '" +
+                t.text() + "'");
+}
+
+double SceneParser::rand_next(int stream, const Token& at) {
+    if (stream < 0 || static_cast<std::size_t>(stream) >= rand_streams_.size()) {
+        fail(at, "rand() of an unknown random stream " + std::to_string(stream) +
+                     " (create one with seed())");
+    }
+    // POV-Ray's POV_rand (support/randomsequences.cpp), a 32-bit linear congruential generator.
+    unsigned& state = rand_streams_[static_cast<std::size_t>(stream)];
+    state = state * 1812433253u + 12345u;
+    return static_cast<double>(state) / 4294967295.0;
+}
+
+Numeric SceneParser::parse_function(const Token& name) {
+    const std::string& f = name.text();
+    auto scalar = [](double x) { return Numeric::scalar(x); };
+    // Constants.
+    if (f == "pi") return scalar(kPi);
+    if (f == "true" || f == "yes" || f == "on") return scalar(1.0);
+    if (f == "false" || f == "no" || f == "off") return scalar(0.0);
+    if (f == "clock" || f == "clock_on") return scalar(0.0);  // no animation
+    if (f == "version") return scalar(std::round(language_version_ * 100.0) / 100.0);
+    if (f == "x") return Numeric::vector3(glm::dvec3(1.0, 0.0, 0.0));
+    if (f == "y") return Numeric::vector3(glm::dvec3(0.0, 1.0, 0.0));
+    if (f == "z") return Numeric::vector3(glm::dvec3(0.0, 0.0, 1.0));
+    if (f == "t") {
+        Numeric n;
+        n.size = 4;
+        n.v[3] = 1.0;
+        return n;
+    }
+    if (f == "u" || f == "v") {
+        Numeric n;
+        n.size = 2;
+        n.v[f == "u" ? 0 : 1] = 1.0;
+        return n;
+    }
+
+    // One float.
+    struct Unary {
+        const char* name;
+        double (*fn)(double);
+    };
+    static const Unary kUnary[] = {
+        {"abs", [](double x) { return std::abs(x); }},
+        {"acosh", [](double x) { return std::acosh(x); }},
+        {"asinh", [](double x) { return std::asinh(x); }},
+        {"atan", [](double x) { return std::atan(x); }},
+        {"atanh", [](double x) { return std::atanh(x); }},
+        {"ceil", [](double x) { return std::ceil(x); }},
+        {"cos", [](double x) { return std::cos(x); }},
+        {"cosh", [](double x) { return std::cosh(x); }},
+        {"degrees", [](double x) { return x * 180.0 / kPi; }},
+        {"exp", [](double x) { return std::exp(x); }},
+        {"floor", [](double x) { return std::floor(x); }},
+        {"int", [](double x) { return std::trunc(x); }},
+        {"radians", [](double x) { return x * kPi / 180.0; }},
+        {"sin", [](double x) { return std::sin(x); }},
+        {"sinh", [](double x) { return std::sinh(x); }},
+        {"sqr", [](double x) { return x * x; }},
+        {"tan", [](double x) { return std::tan(x); }},
+        {"tanh", [](double x) { return std::tanh(x); }},
+    };
+    for (const Unary& u : kUnary) {
+        if (f == u.name) return scalar(u.fn(parse_float_param()));
+    }
+    if (f == "acos" || f == "asin") {
+        double x = parse_float_param();
+        if (x > 1.0 || x < -1.0) {
+            add_message(name, "warning", "domain error in " + f + ", argument clipped to [-1, 1]");
+            x = std::clamp(x, -1.0, 1.0);
+        }
+        return scalar(f == "acos" ? std::acos(x) : std::asin(x));
+    }
+    if (f == "sqrt") {
+        double x = parse_float_param();
+        if (x < 0.0) fail(name, "sqrt of a negative number (" + format_str(x, 0, -1) + ")");
+        return scalar(std::sqrt(x));
+    }
+    if (f == "ln" || f == "log") {
+        double x = parse_float_param();
+        if (x <= 0.0)
+            fail(name, f + " of a number that is not positive (" + format_str(x, 0, -1) + ")");
+        return scalar(f == "ln" ? std::log(x) : std::log10(x));
+    }
+    if (f == "seed") {
+        double s = parse_float_param();
+        rand_streams_.push_back(static_cast<unsigned>(static_cast<int>(s)));
+        return scalar(static_cast<double>(rand_streams_.size() - 1));
+    }
+    if (f == "rand") {
+        Token at = peek(0);
+        return scalar(rand_next(static_cast<int>(parse_float_param()), at));
+    }
+
+    // Two floats.
+    if (f == "atan2" || f == "div" || f == "mod" || f == "pow") {
+        expect_punct("(", "after '" + f + "'");
+        double a = parse_float();
+        accept_comma();
+        double b = parse_float();
+        expect_punct(")", "after the arguments of '" + f + "'");
+        if (f == "atan2") {
+            if (!ftrue(a) && !ftrue(b)) fail(name, "atan2(0, 0) is undefined");
+            return scalar(std::atan2(a, b));
+        }
+        if (f == "pow") {
+            if (a == 0.0 && b == 0.0) fail(name, "pow(0, 0) is undefined");
+            return scalar(std::pow(a, b));
+        }
+        if (b == 0.0) fail(name, "division by zero in " + f + "()");
+        if (f == "div") return scalar(std::trunc(a / b));
+        return scalar(std::fmod(a, b));
+    }
+    if (f == "min" || f == "max" || f == "bitwise_and" || f == "bitwise_or" || f == "bitwise_xor") {
+        expect_punct("(", "after '" + f + "'");
+        double r = parse_float();
+        while (accept_punct(",")) {
+            double b = parse_float();
+            if (f == "min") r = std::min(r, b);
+            if (f == "max") r = std::max(r, b);
+            if (f == "bitwise_and") r = static_cast<int>(r) & static_cast<int>(b);
+            if (f == "bitwise_or") r = static_cast<int>(r) | static_cast<int>(b);
+            if (f == "bitwise_xor") r = static_cast<int>(r) ^ static_cast<int>(b);
+        }
+        expect_punct(")", "after the arguments of '" + f + "'");
+        if (f.rfind("bitwise", 0) == 0) r = static_cast<int>(r);
+        return scalar(r);
+    }
+    if (f == "select") {
+        expect_punct("(", "after 'select'");
+        double c = parse_float();
+        accept_comma();
+        double less = parse_float();
+        accept_comma();
+        double equal = parse_float();
+        if (accept_punct(",")) {
+            double greater = parse_float();
+            expect_punct(")", "after the arguments of 'select'");
+            return scalar(c < 0.0 ? less : (c == 0.0 ? equal : greater));
+        }
+        expect_punct(")", "after the arguments of 'select'");
+        return scalar(c < 0.0 ? less : equal);
+    }
+
+    // Strings.
+    if (f == "strlen" || f == "val" || f == "asc" || f == "file_exists") {
+        expect_punct("(", "after '" + f + "'");
+        std::string s = parse_string(f == "file_exists");
+        expect_punct(")", "after the argument of '" + f + "'");
+        if (f == "strlen") return scalar(static_cast<double>(s.size()));
+        if (f == "val") return scalar(std::atof(s.c_str()));
+        if (f == "asc") return scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
+        std::vector<std::string> dirs{
+            std::filesystem::path(frames_.back().file->path).parent_path().generic_string()};
+        for (const auto& lib : options_.library_paths) dirs.push_back(lib);
+        std::error_code ec;
+        if (std::filesystem::path(s).is_absolute()) {
+            return scalar(std::filesystem::is_regular_file(s, ec) ? 1.0 : 0.0);
+        }
+        for (const auto& d : dirs) {
+            auto p = d.empty() ? std::filesystem::path(s) : std::filesystem::path(d) / s;
+            if (std::filesystem::is_regular_file(p, ec)) return scalar(1.0);
+        }
+        return scalar(0.0);
+    }
+    if (f == "strcmp") {
+        expect_punct("(", "after 'strcmp'");
+        std::string a = parse_string(false);
+        accept_comma();
+        std::string b = parse_string(false);
+        expect_punct(")", "after the arguments of 'strcmp'");
+        int c = a.compare(b);
+        return scalar(c < 0 ? -1.0 : (c > 0 ? 1.0 : 0.0));
+    }
+
+    // Vectors.
+    if (f == "vdot" || f == "vcross" || f == "vrotate") {
+        expect_punct("(", "after '" + f + "'");
+        glm::dvec3 a = parse_vector();
+        accept_comma();
+        glm::dvec3 b = parse_vector();
+        expect_punct(")", "after the arguments of '" + f + "'");
+        if (f == "vdot") return scalar(glm::dot(a, b));
+        if (f == "vcross") return Numeric::vector3(glm::cross(a, b));
+        return Numeric::vector3(transform_point(make_rotation(b), a));
+    }
+    if (f == "vlength" || f == "vnormalize") {
+        expect_punct("(", "after '" + f + "'");
+        glm::dvec3 a = parse_vector();
+        expect_punct(")", "after the argument of '" + f + "'");
+        if (f == "vlength") return scalar(glm::length(a));
+        if (a == glm::dvec3(0.0)) {
+            add_message(name, "warning", "vnormalize of a zero-length vector");
+            return Numeric::vector3(glm::dvec3(0.0));
+        }
+        return Numeric::vector3(glm::normalize(a));
+    }
+    if (f == "vaxis_rotate") {
+        expect_punct("(", "after 'vaxis_rotate'");
+        glm::dvec3 p = parse_vector();
+        accept_comma();
+        glm::dvec3 axis = parse_vector();
+        accept_comma();
+        double degrees = parse_float();
+        expect_punct(")", "after the arguments of 'vaxis_rotate'");
+        if (glm::length(axis) == 0.0) fail(name, "vaxis_rotate about a zero-length axis");
+        return Numeric::vector3(transform_point(make_axis_rotation(axis, degrees), p));
+    }
+
+    // Arrays.
+    if (f == "dimensions" || f == "dimension_size") {
+        expect_punct("(", "after '" + f + "'");
+        Token a = next();
+        auto sym = is_identifier(a) ? (a.symbol ? a.symbol : lookup(a.text())) : nullptr;
+        auto* array = sym ? std::get_if<ArrayValue>(&sym->value.data) : nullptr;
+        if (!array) fail(a, "expected an array identifier, got " + describe(a));
+        double r = static_cast<double>(array->sizes.size());
+        if (f == "dimension_size") {
+            accept_comma();
+            int d = static_cast<int>(parse_float()) - 1;
+            r = (d < 0 || d >= static_cast<int>(array->sizes.size())) ? 0.0 : array->sizes[d];
+        }
+        expect_punct(")", "after the arguments of '" + f + "'");
+        return scalar(r);
+    }
+    if (f == "defined") return scalar(parse_ifdef_param() ? 1.0 : 0.0);
+
+    if (one_of(f, {"inside", "now", "trace", "min_extent", "max_extent", "vturbulence"})) {
+        fail(name, "unsupported function '" + f + "'");
+    }
+    if (is_string_function(f)) {
+        fail(name, "expected a numeric expression, got the string function '" + f + "'");
+    }
+    if (is_colour_keyword(f)) {
+        fail(name, "expected a numeric expression, got '" + f +
+                       "' (colour keywords cannot appear inside an expression)");
+    }
+    fail(name, "expected a numeric expression, got " + describe(name));
+}
+
+// ---------------------------------------------------------------------------------------
+// Floats, vectors and colours where POV-Ray wants them
+
+double SceneParser::parse_float() {
+    Token at = peek(0);
+    Numeric n = parse_rel_factor();
+    if (n.size != 1) fail(at, "expected a float, got a " + numeric_type_name(n.size));
+    return n.v[0];
+}
+
+double SceneParser::parse_float_param() {
+    Token open = expect_punct("(", "before the parameter");
+    Token at = peek(0);
+    Numeric n = parse_express();
+    if (n.size != 1) fail(at, "expected a float, got a " + numeric_type_name(n.size));
+    const Token& close = peek(0);
+    if (!close.is_punct(")")) {
+        fail(close, "expected ')' to close the '(' at " + place(open.loc(), close) + ", got " +
+                        describe(close));
+    }
+    next();
+    return n.v[0];
+}
+
+double SceneParser::allow_float(double default_value) {
+    return starts_expression(peek(0)) ? parse_float() : default_value;
+}
+
+glm::dvec3 SceneParser::parse_vector() {
+    Token at = peek(0);
+    Numeric n = parse_rel_factor();
+    if (n.size > 3) fail(at, "expected a vector, got a " + numeric_type_name(n.size));
+    return promote(n, 3).xyz();
+}
+
+Numeric SceneParser::parse_vector_n(int size, std::string_view what) {
+    Token at = peek(0);
+    Numeric n = parse_rel_factor();
+    if (n.size > size) {
+        fail(at, "expected " + std::string(what) + ", got a " + numeric_type_name(n.size));
+    }
+    return promote(n, size);
+}
+
+glm::dvec3 SceneParser::parse_scale_vector() {
+    Token at = peek(0);
+    glm::dvec3 s = parse_vector();
+    for (int i = 0; i < 3; ++i) {
+        if (s[i] == 0.0) {
+            // POV-Ray's Parse_Scale_Vector does the same.
+            add_message(at, "warning", std::string("scale by 0 in ") + "xyz"[i] + ", changed to 1");
+            s[i] = 1.0;
+        }
+    }
+    return s;
+}
+
+// POV-Ray's Parse_Colour: an optional `color`, then rgb/rgbf/rgbt/rgbft/srgb... with an
+// expression, a colour identifier or expression, and any number of red/green/blue/filter/
+// transmit items changing one component.
+Colour SceneParser::parse_colour(bool expect_filter_transmit) {
+    const int terms = expect_filter_transmit ? 5 : 3;
+    bool had_keyword = accept_word("color") || accept_word("colour");
+    Numeric c;
+    c.size = 5;
+    bool started = false;
+    while (true) {
+        Token t = peek(0);
+        if (is_keyword(t) && is_colour_keyword(t.text()) && !t.is_word("color") &&
+            !t.is_word("colour")) {
+            const std::string& w = t.text();
+            if (w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit" ||
+                w == "alpha") {
+                next();
+                int index = w == "red"        ? 0
+                            : w == "green"    ? 1
+                            : w == "blue"     ? 2
+                            : w == "transmit" ? 4
+                                              : 3;
+                c.v[index] = parse_float();
+                started = true;
+                continue;
+            }
+            if (started) break;
+            next();
+            bool srgb = w[0] == 's';
+            std::string kind = srgb ? w.substr(1) : w;
+            if (srgb && !gamma_set_) {
+                fail(t, "'" + w + "' needs assumed_gamma to be set first (in global_settings)");
+            }
+            int size = kind == "rgb" ? 3 : kind == "rgbft" ? 5 : 4;
+            Numeric n = promote(parse_express(), size);
+            for (int i = 0; i < std::min(n.size, 5); ++i) c.v[i] = n.v[i];
+            if (kind == "rgbt") {
+                c.v[4] = c.v[3];
+                c.v[3] = 0.0;
+            }
+            if (srgb) {
+                for (int i = 0; i < 3; ++i) {
+                    c.v[i] = std::pow(srgb_to_linear(c.v[i]), 1.0 / assumed_gamma_);
+                }
+            }
+            started = true;
+            continue;
+        }
+        if (starts_colour(t) || starts_vector(t)) {
+            if (started) break;
+            // POV-Ray widens whatever comes (a float to all five components, a vector with
+            // zeros): `color 0.5` has filter and transmit 0.5 too, `color <1, 0, 0>` is red.
+            Numeric n = promote(parse_express(), terms);
+            for (int i = 0; i < std::min(n.size, 5); ++i) c.v[i] = n.v[i];
+            started = true;
+            continue;
+        }
+        break;
+    }
+    if (!started) {
+        fail(peek(0), std::string("expected a colour") + (had_keyword ? " after 'color'" : "") +
+                          ", got " + describe(peek(0)));
+    }
+    return numeric_to_colour(c);
+}
+
+glm::dvec3 SceneParser::parse_rgb_colour() {
+    Token at = peek(0);
+    Colour c = parse_colour(false);
+    if (c.filter != 0.0 || c.transmit != 0.0) {
+        add_message(at, "warning", "filter and transmit have no effect here and are ignored");
+    }
+    return c.rgb;
+}
+
+// ---------------------------------------------------------------------------------------
+// Strings
+
+std::string SceneParser::format_str(double value, int width, int precision) const {
+    // POV-Ray's str(): "%<width>.<precision>f", a negative width meaning zero padding and a
+    // negative precision the default.
+    char format[32];
+    int at = std::snprintf(format, sizeof format, "%%");
+    if (width > 0) at += std::snprintf(format + at, sizeof format - at, "%d", width);
+    if (width < 0) at += std::snprintf(format + at, sizeof format - at, "0%d", -width);
+    if (precision >= 0) at += std::snprintf(format + at, sizeof format - at, ".%d", precision);
+    std::snprintf(format + at, sizeof format - at, "f");
+    char buffer[512];
+    int n = std::snprintf(buffer, sizeof buffer, format, value);
+    if (n < 0 || n >= static_cast<int>(sizeof buffer)) {
+        format[at] = 'g';
+        std::snprintf(buffer, sizeof buffer, format, value);
+    }
+    return buffer;
+}
+
+std::string SceneParser::parse_string(bool pathname) {
+    Token t = next();
+    if (t.kind() == TokenKind::String) {
+        if (pathname) return t.text();
+        std::size_t bad = 0;
+        auto s = unescape_string(t.text(), &bad);
+        if (!s) {
+            fail(t, "illegal escape sequence '" + t.text().substr(bad, 2) + "' in a string");
+        }
+        return *s;
+    }
+    if (is_identifier(t)) {
+        Value v = identifier_value(t);
+        if (auto* s = std::get_if<std::string>(&v.data)) return *s;
+        fail(t, "expected a string, got " + value_type_name(v) + " identifier '" + t.text() + "'");
+    }
+    const std::string& f = t.text();
+    if (is_keyword(t) && is_string_function(f)) {
+        expect_punct("(", "after '" + f + "'");
+        std::string result;
+        if (f == "str") {
+            double v = parse_float();
+            accept_comma();
+            int width = static_cast<int>(parse_float());
+            accept_comma();
+            int precision = static_cast<int>(parse_float());
+            result = format_str(v, width, precision);
+        } else if (f == "vstr") {
+            int dims = std::clamp(static_cast<int>(parse_float()), 2, 5);
+            accept_comma();
+            Numeric n = parse_rel_factor();
+            // A float is not repeated here: POV-Ray's Parse_Unknown_Vector pads with zeros.
+            if (n.size == 1) {
+                for (int i = 1; i < 5; ++i) n.v[i] = 0.0;
+            }
+            n = promote(n, 5);
+            accept_comma();
+            std::string separator = parse_string(pathname);
+            accept_comma();
+            int width = static_cast<int>(parse_float());
+            accept_comma();
+            int precision = static_cast<int>(parse_float());
+            for (int i = 0; i < dims; ++i) {
+                if (i) result += separator;
+                result += format_str(n.v[i], width, precision);
+            }
+        } else if (f == "concat") {
+            result = parse_string(pathname);
+            while (accept_punct(",")) result += parse_string(pathname);
+        } else if (f == "chr") {
+            int code = static_cast<int>(parse_float());
+            if (code < 0 || code > 0xFFFF) fail(t, "chr() of a code out of range");
+            append_utf8(result, static_cast<unsigned>(code));
+        } else if (f == "substr") {
+            std::string s = parse_string(pathname);
+            accept_comma();
+            int start = static_cast<int>(parse_float());
+            accept_comma();
+            int length = static_cast<int>(parse_float());
+            if (start < 1 || length < 0 || start + length - 1 > static_cast<int>(s.size())) {
+                fail(t, "substr(\"" + s + "\", " + std::to_string(start) + ", " +
+                            std::to_string(length) + ") is outside the string");
+            }
+            result =
+                s.substr(static_cast<std::size_t>(start - 1), static_cast<std::size_t>(length));
+        } else if (f == "strupr" || f == "strlwr") {
+            result = parse_string(pathname);
+            for (char& ch : result) {
+                ch =
+                    static_cast<char>(f == "strupr" ? std::toupper(static_cast<unsigned char>(ch))
+                                                    : std::tolower(static_cast<unsigned char>(ch)));
+            }
+        } else {
+            fail(t, "unsupported function '" + f + "'");
+        }
+        expect_punct(")", "after the arguments of '" + f + "'");
+        return result;
+    }
+    fail(t, "expected a string, got " + describe(t));
+}
+
+}  // namespace mirage::scene_detail

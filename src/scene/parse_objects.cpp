@@ -1,0 +1,585 @@
+// Objects, transforms, light sources and the camera, after POV-Ray 3.7's parse.cpp.
+#include <algorithm>
+#include <cmath>
+
+#include "scene/scene_parser.h"
+#include "scene/transform.h"
+
+namespace mirage::scene_detail {
+namespace {
+
+constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
+
+bool one_of(const std::string& w, std::initializer_list<const char*> words) {
+    for (const char* x : words) {
+        if (w == x) return true;
+    }
+    return false;
+}
+
+// How the arguments of POV-Ray's object modifiers outside the subset are skipped.
+struct ModifierArity {
+    const char* name;
+    Arity arity;
+};
+constexpr ModifierArity kUnsupportedObjectModifiers[] = {
+    {"normal", Arity::Block},
+    {"interior", Arity::Block},
+    {"material", Arity::Block},
+    {"photons", Arity::Block},
+    {"bounded_by", Arity::Block},
+    {"clipped_by", Arity::Block},
+    {"interior_texture", Arity::Block},
+    {"radiosity", Arity::Block},
+    {"no_image", Arity::OptionalFloat},
+    {"no_reflection", Arity::OptionalFloat},
+    {"no_radiosity", Arity::OptionalFloat},
+    {"double_illuminate", Arity::OptionalFloat},
+    {"sturm", Arity::OptionalFloat},
+    {"hierarchy", Arity::OptionalFloat},
+    {"split_union", Arity::Float},
+    {"cutaway_textures", Arity::None},
+    {"uv_mapping", Arity::None},
+    {"debug_tag", Arity::String},
+    {"dtag", Arity::String},
+};
+
+constexpr ModifierArity kUnsupportedLightModifiers[] = {
+    {"spotlight", Arity::None},
+    {"cylinder", Arity::None},
+    {"parallel", Arity::None},
+    {"area_light", Arity::AreaLight},
+    {"point_at", Arity::Vector},
+    {"radius", Arity::Float},
+    {"falloff", Arity::Float},
+    {"tightness", Arity::Float},
+    {"fade_distance", Arity::Float},
+    {"fade_power", Arity::Float},
+    {"jitter", Arity::None},
+    {"orient", Arity::None},
+    {"circular", Arity::None},
+    {"adaptive", Arity::Float},
+    {"area_illumination", Arity::OptionalFloat},
+    {"looks_like", Arity::Block},
+    {"projected_through", Arity::Block},
+    {"photons", Arity::Block},
+    {"color_map", Arity::Block},
+    {"colour_map", Arity::Block},
+};
+
+constexpr ModifierArity kUnsupportedCameraItems[] = {
+    {"orthographic", Arity::None},     {"fisheye", Arity::None},
+    {"ultra_wide_angle", Arity::None}, {"omnimax", Arity::None},
+    {"panoramic", Arity::None},        {"spherical", Arity::None},
+    {"cylinder", Arity::Float},        {"mesh_camera", Arity::Block},
+    {"aperture", Arity::Float},        {"blur_samples", Arity::FloatOptionalFloat},
+    {"focal_point", Arity::Vector},    {"confidence", Arity::Float},
+    {"variance", Arity::Float},        {"normal", Arity::Block},
+    {"bokeh", Arity::Block},
+};
+
+template <std::size_t N>
+const ModifierArity* find_arity(const ModifierArity (&table)[N], const std::string& w) {
+    for (const ModifierArity& m : table) {
+        if (w == m.name) return &m;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+bool SceneParser::is_unsupported_object_keyword(const Token& t) const {
+    return is_keyword(t) && one_of(t.text(), {"bicubic_patch",
+                                              "blob",
+                                              "cone",
+                                              "cubic",
+                                              "difference",
+                                              "height_field",
+                                              "intersection",
+                                              "isosurface",
+                                              "julia_fractal",
+                                              "lathe",
+                                              "light_group",
+                                              "merge",
+                                              "mesh",
+                                              "mesh2",
+                                              "ovus",
+                                              "parametric",
+                                              "poly",
+                                              "polygon",
+                                              "polynomial",
+                                              "prism",
+                                              "quadric",
+                                              "quartic",
+                                              "smooth_triangle",
+                                              "sor",
+                                              "sphere_sweep",
+                                              "superellipsoid",
+                                              "text",
+                                              "torus",
+                                              "triangle",
+                                              "composite"});
+}
+
+bool SceneParser::starts_object(const Token& t) const {
+    if (is_keyword(t)) {
+        return one_of(t.text(), {"sphere", "plane", "box", "cylinder", "disc", "union", "object",
+                                 "light_source"}) ||
+               is_unsupported_object_keyword(t);
+    }
+    if (is_identifier(t)) {
+        auto sym = t.symbol ? t.symbol : lookup(t.text());
+        if (!sym) return false;
+        if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+            for (const auto& e : a->elements) {
+                if (e) return std::holds_alternative<ObjectNode>(e->data);
+            }
+            return false;
+        }
+        return std::holds_alternative<ObjectNode>(sym->value.data);
+    }
+    return false;
+}
+
+std::optional<ObjectNode> SceneParser::parse_object() {
+    const Token t = peek(0);
+    if (!starts_object(t)) return std::nullopt;
+    if (is_identifier(t)) {
+        Token name = next();
+        Value v = identifier_value(name);
+        auto* object = std::get_if<ObjectNode>(&v.data);
+        if (!object) fail(name, "expected an object, got " + value_type_name(v));
+        return std::move(*object);
+    }
+    Token kw = next();
+    const std::string& w = kw.text();
+    if (w == "union") return parse_union(kw);
+    if (w == "object") return parse_object_statement(kw);
+    if (w == "light_source") return parse_light_source(kw);
+    if (is_unsupported_object_keyword(kw)) {
+        unsupported(kw, "object '" + w + "'");
+        if (!peek_punct("{")) {
+            fail(peek(0), "expected '{' after '" + w + "', got " + describe(peek(0)));
+        }
+        skip_block();
+        ObjectNode empty;
+        empty.kind = ObjectNode::Kind::Empty;
+        empty.loc = kw.loc();
+        return empty;
+    }
+    return parse_shape(kw);
+}
+
+// `sphere { Ident ... }` and the like copy the object named (POV-Ray's Parse_Object_Id).
+static bool starts_with_object_identifier(const Value* v) {
+    return v && std::holds_alternative<ObjectNode>(v->data);
+}
+
+ObjectNode SceneParser::parse_shape(const Token& kw) {
+    expect_open_brace(kw);
+    if (starts_with_object_identifier(peek_identifier_value(0))) {
+        ObjectNode copy = std::get<ObjectNode>(identifier_value(next()).data);
+        parse_object_modifiers(copy, kw);
+        return copy;
+    }
+    ObjectNode node;
+    node.kind = ObjectNode::Kind::Shape;
+    node.loc = kw.loc();
+    const std::string& w = kw.text();
+    if (w == "sphere") {
+        Sphere s;
+        s.center = parse_vector();
+        accept_comma();
+        s.radius = parse_float();
+        node.shape = s;
+    } else if (w == "plane") {
+        Plane p;
+        Token at = peek(0);
+        glm::dvec3 n = parse_vector();
+        double length = glm::length(n);
+        if (length < kEpsilon) fail(at, "degenerate plane normal");
+        p.normal = n / length;
+        accept_comma();
+        p.distance = parse_float();
+        node.shape = p;
+    } else if (w == "box") {
+        glm::dvec3 a = parse_vector();
+        accept_comma();
+        glm::dvec3 b = parse_vector();
+        // POV-Ray sorts the corners.
+        Box box;
+        box.corner1 = glm::min(a, b);
+        box.corner2 = glm::max(a, b);
+        node.shape = box;
+    } else if (w == "cylinder") {
+        Cylinder c;
+        Token at = peek(0);
+        c.base = parse_vector();
+        accept_comma();
+        c.cap = parse_vector();
+        accept_comma();
+        c.radius = parse_float();
+        if (glm::length(c.cap - c.base) < kEpsilon) {
+            fail(at, "degenerate cylinder: the base and cap points are the same");
+        }
+        if (accept_word("open")) c.open = true;
+        node.shape = c;
+    } else if (w == "disc") {
+        Disc d;
+        d.center = parse_vector();
+        accept_comma();
+        Token at = peek(0);
+        glm::dvec3 n = parse_vector();
+        if (glm::length(n) < kEpsilon) fail(at, "degenerate disc normal");
+        d.normal = glm::normalize(n);
+        accept_comma();
+        d.radius = parse_float();
+        accept_comma();
+        if (starts_float(peek(0))) d.hole_radius = parse_float();
+        node.shape = d;
+    } else {
+        fail(kw, "expected an object, got " + describe(kw));
+    }
+    parse_object_modifiers(node, kw);
+    return node;
+}
+
+ObjectNode SceneParser::parse_union(const Token& kw) {
+    expect_open_brace(kw);
+    if (starts_with_object_identifier(peek_identifier_value(0)) && !peek_punct("}", 1)) {
+        // `union { Obj translate x }` is Obj moved; `union { A B }` is a union of two.
+        const Value* next_value = peek_identifier_value(1);
+        if (!starts_with_object_identifier(next_value) && !starts_object(peek(1))) {
+            ObjectNode copy = std::get<ObjectNode>(identifier_value(next()).data);
+            parse_object_modifiers(copy, kw);
+            return copy;
+        }
+    }
+    ObjectNode u;
+    u.kind = ObjectNode::Kind::Union;
+    u.loc = kw.loc();
+    while (auto child = parse_object()) u.children.push_back(std::move(*child));
+    if (u.children.size() < 2) {
+        add_message(kw, "warning", "a union should have at least 2 objects");
+    }
+    parse_object_modifiers(u, kw);
+    return u;
+}
+
+ObjectNode SceneParser::parse_object_statement(const Token& kw) {
+    expect_open_brace(kw);
+    auto inner = parse_object();
+    if (!inner) {
+        const Token& t = peek(0);
+        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
+            fail(t, "undefined identifier '" + t.text() + "'");
+        }
+        fail(t, "expected an object inside 'object', got " + describe(t));
+    }
+    parse_object_modifiers(*inner, kw);
+    return std::move(*inner);
+}
+
+ObjectNode SceneParser::parse_light_source(const Token& kw) {
+    expect_open_brace(kw);
+    if (starts_with_object_identifier(peek_identifier_value(0))) {
+        ObjectNode copy = std::get<ObjectNode>(identifier_value(next()).data);
+        parse_object_modifiers(copy, kw);
+        return copy;
+    }
+    ObjectNode node;
+    node.kind = ObjectNode::Kind::Light;
+    node.loc = kw.loc();
+    node.light.loc = kw.loc();
+    node.light.location = parse_vector();
+    accept_comma();
+    node.light.colour = parse_rgb_colour();
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_punct("}")) break;
+        Transform tr;
+        if (parse_transform_item(tr)) {
+            transform_object(node, tr);
+            continue;
+        }
+        if (t.is_word("shadowless")) {
+            next();
+            node.light.shadowless = true;
+            continue;
+        }
+        if (t.is_word("media_interaction") || t.is_word("media_attenuation")) {
+            // No media in the subset, so these change nothing.
+            next();
+            allow_float(1.0);
+            continue;
+        }
+        if (is_keyword(t)) {
+            if (const ModifierArity* m = find_arity(kUnsupportedLightModifiers, t.text())) {
+                Token item = next();
+                skip_unsupported(item, m->arity,
+                                 "light source modifier '" + item.text() + "' (only point lights)");
+                continue;
+            }
+        }
+        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
+            fail(t, "unknown keyword '" + t.text() + "'");
+        }
+        break;
+    }
+    expect_close_brace(kw);
+    return node;
+}
+
+void SceneParser::parse_object_modifiers(ObjectNode& node, const Token& kw) {
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_punct("}")) break;
+        Transform tr;
+        if (parse_transform_item(tr)) {
+            transform_object(node, tr);
+            continue;
+        }
+        if (is_keyword(t)) {
+            const std::string& w = t.text();
+            if (w == "texture") {
+                Token item = next();
+                expect_open_brace(item);
+                Texture tex = parse_texture_body(item);
+                expect_close_brace(item);
+                set_texture(node, std::move(tex), item);
+                continue;
+            }
+            if (w == "pigment" || w == "finish") {
+                Token item = next();
+                // They change the object's texture, or a copy of the default one.
+                if (!node.texture) node.texture = default_texture_;
+                if (w == "pigment") {
+                    expect_open_brace(item);
+                    parse_pigment_body(node.texture->pigment, item);
+                    expect_close_brace(item);
+                } else {
+                    parse_finish_block(node.texture->finish, item);
+                }
+                continue;
+            }
+            if (w == "no_shadow") {
+                next();
+                node.no_shadow = true;
+                continue;
+            }
+            if (w == "inverse") {
+                Token item = next();
+                if (node.kind == ObjectNode::Kind::Union) {
+                    unsupported(item, "modifier 'inverse' on a union");
+                } else {
+                    node.inverse = !node.inverse;
+                }
+                continue;
+            }
+            if (w == "hollow") {
+                // Only media and fog see the difference, and they are outside the subset.
+                next();
+                allow_float(1.0);
+                continue;
+            }
+            if (starts_colour(t)) {
+                // A "quick colour": POV-Ray ignores it outside a texture.
+                Token at = peek(0);
+                parse_colour(true);
+                add_message(at, "warning", "a colour outside a pigment is ignored");
+                continue;
+            }
+            if (const ModifierArity* m = find_arity(kUnsupportedObjectModifiers, w)) {
+                Token item = next();
+                skip_unsupported(item, m->arity,
+                                 "modifier '" + item.text() + "' in '" + kw.text() + "'");
+                continue;
+            }
+        }
+        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
+            fail(t, "unknown keyword '" + t.text() + "'");
+        }
+        break;
+    }
+    expect_close_brace(kw);
+}
+
+bool SceneParser::parse_transform_item(Transform& t) {
+    const Token& p = peek(0);
+    if (!is_keyword(p)) return false;
+    const std::string& w = p.text();
+    if (w == "translate") {
+        next();
+        t = make_translation(parse_vector());
+    } else if (w == "rotate") {
+        next();
+        t = make_rotation(parse_vector());
+    } else if (w == "scale") {
+        next();
+        t = make_scaling(parse_scale_vector());
+    } else if (w == "matrix") {
+        Token kw = next();
+        t = make_matrix_transform(parse_matrix(kw));
+    } else if (w == "transform") {
+        Token kw = next();
+        t = parse_transform_block(kw);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+Transform SceneParser::parse_transform_block(const Token& kw) {
+    // `transform Ident` (the old syntax) or `transform { ... }`.
+    if (const Value* v = peek_identifier_value(0);
+        v && std::holds_alternative<Transform>(v->data)) {
+        return std::get<Transform>(identifier_value(next()).data);
+    }
+    expect_open_brace(kw);
+    Transform t;
+    bool inverse = false;
+    while (true) {
+        const Token p = peek(0);
+        if (p.is_punct("}")) break;
+        if (p.is_word("inverse")) {
+            next();
+            inverse = true;
+            continue;
+        }
+        if (const Value* v = peek_identifier_value(0);
+            v && std::holds_alternative<Transform>(v->data)) {
+            t = compose_transforms(t, std::get<Transform>(identifier_value(next()).data));
+            continue;
+        }
+        Transform item;
+        if (parse_transform_item(item)) {
+            t = compose_transforms(t, item);
+            continue;
+        }
+        if (is_identifier(p) && !p.symbol && !lookup(p.text())) {
+            fail(p, "unknown keyword '" + p.text() + "'");
+        }
+        break;
+    }
+    expect_close_brace(kw);
+    return inverse ? invert_transform(t) : t;
+}
+
+std::array<double, 12> SceneParser::parse_matrix(const Token& kw) {
+    Token open = expect_punct("<", "after 'matrix'");
+    std::array<double, 12> m{};
+    for (int i = 0; i < 12; ++i) {
+        if (i) accept_comma();
+        m[i] = parse_float();
+    }
+    const Token& close = peek(0);
+    if (!close.is_punct(">")) {
+        fail(close, "expected '>' after the 12 values of 'matrix', got " + describe(close));
+    }
+    next();
+    // POV-Ray's Parse_Matrix: a column of zeros would scale by 0; it becomes 1 on the diagonal.
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(m[i]) < kEpsilon && std::abs(m[3 + i]) < kEpsilon &&
+            std::abs(m[6 + i]) < kEpsilon) {
+            add_message(kw, "warning", "matrix column scales by 0, changed to 1");
+            m[3 * i + i] = 1.0;
+        }
+    }
+    glm::dmat3 linear(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
+    if (std::abs(glm::determinant(linear)) < 1e-300) fail(open, "the matrix is singular");
+    return m;
+}
+
+CameraState SceneParser::parse_camera(const Token& kw) {
+    expect_open_brace(kw);
+    CameraState base;
+    if (const Value* v = peek_identifier_value(0);
+        v && std::holds_alternative<CameraState>(v->data)) {
+        // `camera { Ident ... }`: POV-Ray 3.5+ allows only transforms after the identifier.
+        base = std::get<CameraState>(identifier_value(next()).data);
+        CameraModifiers mods;
+        Transform tr;
+        while (parse_transform_item(tr)) mods.transform = compose_transforms(mods.transform, tr);
+        expect_close_brace(kw);
+        auto result = apply_camera_statement(base, mods);
+        if (!result) fail(kw, result.message());
+        return *result;
+    }
+    CameraModifiers mods;
+    bool other_type = false;  // lenient mode after an unsupported camera type
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_punct("}")) break;
+        Transform tr;
+        if (parse_transform_item(tr)) {
+            mods.transform = compose_transforms(mods.transform, tr);
+            continue;
+        }
+        if (is_keyword(t)) {
+            const std::string& w = t.text();
+            if (w == "perspective") {
+                next();
+                continue;
+            }
+            std::optional<glm::dvec3>* vector = w == "location"    ? &mods.location
+                                                : w == "direction" ? &mods.direction
+                                                : w == "up"        ? &mods.up
+                                                : w == "right"     ? &mods.right
+                                                : w == "sky"       ? &mods.sky
+                                                : w == "look_at"   ? &mods.look_at
+                                                                   : nullptr;
+            if (vector) {
+                next();
+                *vector = parse_vector();
+                continue;
+            }
+            if (w == "angle") {
+                next();
+                Token at = peek(0);
+                double angle = parse_float();
+                if (other_type) {
+                    // The angle of another projection (spherical takes two) means nothing
+                    // to the perspective camera the lenient parser falls back to.
+                    accept_comma();
+                    allow_float(0.0);
+                    continue;
+                }
+                if (angle < 0.0) fail(at, "negative viewing angle");
+                if (angle >= 180.0) fail(at, "the viewing angle must be smaller than 180 degrees");
+                mods.angle_deg = angle;
+                continue;
+            }
+            if (const ModifierArity* m = find_arity(kUnsupportedCameraItems, w)) {
+                Token item = next();
+                if (m->arity == Arity::None || w == "cylinder") other_type = true;
+                skip_unsupported(item, m->arity,
+                                 "camera item '" + item.text() + "' (only the perspective camera)");
+                continue;
+            }
+        }
+        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
+            fail(t, "unknown keyword '" + t.text() + "'");
+        }
+        break;
+    }
+    expect_close_brace(kw);
+    auto result = apply_camera_statement(base, mods);
+    if (!result) fail(kw, result.message());
+    if (!camera_vectors_perpendicular(*result)) {
+        add_message(kw, "warning", "camera vectors are not perpendicular");
+    }
+    return *result;
+}
+
+void SceneParser::parse_camera_into_scene(const Token& kw) {
+    CameraState state = parse_camera(kw);
+    if (had_camera_) {
+        add_message(kw, "warning", "more than one camera: the previous one is ignored");
+    }
+    had_camera_ = true;
+    scene_.camera = camera_from_state(state);
+    scene_.camera.loc = kw.loc();
+    scene_.has_camera = true;
+}
+
+}  // namespace mirage::scene_detail

@@ -1,0 +1,357 @@
+// The public entry points, the top level of a scene file (POV-Ray 3.7's Parse_Frame) and the
+// lenient mode's skipping.
+#include "scene/parser.h"
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "scene/scene_parser.h"
+#include "scene/transform.h"
+
+namespace mirage {
+namespace scene_detail {
+namespace {
+
+constexpr int kMaxTraceLevelLimit = 256;  // POV-Ray's MAX_TRACE_LEVEL_LIMIT
+
+struct ItemArity {
+    const char* name;
+    Arity arity;
+};
+
+constexpr ItemArity kUnsupportedGlobalSettings[] = {
+    {"adc_bailout", Arity::Float},     {"irid_wavelength", Arity::Colour},
+    {"number_of_waves", Arity::Float}, {"noise_generator", Arity::Float},
+    {"photons", Arity::Block},         {"radiosity", Arity::Block},
+    {"subsurface", Arity::Block},      {"hf_gray_16", Arity::OptionalFloat},
+    {"mm_per_unit", Arity::Float},
+};
+
+}  // namespace
+
+Scene SceneParser::parse(std::shared_ptr<SourceFile> main_file) {
+    scene_.file = main_file->path;
+    push_frame(main_file, 0, main_file->tokens.size() - 1, FrameContext::Kind::Main, "", Token{});
+    parse_top_level();
+    export_symbols();
+    return std::move(scene_);
+}
+
+void SceneParser::parse_top_level() {
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_eof()) {
+            check_cond_closed_at_frame_end(t);
+            return;
+        }
+        if (is_keyword(t)) {
+            const std::string& w = t.text();
+            if (w == "camera") {
+                parse_camera_into_scene(next());
+                continue;
+            }
+            if (w == "background") {
+                parse_background(next());
+                continue;
+            }
+            if (w == "sky_sphere") {
+                parse_sky_sphere(next());
+                continue;
+            }
+            if (w == "global_settings") {
+                parse_global_settings(next());
+                continue;
+            }
+            if (w == "max_trace_level") {
+                // Outside global_settings: POV-Ray takes it with a warning.
+                Token item = next();
+                int level = static_cast<int>(parse_float());
+                scene_.global.max_trace_level = std::clamp(level, 1, kMaxTraceLevelLimit);
+                add_message(item, "warning", "max_trace_level belongs in global_settings");
+                continue;
+            }
+            if (w == "default") {
+                // POV-Ray still takes the old form without '#'.
+                directive_default(next());
+                continue;
+            }
+            if (w == "fog" || w == "media" || w == "rainbow") {
+                Token item = next();
+                skip_unsupported(item, Arity::Block, "atmospheric effect '" + w + "'");
+                continue;
+            }
+            if (w == "declare" || w == "local" || w == "include") {
+                fail(t, "'" + w + "' needs a '#' before it");
+            }
+        }
+        if (starts_object(t)) {
+            std::optional<ObjectNode> object = parse_object();
+            add_object_to_scene(*object);
+            continue;
+        }
+        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
+            fail(t, "unknown keyword '" + t.text() + "'");
+        }
+        fail(t, "expected an object, camera, light_source or directive, got " + describe(t));
+    }
+}
+
+void SceneParser::add_object_to_scene(const ObjectNode& object) {
+    // POV-Ray gives untextured objects the default texture as each top-level object is
+    // finished (Post_Process), so a later #default does not change them.
+    flatten_object(object, default_texture_, scene_.primitives, scene_.lights);
+}
+
+void SceneParser::parse_global_settings(const Token& kw) {
+    expect_open_brace(kw);
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_punct("}")) break;
+        if (t.is_word("assumed_gamma")) {
+            next();
+            if (peek_word("srgb")) {
+                Token item = next();
+                unsupported(item, "assumed_gamma srgb");
+                continue;
+            }
+            Token at = peek(0);
+            double gamma = parse_float();
+            if (gamma <= 0.0) fail(at, "assumed_gamma must be positive");
+            scene_.global.assumed_gamma = gamma;
+            assumed_gamma_ = gamma;
+            gamma_set_ = true;
+            continue;
+        }
+        if (t.is_word("max_trace_level")) {
+            Token item = next();
+            int level = static_cast<int>(parse_float());
+            if (level > kMaxTraceLevelLimit) {
+                add_message(item, "warning",
+                            "max_trace_level " + std::to_string(level) + " reduced to 256");
+            }
+            scene_.global.max_trace_level = std::clamp(level, 1, kMaxTraceLevelLimit);
+            continue;
+        }
+        if (t.is_word("ambient_light")) {
+            next();
+            scene_.global.ambient_light = parse_rgb_colour();
+            continue;
+        }
+        if (t.is_word("max_intersections")) {
+            next();  // no effect in POV-Ray 3.7
+            parse_float();
+            continue;
+        }
+        if (t.is_word("charset")) {
+            Token item = next();
+            unsupported(item, "global setting 'charset'");
+            next();  // ascii, utf8 or sys
+            continue;
+        }
+        if (is_keyword(t)) {
+            bool known = false;
+            for (const ItemArity& s : kUnsupportedGlobalSettings) {
+                if (t.is_word(s.name)) {
+                    Token item = next();
+                    skip_unsupported(item, s.arity, "global setting '" + item.text() + "'");
+                    known = true;
+                    break;
+                }
+            }
+            if (known) continue;
+        }
+        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
+            fail(t, "unknown keyword '" + t.text() + "'");
+        }
+        break;
+    }
+    expect_close_brace(kw);
+}
+
+void SceneParser::parse_background(const Token& kw) {
+    expect_open_brace(kw);
+    scene_.background = parse_colour(true);
+    expect_close_brace(kw);
+}
+
+void SceneParser::parse_sky_sphere(const Token& kw) {
+    SkySphere sky = parse_sky_sphere_value(kw);
+    if (scene_.sky_sphere) {
+        add_message(kw, "warning", "more than one sky_sphere: the last one is used");
+    }
+    scene_.sky_sphere = std::move(sky);
+}
+
+SkySphere SceneParser::parse_sky_sphere_value(const Token& kw) {
+    expect_open_brace(kw);
+    SkySphere sky;
+    sky.loc = kw.loc();
+    if (const Value* v = peek_identifier_value(0);
+        v && std::holds_alternative<SkySphere>(v->data)) {
+        sky = std::get<SkySphere>(identifier_value(next()).data);
+    }
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_punct("}")) break;
+        Transform tr;
+        if (parse_transform_item(tr)) {
+            sky.transform = compose_transforms(sky.transform, tr);
+            continue;
+        }
+        if (t.is_word("pigment")) {
+            Token item = next();
+            Pigment p;  // black, as POV-Ray's Create_Pigment
+            expect_open_brace(item);
+            parse_pigment_body(p, item);
+            expect_close_brace(item);
+            finish_pigment(p);
+            sky.pigments.push_back(std::move(p));
+            continue;
+        }
+        if (t.is_word("emission")) {
+            next();
+            sky.emission = parse_rgb_colour();
+            continue;
+        }
+        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
+            fail(t, "unknown keyword '" + t.text() + "'");
+        }
+        break;
+    }
+    expect_close_brace(kw);
+    if (sky.pigments.empty()) fail(kw, "a sky_sphere needs at least one pigment");
+    return sky;
+}
+
+void SceneParser::export_symbols() {
+    for (const auto& [name, sym] : tables_[0]) {
+        if (sym->loc.file == "<image size>") continue;
+        Declared d;
+        d.loc = sym->loc;
+        if (auto* n = std::get_if<Numeric>(&sym->value.data)) {
+            if (n->size == 1) {
+                d.value = n->v[0];
+            } else if (n->size == 3) {
+                d.value = n->xyz();
+            } else {
+                continue;
+            }
+        } else if (auto* s = std::get_if<std::string>(&sym->value.data)) {
+            d.value = *s;
+        } else {
+            continue;
+        }
+        scene_.symbols[name] = d;
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Lenient mode
+
+void SceneParser::unsupported(const Token& at, const std::string& description) {
+    if (options_.strict) fail(at, "unsupported " + description);
+    scene_.skipped.push_back(Skipped{description, at.loc()});
+}
+
+void SceneParser::skip_block() {
+    Token open = expect_punct("{", "to open a block");
+    int depth = 1;
+    while (depth > 0) {
+        Token t = next();
+        if (t.is_eof()) {
+            fail(t, "expected '}' to close the '{' opened at " + place(open.loc(), t) +
+                        ", got end of file");
+        }
+        if (t.is_punct("{")) ++depth;
+        if (t.is_punct("}")) --depth;
+    }
+}
+
+void SceneParser::skip_rest_of_block() {
+    int depth = 0;
+    while (true) {
+        const Token& t = peek(0);
+        if (t.is_eof()) fail(t, "expected '}', got end of file");
+        if (t.is_punct("}") && depth == 0) return;
+        if (t.is_punct("{")) ++depth;
+        if (t.is_punct("}")) --depth;
+        next();
+    }
+}
+
+void SceneParser::skip_arguments(Arity arity, const Token& keyword) {
+    switch (arity) {
+        case Arity::None:
+            break;
+        case Arity::OptionalFloat:
+            allow_float(0.0);
+            break;
+        case Arity::Float:
+            parse_float();
+            break;
+        case Arity::FloatOptionalFloat:
+            parse_float();
+            accept_comma();
+            allow_float(0.0);
+            break;
+        case Arity::Vector:
+            parse_vector();
+            break;
+        case Arity::Colour:
+            parse_colour(true);
+            break;
+        case Arity::String:
+            parse_string(false);
+            break;
+        case Arity::Block:
+            if (!peek_punct("{")) {
+                fail(peek(0),
+                     "expected '{' after '" + keyword.text() + "', got " + describe(peek(0)));
+            }
+            skip_block();
+            break;
+        case Arity::AreaLight:
+            parse_vector();
+            accept_comma();
+            parse_vector();
+            accept_comma();
+            parse_float();
+            accept_comma();
+            parse_float();
+            break;
+        case Arity::Rest:
+            skip_rest_of_block();
+            break;
+    }
+}
+
+void SceneParser::skip_unsupported(const Token& keyword, Arity arity,
+                                   const std::string& description) {
+    unsupported(keyword, description);
+    skip_arguments(arity, keyword);
+}
+
+}  // namespace scene_detail
+
+Result<Scene> parse_scene_text(std::string_view text, const std::string& name,
+                               const ParseOptions& options) {
+    try {
+        scene_detail::SceneParser parser(options);
+        auto file = parser.load_file(name, std::string(text));
+        return parser.parse(file);
+    } catch (const scene_detail::ParseFailure& failure) {
+        return make_error(failure.message);
+    }
+}
+
+Result<Scene> parse_scene_file(const std::string& path, const ParseOptions& options) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return make_error(path + ": cannot open the scene file: " + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_scene_text(text.str(), path, options);
+}
+
+}  // namespace mirage

@@ -1,0 +1,44 @@
+// The parser of POV-Ray 3.7's scene language, shared by every mirage command: reads a .pov
+// file (with its #include files, macros, loops and declarations) into a Scene.
+//
+// Supported: the whole directive language (#declare, #local, #undef, #include, #if,
+// #ifdef, #ifndef, #elseif, #else, #switch, #case, #range, #break, #while, #for, #macro,
+// #version, #debug, #warning, #error, #default), float, vector, colour and string
+// expressions with POV-Ray's functions, arrays, and the scene subset mirage renders:
+// perspective camera, point lights, background, sky_sphere, global_settings (assumed_gamma,
+// max_trace_level, ambient_light), sphere, plane, box, cylinder, disc, union and object with
+// transforms, textures (solid, checker and gradient pigments with color_map; finish).
+// Anything else is an error naming it in strict mode and is skipped and recorded in
+// Scene::skipped in lenient mode.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.h"
+#include "util/result.h"
+
+namespace mirage {
+
+struct ParseOptions {
+    std::vector<std::string>
+        library_paths;  // searched after the including file's directory, like +L
+    std::map<std::string, double> declares;     // Declare=NAME=VALUE from the command line or .ini
+    int image_width = 320, image_height = 240;  // for the image_width / image_height identifiers
+    // strict: anything outside the supported subset is an error naming it and its place.
+    // lenient: unknown object kinds (and unsupported modifiers inside objects) are skipped
+    // (brace-matched) and recorded in Scene::skipped; camera, lights, declarations still parsed.
+    bool strict = true;
+};
+
+/// Parses the scene file at `path` (shown in messages as given).
+Result<Scene> parse_scene_file(const std::string& path, const ParseOptions& options);
+
+/// Parses scene text; `name` is the file name shown in messages, and its directory is where
+/// #include looks first.
+Result<Scene> parse_scene_text(std::string_view text, const std::string& name,
+                               const ParseOptions& options);
+
+}  // namespace mirage

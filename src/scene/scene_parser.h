@@ -1,0 +1,330 @@
+// The scene parser's internals, shared by its implementation files:
+//   scene_parser.cpp       token stream: files, includes, directives, macros, symbols
+//   parse_expressions.cpp  float, vector, colour and string expressions
+//   parse_objects.cpp      objects, transforms, light sources, the camera
+//   parse_materials.cpp    textures, pigments, finishes, colour maps
+//   parser.cpp             the public entry points and the top level of a scene file
+//
+// Like POV-Ray, the parser reads processed tokens: directives are carried out and macros
+// expanded as tokens are fetched, so that a directive may appear anywhere between tokens.
+// Errors are thrown as ParseFailure (a recursive-descent parser meets them deep down) and
+// turned into Result errors at the entry points; nothing escapes the library.
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/lexer.h"
+#include "scene/object_tree.h"
+#include "scene/parser.h"
+#include "scene/scene.h"
+#include "scene/value.h"
+
+namespace mirage::scene_detail {
+
+/// A complete, formatted error message, thrown from deep in the parser.
+struct ParseFailure {
+    std::string message;
+};
+
+/// Why a file is being read: the main file, an #include, or a macro body.  Chained to the
+/// frame it was entered from, for the "included from" lines of messages.
+struct FrameContext {
+    enum class Kind { Main, Include, Macro };
+    Kind kind = Kind::Main;
+    std::string macro_name;
+    FileLoc entered_at;  // the #include directive or the macro call
+    std::shared_ptr<const FrameContext> parent;
+};
+
+/// A named value in a symbol table.  Macro parameters passed by reference share the
+/// caller's Symbol.
+struct Symbol {
+    Value value;
+    FileLoc loc;
+};
+
+/// A processed token: a raw token with the file and frame it came from and, for identifiers,
+/// the symbol it named when it was read (POV-Ray resolves identifiers as it reads them).
+struct Token {
+    const RawToken* raw = nullptr;
+    std::shared_ptr<const SourceFile> file;
+    std::shared_ptr<const FrameContext> context;
+    std::shared_ptr<Symbol> symbol;
+    std::size_t index = 0;  // of the raw token in its file
+    // A '#' or a macro name read while directives were deferred (see defer_directives_): the
+    // directive or the call is carried out when the token is next fetched without deferral.
+    bool deferred_directive = false;
+    bool deferred_macro = false;
+
+    TokenKind kind() const { return raw->kind; }
+    const std::string& text() const { return raw->text; }
+    bool is_punct(std::string_view p) const { return kind() == TokenKind::Punct && text() == p; }
+    bool is_word(std::string_view w) const {
+        return kind() == TokenKind::Identifier && text() == w;
+    }
+    bool is_eof() const { return kind() == TokenKind::EndOfFile; }
+    bool is_deferred() const { return deferred_directive || deferred_macro; }
+    FileLoc loc() const { return FileLoc{file->path, raw->line, raw->column}; }
+};
+
+/// One entry of the conditional stack (POV-Ray's Cond_Stack).
+enum class Cond {
+    IfTrue,
+    IfFalse,
+    Else,
+    While,
+    For,
+    Switch,
+    CaseTrue,
+    CaseFalse,
+    SkipTilEnd,
+    DeclaringMacro,
+};
+
+struct CondEntry {
+    Cond type = Cond::IfTrue;
+    std::string directive;  // "#if", "#while"... for messages
+    FileLoc loc;
+    int frame_id = 0;
+    std::size_t loop_pos = 0;  // #while: the condition; #for: the first token of the body
+    std::string for_variable;
+    double for_end = 0.0, for_step = 1.0;
+    double switch_value = 0.0;
+    bool case_allowed = false;        // #switch: a #case or #range may follow
+    std::shared_ptr<MacroDef> macro;  // #macro being declared
+};
+
+/// A file being read: the main file, an include or a macro body.
+struct Frame {
+    std::shared_ptr<const SourceFile> file;
+    std::size_t pos = 0;
+    std::size_t end = 0;  // one past the last token to read (the '#' of a macro's #end)
+    FrameContext::Kind kind = FrameContext::Kind::Main;
+    std::shared_ptr<const FrameContext> context;
+    int id = 0;
+    bool owns_table = false;  // includes and macros have their own #local table
+};
+
+/// How the arguments of an unsupported keyword are skipped in lenient mode.
+enum class Arity {
+    None,
+    OptionalFloat,
+    Float,
+    FloatOptionalFloat,
+    Vector,
+    Colour,
+    String,
+    Block,
+    AreaLight,  // vector, vector, float, float
+    Rest,       // unknown: skip to the end of the enclosing block
+};
+
+/// Sets a flag for the lifetime of the scope.
+class ScopedFlag {
+  public:
+    ScopedFlag(bool& flag, bool value) : flag_(flag), saved_(flag) { flag_ = value; }
+    ~ScopedFlag() { flag_ = saved_; }
+    ScopedFlag(const ScopedFlag&) = delete;
+    ScopedFlag& operator=(const ScopedFlag&) = delete;
+
+  private:
+    bool& flag_;
+    bool saved_;
+};
+
+class SceneParser {
+  public:
+    explicit SceneParser(const ParseOptions& options);
+
+    /// Parses a whole scene.  Throws ParseFailure.
+    Scene parse(std::shared_ptr<SourceFile> main_file);
+
+    /// Reads and lexes a file (path as shown in messages); throws ParseFailure with `at`'s
+    /// place when the file cannot be lexed.
+    std::shared_ptr<SourceFile> load_file(const std::string& path, const std::string& text);
+
+  private:
+    // ---- errors and messages (scene_parser.cpp) ----
+    [[noreturn]] void fail(const Token& at, const std::string& message) const;
+    [[noreturn]] void fail_at(const SourceFile& file, int line, int column,
+                              const std::shared_ptr<const FrameContext>& context,
+                              const std::string& message) const;
+    std::vector<std::string> context_lines(const std::shared_ptr<const FrameContext>& c) const;
+    void add_message(const Token& at, const std::string& kind, const std::string& text);
+    static std::string describe(const Token& t);
+    static std::string place(const FileLoc& loc, const Token& relative_to);
+
+    // ---- token stream (scene_parser.cpp) ----
+    const Token& peek(std::size_t ahead = 0);
+    Token next();
+    bool peek_punct(std::string_view p, std::size_t ahead = 0) { return peek(ahead).is_punct(p); }
+    bool peek_word(std::string_view w, std::size_t ahead = 0) { return peek(ahead).is_word(w); }
+    bool accept_punct(std::string_view p);
+    bool accept_word(std::string_view w);
+    Token expect_punct(std::string_view p, std::string_view after);
+    Token expect_open_brace(const Token& keyword);
+    void expect_close_brace(const Token& keyword);
+    void accept_comma() { accept_punct(","); }
+
+    Token make_token(const std::shared_ptr<const SourceFile>& file, std::size_t index,
+                     const std::shared_ptr<const FrameContext>& context);
+    Token raw_next();
+    void fetch();
+    void fetch_until(std::size_t count);
+    void run_deferred(std::size_t at);
+    void resolve(Token& t);
+    bool is_keyword(const Token& t) const;
+    bool is_identifier(const Token& t) const;
+
+    void push_frame(std::shared_ptr<const SourceFile> file, std::size_t begin, std::size_t end,
+                    FrameContext::Kind kind, const std::string& macro_name, const Token& at);
+    void pop_frame();
+    void check_cond_closed_at_frame_end(const Token& eof);
+
+    // ---- directives (scene_parser.cpp) ----
+    void handle_directive(const Token& hash);
+    void directive_if(const Token& hash, const Token& keyword, Cond true_type, bool value);
+    void directive_else(const Token& hash, const Token& keyword);
+    void directive_elseif(const Token& hash, const Token& keyword);
+    void directive_end(const Token& hash, const Token& keyword);
+    void directive_case(const Token& hash, const Token& keyword);
+    void directive_switch(const Token& hash, const Token& keyword);
+    void directive_while(const Token& hash, const Token& keyword);
+    void directive_for(const Token& hash, const Token& keyword);
+    void directive_break(const Token& hash, const Token& keyword);
+    void directive_declare(const Token& keyword, bool local);
+    void directive_undef(const Token& keyword);
+    void directive_macro(const Token& hash, const Token& keyword);
+    void directive_include(const Token& hash, const Token& keyword);
+    void directive_version(const Token& keyword);
+    void directive_message(const Token& hash, const Token& keyword);
+    void directive_default(const Token& keyword);
+    void push_cond(Cond type, const Token& hash, const Token& keyword);
+    void skip_tokens(Cond type);
+    double parse_cond_param();
+    bool parse_ifdef_param();
+    void invoke_macro(const Token& name, const std::shared_ptr<const MacroDef>& macro);
+    int current_frame_id() const { return frames_.back().id; }
+
+    // ---- symbols (scene_parser.cpp) ----
+    std::shared_ptr<Symbol> lookup(const std::string& name, int* depth = nullptr) const;
+    void declare(const Token& name_token, Value value, bool local);
+    std::shared_ptr<Symbol> array_element(const Token& name, const std::shared_ptr<Symbol>& array,
+                                          bool for_assignment);
+
+    // ---- rvalues (scene_parser.cpp) ----
+    Value parse_rvalue(const Token& for_name, bool is_macro_argument);
+    Value parse_array_declaration(const Token& keyword);
+    void parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t base,
+                                 const Token& name);
+    Value parse_unsupported_value(const Token& keyword);
+    const Value* peek_identifier_value(std::size_t ahead = 0);
+    Value identifier_value(const Token& name);
+    std::shared_ptr<Value>& index_array(ArrayValue& array, const Token& name);
+    // Whether '[' follows (an array index).  The look never runs a directive: POV-Ray peeks
+    // at the characters after an array name.
+    bool peek_array_index(std::size_t ahead = 0) {
+        ScopedFlag defer(defer_directives_, true);
+        return peek_punct("[", ahead);
+    }
+
+    // ---- expressions (parse_expressions.cpp) ----
+    Numeric parse_express();
+    Numeric parse_logical();
+    Numeric parse_rel_term();
+    Numeric parse_rel_factor();
+    Numeric parse_num_term();
+    Numeric parse_num_factor();
+    Numeric parse_factor_body();
+    Numeric parse_function(const Token& name);
+    Numeric parse_identifier_value(const Token& t);
+    Numeric apply_period(const Numeric& value, const Token& dot);
+    double parse_float();
+    double parse_float_param();
+    glm::dvec3 parse_vector();
+    Numeric parse_vector_n(int size, std::string_view what);
+    glm::dvec3 parse_scale_vector();
+    Colour parse_colour(bool expect_filter_transmit);
+    glm::dvec3 parse_rgb_colour();
+    std::string parse_string(bool pathname);
+    bool starts_string(const Token& t) const;
+    bool starts_float(const Token& t) const;
+    bool starts_vector(const Token& t) const;
+    bool starts_colour(const Token& t) const;
+    bool starts_expression(const Token& t) const { return starts_vector(t) || starts_colour(t); }
+    double allow_float(double default_value);
+    std::string format_str(double value, int width, int precision) const;
+    double rand_next(int stream, const Token& at);
+
+    // ---- objects (parse_objects.cpp) ----
+    bool starts_object(const Token& t) const;
+    bool is_unsupported_object_keyword(const Token& t) const;
+    std::optional<ObjectNode> parse_object();
+    ObjectNode parse_shape(const Token& keyword);
+    ObjectNode parse_union(const Token& keyword);
+    ObjectNode parse_object_statement(const Token& keyword);
+    ObjectNode parse_light_source(const Token& keyword);
+    void parse_object_modifiers(ObjectNode& object, const Token& keyword);
+    bool parse_transform_item(Transform& t);
+    Transform parse_transform_block(const Token& keyword);
+    std::array<double, 12> parse_matrix(const Token& keyword);
+    CameraState parse_camera(const Token& keyword);
+    void parse_camera_into_scene(const Token& keyword);
+
+    // ---- materials (parse_materials.cpp) ----
+    Texture parse_texture_body(const Token& keyword);
+    void parse_pigment_body(Pigment& pigment, const Token& keyword);
+    void parse_finish_block(Finish& finish, const Token& keyword);
+    std::vector<ColourMapEntry> parse_colour_map(const Token& keyword);
+    void set_texture(ObjectNode& object, Texture texture, const Token& at);
+
+    // ---- the scene (parser.cpp) ----
+    void parse_top_level();
+    void parse_global_settings(const Token& keyword);
+    void parse_background(const Token& keyword);
+    void parse_sky_sphere(const Token& keyword);
+    SkySphere parse_sky_sphere_value(const Token& keyword);
+    void add_object_to_scene(const ObjectNode& object);
+    void export_symbols();
+
+    // ---- lenient mode (parser.cpp) ----
+    // `description` names the feature, e.g. "object 'isosurface'" or "modifier 'normal' in
+    // 'sphere'": strict mode fails with "unsupported <description>", lenient mode records it.
+    void unsupported(const Token& at, const std::string& description);
+    void skip_arguments(Arity arity, const Token& keyword);
+    void skip_block();
+    void skip_rest_of_block();
+    void skip_unsupported(const Token& keyword, Arity arity, const std::string& description);
+
+    const ParseOptions& options_;
+    Scene scene_;
+
+    std::vector<Frame> frames_;
+    int next_frame_id_ = 0;
+    std::deque<Token> lookahead_;
+    std::vector<CondEntry> cond_;
+    bool skipping_ = false;
+    bool defer_directives_ = false;
+    int macro_depth_ = 0;
+
+    std::vector<std::unordered_map<std::string, std::shared_ptr<Symbol>>> tables_;
+    std::map<std::string, std::shared_ptr<SourceFile>> file_cache_;
+
+    double language_version_ = 3.7;
+    bool gamma_set_ = false;  // assumed_gamma given (srgb colours need it)
+    double assumed_gamma_ = 1.0;
+    Texture default_texture_;
+    std::vector<unsigned> rand_streams_;
+    bool had_camera_ = false;
+};
+
+}  // namespace mirage::scene_detail

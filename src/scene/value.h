@@ -1,0 +1,82 @@
+// The values of the scene language: what an expression yields and an identifier holds.
+// Numbers follow POV-Ray's expression model: a float, a 2-, 3- or 4-component vector or a
+// 5-component colour (rgbft), all held as up to five doubles.
+#pragma once
+
+#include <array>
+#include <glm/glm.hpp>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/lexer.h"
+#include "scene/object_tree.h"
+#include "scene/scene.h"
+
+namespace mirage {
+
+/// A float (size 1), a vector (size 2 to 4) or a colour (size 5).
+struct Numeric {
+    int size = 1;
+    std::array<double, 5> v{};
+
+    static Numeric scalar(double x);
+    static Numeric vector3(const glm::dvec3& p);
+    static Numeric colour(const Colour& c);
+    glm::dvec3 xyz() const { return glm::dvec3(v[0], v[1], v[2]); }
+};
+
+/// POV-Ray's Promote_Express: widens to `size` components, repeating a float and padding a
+/// vector with zeros; never narrows.
+Numeric promote(const Numeric& n, int size);
+
+/// The colour of a 5-component numeric (rgb, filter, transmit).
+Colour numeric_to_colour(const Numeric& n);
+
+/// "float", "vector", "colour"... for messages.
+std::string numeric_type_name(int size);
+
+/// A macro: its parameters and where its body lies (token indices in its file, the body ends
+/// at the `#` of its `#end`).
+struct MacroDef {
+    std::string name;
+    std::vector<std::string> parameters;
+    std::shared_ptr<const SourceFile> file;
+    std::size_t body_begin = 0;
+    std::size_t body_end = 0;
+    FileLoc loc;
+};
+
+struct Value;
+
+/// An array; elements stay empty until assigned.
+struct ArrayValue {
+    std::vector<int> sizes;
+    std::vector<std::shared_ptr<Value>> elements;
+};
+
+struct ColourMapValue {
+    std::vector<ColourMapEntry> entries;
+};
+
+/// Something the lenient parser accepted without understanding (a function, a normal...).
+struct UnsupportedValue {
+    std::string what;
+};
+
+struct Value {
+    std::variant<Numeric, std::string, ObjectNode, Texture, Pigment, Finish, Transform,
+                 ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
+                 UnsupportedValue, SkySphere>
+        data;
+};
+
+/// A copy that shares nothing with `value` (array elements are copied too).
+Value deep_copy(const Value& value);
+
+/// "float", "vector", "string", "object", "texture"... for messages.
+std::string value_type_name(const Value& value);
+
+}  // namespace mirage
