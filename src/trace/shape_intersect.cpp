@@ -367,7 +367,11 @@ bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin,
             }
             double t_near, t_far;
             int s_near, s_far;
-            if (!box_roots(s.lo, s.hi, p, d, std::min(0.0, t_min), t_near, s_near, t_far, s_far)) {
+            // POV-Ray starts the entry depth at 0, where an entry closer than CLOSE_TOLERANCE
+            // does not register; a query reaching behind its origin (a polyline joint) starts
+            // far enough back for entries from t_min on to register.
+            const double t_start = t_min < 0.0 ? t_min - 2.0 * kBoxCloseTolerance : 0.0;
+            if (!box_roots(s.lo, s.hi, p, d, t_start, t_near, s_near, t_far, s_far)) {
                 return false;
             }
             if (s_near != 0) consider(t_near, s_near, t_min, t_max, hit, found);
