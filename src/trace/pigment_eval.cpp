@@ -3,19 +3,18 @@
 #include <cmath>
 
 #include "trace/shape_intersect.h"
+#include "trace/single_precision.h"
 
 namespace mirage {
 
 namespace {
 
-/// POV-Ray keeps colours and colour map positions in single precision.
-inline double single(double v) { return static_cast<double>(static_cast<float>(v)); }
-
 PigmentColour from_colour(const Colour& c) {
     PigmentColour out;
-    out.rgb = glm::dvec3(single(c.rgb.x), single(c.rgb.y), single(c.rgb.z));
-    out.filter = single(c.filter);
-    out.transmit = single(c.transmit);
+    // POV-Ray keeps colours and colour map positions in single precision.
+    out.rgb = to_single(c.rgb);
+    out.filter = to_single(c.filter);
+    out.transmit = to_single(c.transmit);
     return out;
 }
 
@@ -40,16 +39,16 @@ PigmentColour colour_map_lookup(const std::vector<ColourMapEntry>& map, double v
     const std::size_t last = map.size() - 1;
     std::size_t prev = 0;
     std::size_t cur = 0;
-    if (value >= single(map[last].position)) {
+    if (value >= to_single(map[last].position)) {
         prev = cur = last;
     } else {
-        while (value > single(map[cur].position)) prev = cur++;
+        while (value > to_single(map[cur].position)) prev = cur++;
     }
-    if (value == single(map[cur].position)) prev = cur;
+    if (value == to_single(map[cur].position)) prev = cur;
     const PigmentColour c_cur = from_colour(map[cur].colour);
     if (prev == cur) return c_cur;
-    const double p0 = single(map[prev].position);
-    const double p1 = single(map[cur].position);
+    const double p0 = to_single(map[prev].position);
+    const double p1 = to_single(map[cur].position);
     return mix(from_colour(map[prev].colour), c_cur, (value - p0) / (p1 - p0));
 }
 

@@ -7,6 +7,7 @@
 
 #include "trace/pigment_eval.h"
 #include "trace/shape_intersect.h"
+#include "trace/single_precision.h"
 #include "util/check.h"
 
 namespace mirage {
@@ -46,8 +47,6 @@ Status check_colour_map(const Pigment& p, const FileLoc& loc, const std::string&
 }
 
 inline double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-
-inline glm::dvec3 single(const glm::dvec3& v) { return glm::dvec3(glm::vec3(v)); }
 
 }  // namespace
 
@@ -136,13 +135,13 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
     // The layer's opacity (1 - filter - transmit); 1 for the opaque pigments we accept.
     const double att = 1.0 - pigment.filter - pigment.transmit;
 
-    glm::dvec3 colour = pigment.rgb * single(finish.ambient) * single(scene_->global.ambient_light) * att;
-    colour += pigment.rgb * single(finish.emission) * att;
+    glm::dvec3 colour = pigment.rgb * to_single(finish.ambient) * to_single(scene_->global.ambient_light) * att;
+    colour += pigment.rgb * to_single(finish.emission) * att;
 
     if (finish.diffuse != 0.0 || finish.specular != 0.0 || finish.phong != 0.0) {
         const glm::dvec3 reye = -ray_dir;
         for (const PointLight& light : scene_->lights) {
-            const glm::dvec3 light_colour = single(light.colour);
+            const glm::dvec3 light_colour = to_single(light.colour);
             if (std::abs(light_colour.x) < kPovEpsilon && std::abs(light_colour.y) < kPovEpsilon &&
                 std::abs(light_colour.z) < kPovEpsilon) {
                 continue;
@@ -194,7 +193,7 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
     // Reflection (ComputeReflectivity type 0 with reflection_min = reflection_max, then
     // ComputeReflection): the reflected ray starts on the surface; its weight is the
     // path's times the strongest reflection channel.
-    const glm::dvec3 reflectivity = single(finish.reflection);
+    const glm::dvec3 reflectivity = to_single(finish.reflection);
     if (reflectivity != glm::dvec3(0.0)) {
         glm::dvec3 reflected = ray_dir + (-2.0 * glm::dot(ray_dir, normal)) * normal;
         reflected = glm::normalize(reflected);
