@@ -182,15 +182,88 @@ Scene horizon_scene() {
     return s;
 }
 
+/// A scene file written as a POV-Ray user writes it (look_at, rotate, scale, textures
+/// before transforms, an unnormalised gradient vector, a layered sky), and the Scene the
+/// parser must build from it: checks how the tracer reads the Scene's fields.
+const char* const kHandwrittenPov = R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 2, -6> look_at <0, 0.6, 0> }
+light_source { <-4, 7, -5> color rgb 1 }
+sky_sphere {
+  pigment { gradient y color_map { [0 rgb <1, 0.9, 0.8>] [1 rgb <0.3, 0.4, 0.9>] } }
+  pigment { checker rgbt <1, 1, 1, 1> rgbt <1, 1, 1, 0.6> scale 0.2 }
+  rotate z*10
+}
+plane { y, 0
+  pigment { checker rgb <0.9, 0.9, 0.9> rgb <0.2, 0.2, 0.4> scale 0.5 rotate y*20 }
+  finish { diffuse 0.7 }
+}
+sphere { 0, 1
+  pigment { gradient <0, 3, 0> color_map { [0 rgb <1, 0, 0>] [0.5 rgb <1, 1, 0>] [1 rgb <0, 0, 1>] }
+            translate -0.5*y }
+  finish { specular 0.5 roughness 0.03 phong 0.3 }
+  scale <1.2, 0.8, 1> rotate z*15 translate <-1, 0.8, 0>
+}
+box { <-0.5, 0, -0.5>, <0.5, 1, 0.5> pigment { rgb <0.2, 0.8, 0.3> } rotate y*35 translate <1.5, 0, 0.5> }
+cylinder { <0, 0, 0>, <0, 0, 1.2>, 0.3 open
+  pigment { rgb <0.9, 0.6, 0.2> } finish { reflection 0.3 }
+  rotate x*-60 translate <0.3, 0.3, -1.5>
+}
+disc { <0, 0, 0>, z, 0.7, 0.2 pigment { checker rgb 1 rgb <0.8, 0, 0> scale 0.25 } translate <-2.5, 1.2, 2> }
+)";
+
+Scene handwritten_scene() {
+    Scene s;
+    s.file = "handwritten.pov";
+    s.camera = look_at_camera({0.0, 2.0, -6.0}, {0.0, 0.6, 0.0}, 1.33, 1.0);  // POV-Ray's defaults
+    s.lights.push_back(light({-4.0, 7.0, -5.0}));
+    SkySphere sky;
+    sky.pigments.push_back(gradient({0, 1, 0}, {{0.0, rgb(1.0, 0.9, 0.8)}, {1.0, rgb(0.3, 0.4, 0.9)}}));
+    sky.pigments.push_back(checker(Colour{glm::dvec3(1.0), 0.0, 1.0}, Colour{glm::dvec3(1.0), 0.0, 0.6},
+                                   scale({0.2, 0.2, 0.2})));
+    sky.transform = rotate({0.0, 0.0, 10.0});
+    s.sky_sphere = sky;
+    s.primitives.push_back(primitive(
+        Plane{{0, 1, 0}, 0.0},
+        texture(checker(rgb(0.9, 0.9, 0.9), rgb(0.2, 0.2, 0.4), then(scale({0.5, 0.5, 0.5}), rotate({0, 20, 0}))),
+                finish_with(0.1, 0.7))));
+    const Transform sphere_t = then(scale({1.2, 0.8, 1.0}), then(rotate({0, 0, 15}), translate({-1.0, 0.8, 0.0})));
+    Finish shiny;
+    shiny.specular = 0.5;
+    shiny.roughness = 0.03;
+    shiny.phong = 0.3;
+    s.primitives.push_back(primitive(
+        Sphere{{0, 0, 0}, 1.0},
+        texture(gradient({0, 3, 0}, {{0.0, rgb(1, 0, 0)}, {0.5, rgb(1, 1, 0)}, {1.0, rgb(0, 0, 1)}},
+                         then(translate({0.0, -0.5, 0.0}), sphere_t)),
+                shiny),
+        sphere_t));
+    s.primitives.push_back(primitive(Box{{-0.5, 0, -0.5}, {0.5, 1, 0.5}}, texture(solid(rgb(0.2, 0.8, 0.3))),
+                                     then(rotate({0, 35, 0}), translate({1.5, 0.0, 0.5}))));
+    Finish mirror;
+    mirror.reflection = glm::dvec3(0.3);
+    s.primitives.push_back(primitive(Cylinder{{0, 0, 0}, {0, 0, 1.2}, 0.3, true},
+                                     texture(solid(rgb(0.9, 0.6, 0.2)), mirror),
+                                     then(rotate({-60, 0, 0}), translate({0.3, 0.3, -1.5}))));
+    const Transform disc_t = translate({-2.5, 1.2, 2.0});
+    s.primitives.push_back(primitive(Disc{{0, 0, 0}, {0, 0, 1}, 0.7, 0.2},
+                                     texture(checker(rgb(1, 1, 1), rgb(0.8, 0, 0), then(scale({0.25, 0.25, 0.25}), disc_t))),
+                                     disc_t));
+    return s;
+}
+
 struct Parity {
     ImageComparison comparison;
     std::string message;
 };
 
-/// Renders `scene` with both renderers into the test's directory and compares the PNGs.
-Parity render_both(const Scene& scene, const std::string& name, int width, int height) {
+/// Renders `scene` with the tracer and `pov_text` (by default the scene written out) with
+/// POV-Ray into the test's directory, and compares the PNGs.
+Parity render_both(const Scene& scene, const std::string& name, int width, int height,
+                   const std::string& pov_text = "") {
     const auto dir = test_dir("pov_parity", name);
-    auto pov = render_with_povray(scene_to_pov(scene), dir, "povray", width, height);
+    auto pov = render_with_povray(pov_text.empty() ? scene_to_pov(scene) : pov_text, dir, "povray",
+                                  width, height);
     EXPECT_TRUE(pov.ok()) << pov.message();
     RenderSettings settings;
     settings.width = width;
@@ -226,6 +299,12 @@ Parity render_both(const Scene& scene, const std::string& name, int width, int h
 TEST(PovParity, Showcase) {
     if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
     const Parity p = render_both(showcase_scene(), "showcase", 320, 240);
+    EXPECT_GE(p.comparison.psnr_db, kRequiredPsnrDb) << p.message;
+}
+
+TEST(PovParity, HandwrittenSceneFile) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    const Parity p = render_both(handwritten_scene(), "handwritten", 320, 240, kHandwrittenPov);
     EXPECT_GE(p.comparison.psnr_db, kRequiredPsnrDb) << p.message;
 }
 
