@@ -4,7 +4,6 @@
 #include <benchmark/benchmark.h>
 
 #include <glm/gtc/matrix_transform.hpp>
-
 #include <random>
 #include <thread>
 
@@ -18,7 +17,7 @@ Transform make_transform(const glm::dmat4& m) { return Transform{m, glm::inverse
 
 Primitive prim(Shape shape, const glm::dvec3& rgb, const Finish& finish, const Transform& t = {}) {
     Primitive p;
-    p.shape = std::move(shape);
+    p.shape = shape;
     p.texture.pigment.colour.rgb = rgb;
     p.texture.finish = finish;
     p.transform = t;
@@ -60,12 +59,15 @@ Scene bench_scene() {
                              glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(0, 1, 0));
     s.primitives.push_back(prim(Box{{-0.5, 0.0, -0.5}, {0.5, 0.8, 0.5}}, {0.2, 0.7, 0.25}, plain,
                                 make_transform(box_t)));
-    s.primitives.push_back(prim(Cylinder{{0.0, 0.0, 2.5}, {0.0, 1.6, 2.5}, 0.3, false}, {0.9, 0.5, 0.1}, plain));
-    s.primitives.push_back(prim(Disc{{-3.2, 1.2, 2.5}, {0.3, 0.0, -1.0}, 0.9, 0.3}, {0.9, 0.85, 0.1}, plain));
+    s.primitives.push_back(
+        prim(Cylinder{{0.0, 0.0, 2.5}, {0.0, 1.6, 2.5}, 0.3, false}, {0.9, 0.5, 0.1}, plain));
+    s.primitives.push_back(
+        prim(Disc{{-3.2, 1.2, 2.5}, {0.3, 0.0, -1.0}, 0.9, 0.3}, {0.9, 0.85, 0.1}, plain));
     SkySphere sky;
     Pigment g;
     g.kind = PigmentKind::Gradient;
-    g.colour_map = {{0.0, Colour{glm::dvec3(0.9, 0.9, 1.0)}}, {1.0, Colour{glm::dvec3(0.2, 0.35, 0.8)}}};
+    g.colour_map = {{0.0, Colour{glm::dvec3(0.9, 0.9, 1.0)}},
+                    {1.0, Colour{glm::dvec3(0.2, 0.35, 0.8)}}};
     sky.pigments.push_back(g);
     s.sky_sphere = sky;
     return s;
@@ -92,11 +94,15 @@ void BM_TraceRender(benchmark::State& state) {
         benchmark::DoNotOptimize(result->image.pixels.data());
     }
     state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays) / seconds * 1e-6);
-    state.counters["rays/frame"] = benchmark::Counter(static_cast<double>(rays) / state.iterations());
+    state.counters["rays/frame"] =
+        benchmark::Counter(static_cast<double>(rays) / static_cast<double>(state.iterations()));
     state.counters["threads"] = settings.threads;
 }
-BENCHMARK(BM_TraceRender)->Arg(1)->Arg(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())))
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_TraceRender)
+    ->Arg(1)
+    ->Arg(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())))
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 /// Random closest-hit queries against the scene, as a propagator issues them per segment.
 void BM_TraceClosestHit(benchmark::State& state) {

@@ -1,9 +1,8 @@
 // An RGB image in memory: float samples, row-major from the top row, three per pixel.
 #pragma once
 
-#include <glm/glm.hpp>
-
 #include <cstddef>
+#include <glm/glm.hpp>
 #include <vector>
 
 namespace mirage {

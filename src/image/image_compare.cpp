@@ -21,8 +21,8 @@ OIIO::ImageBuf wrap(const Image& image) {
 Status check_same_size(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height) {
         return make_error("cannot compare images of different sizes: " + std::to_string(a.width) +
-                          "x" + std::to_string(a.height) + " and " + std::to_string(b.width) +
-                          "x" + std::to_string(b.height));
+                          "x" + std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
+                          std::to_string(b.height));
     }
     if (a.empty()) return make_error("cannot compare empty images");
     return Ok{};

@@ -12,12 +12,12 @@ namespace mirage {
 /// How far apart two images of the same size are, over all pixels and channels, in the
 /// images' own units (code / 255 for PNGs read by `read_image`).
 struct ImageComparison {
-    double rmse = 0.0;               // root mean square difference over all samples
-    double psnr_db = 0.0;            // 20 log10(1 / rmse); +infinity for identical images
-    double max_error = 0.0;          // largest absolute difference of one sample
-    int max_x = 0;                   // pixel with the largest difference
+    double rmse = 0.0;       // root mean square difference over all samples
+    double psnr_db = 0.0;    // 20 log10(1 / rmse); +infinity for identical images
+    double max_error = 0.0;  // largest absolute difference of one sample
+    int max_x = 0;           // pixel with the largest difference
     int max_y = 0;
-    std::int64_t pixels_over = 0;    // pixels with a channel differing by more than threshold
+    std::int64_t pixels_over = 0;  // pixels with a channel differing by more than threshold
     std::int64_t pixel_count = 0;
 };
 

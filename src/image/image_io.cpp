@@ -35,7 +35,7 @@ std::string temporary_name(const std::string& path) {
 }
 
 Status write_through_temporary(const std::string& path, const OIIO::ImageSpec& spec,
-                               OIIO::TypeDesc format, const void* data) {
+                               const OIIO::TypeDesc& format, const void* data) {
     const std::string tmp = temporary_name(path);
     auto out = OIIO::ImageOutput::create(path);
     if (!out) return make_error(path + ": cannot write images of this type: " + OIIO::geterror());
@@ -64,8 +64,8 @@ Status write_through_temporary(const std::string& path, const OIIO::ImageSpec& s
 
 Status check_image(const Image& image, const std::string& path) {
     if (image.empty()) return make_error(path + ": refusing to write an empty image");
-    MIRAGE_CHECK(image.pixels.size() ==
-                 static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 3);
+    MIRAGE_CHECK(image.pixels.size() == static_cast<std::size_t>(image.width) *
+                                            static_cast<std::size_t>(image.height) * 3);
     return Ok{};
 }
 

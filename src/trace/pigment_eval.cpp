@@ -58,17 +58,17 @@ double pattern_value(const Pigment& pigment, const glm::dvec3& p) {
     switch (pigment.kind) {
         case PigmentKind::Checker: {
             // checker_pattern; POV-Ray sets its frequency to 0, so no wave is applied.
-            const int value = static_cast<int>(std::floor(p.x + kPovEpsilon) +
-                                               std::floor(p.y + kPovEpsilon) +
-                                               std::floor(p.z + kPovEpsilon));
+            const int value =
+                static_cast<int>(std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
+                                 std::floor(p.z + kPovEpsilon));
             return (value & 1) ? 1.0 : 0.0;
         }
         case PigmentKind::Gradient: {
             // gradient_pattern with the axis normalised as POV-Ray's parser does, then
             // Evaluate_TPat's ramp wave with frequency 1 and phase 0.
             const double length = glm::length(pigment.gradient_axis);
-            const glm::dvec3 axis = length > 0.0 ? pigment.gradient_axis * (1.0 / length)
-                                                 : pigment.gradient_axis;
+            const glm::dvec3 axis =
+                length > 0.0 ? pigment.gradient_axis * (1.0 / length) : pigment.gradient_axis;
             double value = glm::dot(p, axis);
             if (value > 1.0) value = std::fmod(value, 1.0);
             value = std::fmod(value * 1.0 + 0.0, 1.00001);

@@ -40,8 +40,8 @@ bool PolylineMarch::query(const glm::dvec3& direction, double length) {
     // and end a little after the next one.
     const double before = length_ == 0.0 ? 0.0 : joint_tolerance(point_);
     const double t_min = std::max(-before, min_depth_ - length_);
-    const double t_max = std::isinf(length) ? kPovBoundHuge
-                                            : length + joint_tolerance(point_ + length * direction);
+    const double t_max =
+        std::isinf(length) ? kPovBoundHuge : length + joint_tolerance(point_ + length * direction);
     if (t_min <= t_max) {
         if (auto hit = accel_->closest_hit(point_, direction, t_min, t_max)) {
             result_.hit = true;

@@ -17,10 +17,10 @@ inline constexpr double kMinIsectDepth = 1.0e-4;
 /// The end of a ray's path.
 struct PathHit {
     bool hit = false;
-    SurfaceHit surface;          // valid when hit; surface.t is along the last segment
-    glm::dvec3 direction{0.0};   // unit direction of travel at the hit point, or the final
-                                 // direction when the ray escapes (sky lookup)
-    int segments = 0;            // straight segments followed (statistics)
+    SurfaceHit surface;         // valid when hit; surface.t is along the last segment
+    glm::dvec3 direction{0.0};  // unit direction of travel at the hit point, or the final
+                                // direction when the ray escapes (sky lookup)
+    int segments = 0;           // straight segments followed (statistics)
 };
 
 /// Follows a ray from `origin` along unit `direction` through the scene, possibly bending,
@@ -28,7 +28,7 @@ struct PathHit {
 /// (propagate is called concurrently) and ignore surfaces within kMinIsectDepth of the
 /// origin along the path, as POV-Ray does.
 class Propagator {
-public:
+  public:
     virtual ~Propagator() = default;
     virtual PathHit propagate(const SceneAccel& accel, const glm::dvec3& origin,
                               const glm::dvec3& direction) const = 0;
@@ -36,7 +36,7 @@ public:
 
 /// Straight rays: one segment to infinity (POV-Ray's BOUND_HUGE).
 class StraightPropagator final : public Propagator {
-public:
+  public:
     PathHit propagate(const SceneAccel& accel, const glm::dvec3& origin,
                       const glm::dvec3& direction) const override;
 };
@@ -54,7 +54,7 @@ public:
 ///     if (!march.done()) march.ray(final_direction);
 ///     PathHit result = march.result();
 class PolylineMarch {
-public:
+  public:
     /// Joint overlap, relative to 1 + the largest coordinate of the joint.
     static constexpr double kJointTolerance = 1.0e-9;
 
@@ -76,7 +76,7 @@ public:
     const glm::dvec3& point() const { return point_; }
     double path_length() const { return length_; }
 
-private:
+  private:
     bool query(const glm::dvec3& direction, double length);
 
     const SceneAccel* accel_;

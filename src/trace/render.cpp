@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <mutex>
 #include <sstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -21,7 +22,7 @@ namespace {
 
 /// A progress bar on stderr, redrawn when the shown percentage changes.
 class ProgressBar {
-public:
+  public:
     ProgressBar(bool enabled, int total) : enabled_(enabled), total_(total) {}
     void advance() {
         if (!enabled_) return;
@@ -38,7 +39,7 @@ public:
         std::fflush(stderr);
     }
 
-private:
+  private:
     bool enabled_;
     int total_;
     std::atomic<int> done_{0};
@@ -66,6 +67,26 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
     if (auto s = check_supported(scene); !s) return s.error();
     auto accel = SceneAccel::build(scene);
     if (!accel) return accel.error();
+    // A degenerate camera would give NaN rays: refuse it before tracing.
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, std::pair{1.0 * settings.width, 0.0},
+                               std::pair{0.0, 1.0 * settings.height},
+                               std::pair{1.0 * settings.width, 1.0 * settings.height},
+                               std::pair{0.5 * settings.width, 0.5 * settings.height}}) {
+        const PixelRay r = pixel_ray(scene.camera, x, y, settings.width, settings.height);
+        const bool finite = std::isfinite(r.origin.x) && std::isfinite(r.origin.y) &&
+                            std::isfinite(r.origin.z) && std::isfinite(r.direction.x) &&
+                            std::isfinite(r.direction.y) && std::isfinite(r.direction.z);
+        if (!finite || std::abs(glm::length(r.direction) - 1.0) > 1e-9) {
+            std::string where;
+            if (!scene.camera.loc.file.empty()) {
+                where = scene.camera.loc.file + ":" + std::to_string(scene.camera.loc.line) + ":" +
+                        std::to_string(scene.camera.loc.column) + ": ";
+            }
+            return make_error(where +
+                              "camera: its vectors give no ray direction (zero or "
+                              "parallel direction, right and up?)");
+        }
+    }
 
     const auto start = std::chrono::steady_clock::now();
     const Shader shader(scene, *accel, propagator);
@@ -93,8 +114,8 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
             const int y1 = std::min(y0 + settings.tile_size, settings.height);
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
-                    const PixelRay ray = pixel_ray(scene.camera, x + 0.5, y + 0.5,
-                                                   settings.width, settings.height);
+                    const PixelRay ray =
+                        pixel_ray(scene.camera, x + 0.5, y + 0.5, settings.width, settings.height);
                     const glm::dvec3 c = shader.trace_camera_ray(ray.origin, ray.direction, mine);
                     MIRAGE_CHECK(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
                     result.image.set(x, y, glm::vec3(c));

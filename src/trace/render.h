@@ -16,18 +16,18 @@
 namespace mirage {
 
 struct RenderSettings {
-    int width = 320;        // image width, in pixels
-    int height = 240;       // image height, in pixels
-    int threads = 0;        // worker threads; 0 = all cores
-    bool progress = true;   // progress bar on stderr, shown only when stderr is a terminal
-    int tile_size = 32;     // side of the square tiles handed to the threads, in pixels
+    int width = 320;       // image width, in pixels
+    int height = 240;      // image height, in pixels
+    int threads = 0;       // worker threads; 0 = all cores
+    bool progress = true;  // progress bar on stderr, shown only when stderr is a terminal
+    int tile_size = 32;    // side of the square tiles handed to the threads, in pixels
 };
 
 /// What a render did and how fast.
 struct RenderStats {
     TraceCounters counters;
-    int threads = 0;         // threads used
-    double seconds = 0.0;    // wall-clock time of the tracing
+    int threads = 0;       // threads used
+    double seconds = 0.0;  // wall-clock time of the tracing
     /// Camera and reflected rays: the rays that went through the propagator.
     std::uint64_t rays() const { return counters.camera_rays + counters.reflected_rays; }
     /// Propagated rays plus shadow rays.

@@ -204,8 +204,8 @@ std::optional<SurfaceHit> SceneAccel::closest_hit(const glm::dvec3& origin,
     return hit;
 }
 
-bool SceneAccel::any_shadow_hit(const glm::dvec3& origin, const glm::dvec3& direction,
-                                double t_min, double t_max) const {
+bool SceneAccel::any_shadow_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
+                                double t_max) const {
     Candidate best;
     return traverse<true>(origin, direction, t_min, t_max, best);
 }

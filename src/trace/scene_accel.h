@@ -3,9 +3,8 @@
 // along a segment and whether any shadow-casting primitive lies on one.
 #pragma once
 
-#include <glm/glm.hpp>
-
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
 
@@ -18,15 +17,15 @@ namespace mirage {
 
 /// Where a ray met a surface.
 struct SurfaceHit {
-    double t = 0.0;             // distance from the query's origin along its unit direction
-    glm::dvec3 point{0.0};      // world point, origin + t direction
-    glm::dvec3 normal{0.0};     // unit geometric normal as the shape defines it (outward,
-                                // flipped for `inverse`), not turned toward the ray
-    int primitive = -1;         // index into Scene::primitives
+    double t = 0.0;          // distance from the query's origin along its unit direction
+    glm::dvec3 point{0.0};   // world point, origin + t direction
+    glm::dvec3 normal{0.0};  // unit geometric normal as the shape defines it (outward,
+                             // flipped for `inverse`), not turned toward the ray
+    int primitive = -1;      // index into Scene::primitives
 };
 
 class SceneAccel {
-public:
+  public:
     /// Prepares every primitive of the scene; fails with the first one that cannot be
     /// prepared (its message names the place in the scene file).
     static Result<SceneAccel> build(const Scene& scene);
@@ -49,7 +48,7 @@ public:
     /// Primitives kept outside the hierarchy because they are unbounded.
     const std::vector<int>& unbounded() const { return unbounded_; }
 
-private:
+  private:
     struct Node {
         Aabb box;
         int first = 0;  // leaf: first index into order_; inner: index of the second child
@@ -65,13 +64,13 @@ private:
     int build_node(std::vector<int>& items, int begin, int end, int depth,
                    const std::vector<Aabb>& boxes, const std::vector<glm::dvec3>& centres);
     template <bool kAnyShadow>
-    bool traverse(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
-                  double t_max, Candidate& best) const;
+    bool traverse(const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max,
+                  Candidate& best) const;
 
     std::vector<PreparedShape> shapes_;
     std::vector<std::uint8_t> casts_shadow_;
     std::vector<Node> nodes_;
-    std::vector<int> order_;      // finite primitives in leaf order
+    std::vector<int> order_;  // finite primitives in leaf order
     std::vector<int> unbounded_;
     Aabb finite_bounds_;
 };

@@ -40,13 +40,19 @@ bool pigment_is_transparent(const Pigment& p) {
 Status check_colour_map(const Pigment& p, const FileLoc& loc, const std::string& what) {
     for (std::size_t i = 1; i < p.colour_map.size(); ++i) {
         if (p.colour_map[i].position < p.colour_map[i - 1].position) {
-            return make_error(place(loc) + what + ": colour_map entries must be in ascending order");
+            return make_error(place(loc) + what +
+                              ": colour_map entries must be in ascending order");
         }
     }
     return Ok{};
 }
 
 inline double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+/// POV-Ray stores 1 / roughness, and keeps 0 for a roughness of 0 (with a warning).
+inline double specular_exponent(const Finish& f) {
+    return f.roughness != 0.0 ? 1.0 / f.roughness : 0.0;
+}
 
 }  // namespace
 
@@ -74,15 +80,11 @@ Status check_supported(const Scene& scene) {
                               "by the built-in tracer");
         }
         if (auto s = check_colour_map(pigment, p.loc, "pigment"); !s) return s;
-        const Finish& f = p.texture.finish;
-        if (f.brilliance < 0.0 || f.phong_size < 0.0 || !(f.roughness > 0.0)) {
-            return make_error(place(p.loc) +
-                              "finish: brilliance and phong_size must be >= 0 and roughness > 0");
-        }
     }
     if (scene.sky_sphere) {
         for (const Pigment& pigment : scene.sky_sphere->pigments) {
-            if (auto s = check_colour_map(pigment, scene.sky_sphere->loc, "sky_sphere pigment"); !s) {
+            if (auto s = check_colour_map(pigment, scene.sky_sphere->loc, "sky_sphere pigment");
+                !s) {
                 return s;
             }
         }
@@ -104,8 +106,8 @@ glm::dvec3 Shader::trace_camera_ray(const glm::dvec3& origin, const glm::dvec3& 
     return trace_ray(origin, direction, 1.0, 0, counters);
 }
 
-glm::dvec3 Shader::trace_ray(const glm::dvec3& origin, const glm::dvec3& direction,
-                             double weight, int level, TraceCounters& counters) const {
+glm::dvec3 Shader::trace_ray(const glm::dvec3& origin, const glm::dvec3& direction, double weight,
+                             int level, TraceCounters& counters) const {
     // TraceRay: out of trace levels, or too faint to matter, is black (not the sky).
     if (level >= max_trace_level_ || weight < kAdcBailout) {
         if (level >= max_trace_level_) ++counters.trace_level_cutoffs;
@@ -135,7 +137,8 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
     // The layer's opacity (1 - filter - transmit); 1 for the opaque pigments we accept.
     const double att = 1.0 - pigment.filter - pigment.transmit;
 
-    glm::dvec3 colour = pigment.rgb * to_single(finish.ambient) * to_single(scene_->global.ambient_light) * att;
+    glm::dvec3 colour =
+        pigment.rgb * to_single(finish.ambient) * to_single(scene_->global.ambient_light) * att;
     colour += pigment.rgb * to_single(finish.emission) * att;
 
     if (finish.diffuse != 0.0 || finish.specular != 0.0 || finish.phong != 0.0) {
@@ -148,6 +151,7 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
             }
             glm::dvec3 to_light = light.location - point;
             const double distance = glm::length(to_light);
+            if (!(distance > 0.0)) continue;  // a light on the surface lights nothing there
             to_light *= 1.0 / distance;
             // Lit from behind the surface (as seen from the ray): no contribution.
             const double cos_in = glm::dot(normal, to_light);
@@ -161,8 +165,9 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
             }
             // ComputeDiffuseColour.
             if (finish.diffuse > 0.0) {
-                double intensity = finish.brilliance != 1.0 ? std::pow(std::abs(cos_in), finish.brilliance)
-                                                            : std::abs(cos_in);
+                double intensity = finish.brilliance != 1.0
+                                       ? std::pow(std::abs(cos_in), finish.brilliance)
+                                       : std::abs(cos_in);
                 intensity *= finish.diffuse * att;
                 colour += intensity * pigment.rgb * light_colour;
             }
@@ -183,7 +188,8 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
                 if (length > 0.0) {
                     const double c = glm::dot(halfway, normal) / length;
                     if (c > 0.0) {
-                        colour += finish.specular * std::pow(c, 1.0 / finish.roughness) * light_colour;
+                        colour +=
+                            finish.specular * std::pow(c, specular_exponent(finish)) * light_colour;
                     }
                 }
             }

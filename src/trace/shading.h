@@ -5,9 +5,8 @@
 // reflected rays travel through a Propagator; shadow rays are straight.
 #pragma once
 
-#include <glm/glm.hpp>
-
 #include <cstdint>
+#include <glm/glm.hpp>
 
 #include "scene/scene.h"
 #include "trace/propagator.h"
@@ -26,10 +25,10 @@ inline constexpr int kMaxTraceLevelLimit = 256;
 
 /// What a render traced, summed over its rays (integers, so sums are deterministic).
 struct TraceCounters {
-    std::uint64_t camera_rays = 0;     // rays from the camera
-    std::uint64_t reflected_rays = 0;  // reflected rays traced (not cut off)
-    std::uint64_t shadow_rays = 0;     // straight rays toward lights
-    std::uint64_t segments = 0;        // straight segments of camera and reflected rays
+    std::uint64_t camera_rays = 0;          // rays from the camera
+    std::uint64_t reflected_rays = 0;       // reflected rays traced (not cut off)
+    std::uint64_t shadow_rays = 0;          // straight rays toward lights
+    std::uint64_t segments = 0;             // straight segments of camera and reflected rays
     std::uint64_t trace_level_cutoffs = 0;  // reflections not traced: max_trace_level reached
     void add(const TraceCounters& other);
 };
@@ -42,7 +41,7 @@ Status check_supported(const Scene& scene);
 /// Shades rays of a scene.  Holds references: the scene, the accel and the propagator must
 /// outlive it.  Thread-safe: every method is const and keeps no state.
 class Shader {
-public:
+  public:
     Shader(const Scene& scene, const SceneAccel& accel, const Propagator& propagator);
 
     /// The linear colour seen along a camera ray (POV-Ray's TraceRay at trace level 0 with
@@ -53,12 +52,11 @@ public:
     /// The colour at the end of a path: its surface lit by the scene's lights, plus
     /// reflection, or the sky when it escaped.  `weight` is the path's contribution to the
     /// pixel and `level` the trace level reached (1 for a camera ray's hit).
-    glm::dvec3 shade(const PathHit& path, double weight, int level,
-                     TraceCounters& counters) const;
+    glm::dvec3 shade(const PathHit& path, double weight, int level, TraceCounters& counters) const;
 
     int max_trace_level() const { return max_trace_level_; }
 
-private:
+  private:
     glm::dvec3 trace_ray(const glm::dvec3& origin, const glm::dvec3& direction, double weight,
                          int level, TraceCounters& counters) const;
 

@@ -122,8 +122,7 @@ void set_local_frame(PreparedShape& s, const Transform& t, const glm::dmat4& can
 }
 
 /// Accepts t when it lies in [t_min, t_max] and is closer than the best so far.
-inline void consider(double t, int part, double t_min, double t_max, ShapeHit& best,
-                     bool& found) {
+inline void consider(double t, int part, double t_min, double t_max, ShapeHit& best, bool& found) {
     if (t >= t_min && t <= t_max && (!found || t < best.t)) {
         best.t = t;
         best.part = part;
@@ -134,8 +133,7 @@ inline void consider(double t, int part, double t_min, double t_max, ShapeHit& b
 /// POV-Ray's Sphere::Intersect: the two depths along a unit direction, or false for a miss
 /// (including rays that only graze, half chord^2 <= EPSILON).
 inline bool sphere_roots(const glm::dvec3& centre, double radius_sq, const glm::dvec3& origin,
-                         const glm::dvec3& direction, bool allow_behind, double& t1,
-                         double& t2) {
+                         const glm::dvec3& direction, bool allow_behind, double& t1, double& t2) {
     const glm::dvec3 oc = centre - origin;
     const double oc_sq = glm::dot(oc, oc);
     const double t_closest = glm::dot(oc, direction);
@@ -152,9 +150,8 @@ inline bool sphere_roots(const glm::dvec3& centre, double radius_sq, const glm::
 /// POV-Ray's Box::Intersect (boxes.cpp) in the box's own space, unnormalised direction: the
 /// entry and exit depths with the sides hit, the sides disambiguated where the ray passes
 /// within CLOSE_TOLERANCE of an edge.  `t_start` is where the entry depth starts (POV-Ray: 0).
-bool box_roots(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& p,
-               const glm::dvec3& d, double t_start, double& t_near, int& s_near,
-               double& t_far, int& s_far) {
+bool box_roots(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& p, const glm::dvec3& d,
+               double t_start, double& t_near, int& s_near, double& t_far, int& s_far) {
     double tmin = t_start;
     double tmax = kPovBoundHuge;
     int smin = 0;
@@ -212,7 +209,8 @@ Result<PreparedShape> prepare_shape(const Primitive& primitive) {
     }
     const double det = glm::determinant(glm::dmat3(t.matrix));
     if (!(std::abs(det) > 0.0)) {
-        return make_error(where(primitive) + name + ": transform cannot be inverted (a scale by 0?)");
+        return make_error(where(primitive) + name +
+                          ": transform cannot be inverted (a scale by 0?)");
     }
     // The scene carries both directions; a wrong inverse would silently misplace the shape.
     const glm::dmat4 product = t.matrix * t.inverse;
@@ -260,7 +258,8 @@ Result<PreparedShape> prepare_shape(const Primitive& primitive) {
             s.normal = plane->normal;
             s.pov_distance = -plane->distance - glm::dot(plane->normal, glm::dvec3(t.matrix[3]));
         } else {
-            const glm::dvec3 n = glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * plane->normal);
+            const glm::dvec3 n =
+                glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * plane->normal);
             const glm::dvec3 on_plane = plane->normal * (plane->distance / (length * length));
             s.normal = n;
             s.pov_distance = -glm::dot(n, transform_point(t.matrix, on_plane));
@@ -323,8 +322,8 @@ Result<PreparedShape> prepare_shape(const Primitive& primitive) {
     return s;
 }
 
-bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin,
-                     const glm::dvec3& direction, double t_min, double t_max, ShapeHit& hit) {
+bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin, const glm::dvec3& direction,
+                     double t_min, double t_max, ShapeHit& hit) {
     bool found = false;
     const bool allow_behind = t_min < 0.0;
     switch (s.kind) {
@@ -400,7 +399,8 @@ bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin,
                 }
             }
             if (!s.open && std::abs(d.z) > kPovEpsilon) {
-                for (const auto& [plane_z, part] : {std::pair{1.0, kCapHit}, std::pair{0.0, kBaseHit}}) {
+                for (const auto& [plane_z, part] :
+                     {std::pair{1.0, kCapHit}, std::pair{0.0, kBaseHit}}) {
                     const double t = (plane_z - p.z) / d.z;
                     const double u = p.x + t * d.x;
                     const double v = p.y + t * d.y;
@@ -438,7 +438,8 @@ glm::dvec3 shape_normal(const PreparedShape& s, const glm::dvec3& point, int par
             n = (point - s.centre) * (1.0 / s.radius);
             break;
         case ShapeKind::Ellipsoid:
-            n = glm::normalize(s.normal_to_world * (transform_point(s.world_to_local, point) - s.centre));
+            n = glm::normalize(s.normal_to_world *
+                               (transform_point(s.world_to_local, point) - s.centre));
             break;
         case ShapeKind::Plane:
         case ShapeKind::Disc:

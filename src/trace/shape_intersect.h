@@ -3,9 +3,8 @@
 // (backend/shape/*.cpp), their surface normals and world-space bounds.
 #pragma once
 
-#include <glm/glm.hpp>
-
 #include <cstdint>
+#include <glm/glm.hpp>
 
 #include "scene/scene.h"
 #include "trace/bounds.h"
@@ -26,8 +25,8 @@ enum class ShapeKind : std::uint8_t {
     Plane,      ///< world-space plane
     Box,        ///< world-space axis-aligned box
     TransformedBox,
-    Cylinder,   ///< canonical: radius 1, z from 0 to 1
-    Disc,       ///< canonical: in z = 0, normal +z, centre at the origin
+    Cylinder,  ///< canonical: radius 1, z from 0 to 1
+    Disc,      ///< canonical: in z = 0, normal +z, centre at the origin
 };
 
 /// A primitive's shape prepared for intersection.  POV-Ray keeps spheres, planes and
@@ -35,19 +34,19 @@ enum class ShapeKind : std::uint8_t {
 /// canonical space with a matrix; so do we, which keeps its arithmetic where it matters.
 struct PreparedShape {
     ShapeKind kind = ShapeKind::Sphere;
-    bool inverse = false;            // the normal is flipped (POV-Ray's `inverse`)
-    bool open = false;               // Cylinder: no caps
-    glm::dvec3 centre{0.0};          // Sphere, Ellipsoid (own space)
-    double radius = 1.0;             // Sphere, Ellipsoid
-    double radius_sq = 1.0;          // Sphere, Ellipsoid
+    bool inverse = false;              // the normal is flipped (POV-Ray's `inverse`)
+    bool open = false;                 // Cylinder: no caps
+    glm::dvec3 centre{0.0};            // Sphere, Ellipsoid (own space)
+    double radius = 1.0;               // Sphere, Ellipsoid
+    double radius_sq = 1.0;            // Sphere, Ellipsoid
     glm::dvec3 normal{0.0, 1.0, 0.0};  // Plane: unit normal; Disc: unit world normal
-    double pov_distance = 0.0;       // Plane: POV-Ray's Distance, -dot(normal, point on plane)
-    glm::dvec3 lo{-1.0};             // Box, TransformedBox: corners, lo <= hi
+    double pov_distance = 0.0;         // Plane: POV-Ray's Distance, -dot(normal, point on plane)
+    glm::dvec3 lo{-1.0};               // Box, TransformedBox: corners, lo <= hi
     glm::dvec3 hi{1.0};
-    double inner_sq = 0.0;           // Disc: hole radius squared
-    double outer_sq = 1.0;           // Disc: radius squared
-    glm::dmat4 world_to_local{1.0};  // Ellipsoid, TransformedBox, Cylinder, Disc
-    glm::dmat4 local_to_world{1.0};  // its inverse (for bounds)
+    double inner_sq = 0.0;            // Disc: hole radius squared
+    double outer_sq = 1.0;            // Disc: radius squared
+    glm::dmat4 world_to_local{1.0};   // Ellipsoid, TransformedBox, Cylinder, Disc
+    glm::dmat4 local_to_world{1.0};   // its inverse (for bounds)
     glm::dmat3 normal_to_world{1.0};  // transpose of world_to_local's linear part
 };
 

@@ -21,7 +21,7 @@ TEST(ImageCompare, IdenticalImagesHaveInfinitePsnr) {
 TEST(ImageCompare, MatchesTheDefinitions) {
     Image a(4, 4);
     Image b(4, 4);
-    b.set(2, 3, {0.5f, 0.0f, 0.25f});  // two channels of one pixel differ
+    b.set(2, 3, {0.5f, 0.0f, 0.25f});   // two channels of one pixel differ
     b.set(0, 0, {0.0f, 0.005f, 0.0f});  // a small difference, under the threshold
     auto c = compare_images(a, b, 0.01);
     ASSERT_TRUE(c.ok()) << c.message();

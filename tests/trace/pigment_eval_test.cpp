@@ -11,8 +11,8 @@ using namespace mirage::testing;
 
 TEST(Checker, AlternatesOnUnitCubesWithPovRaysEpsilon) {
     const Pigment p = checker(rgb(1, 1, 1), rgb(0, 0, 0));
-    EXPECT_EQ(evaluate_pigment(p, {0.5, 0.5, 0.5}).rgb, glm::dvec3(1.0));  // floor sum 0
-    EXPECT_EQ(evaluate_pigment(p, {1.5, 0.5, 0.5}).rgb, glm::dvec3(0.0));  // 1
+    EXPECT_EQ(evaluate_pigment(p, {0.5, 0.5, 0.5}).rgb, glm::dvec3(1.0));   // floor sum 0
+    EXPECT_EQ(evaluate_pigment(p, {1.5, 0.5, 0.5}).rgb, glm::dvec3(0.0));   // 1
     EXPECT_EQ(evaluate_pigment(p, {1.5, 0.0, -0.5}).rgb, glm::dvec3(1.0));  // 1 + 0 - 1
     EXPECT_EQ(evaluate_pigment(p, {-0.5, 0.0, 0.5}).rgb, glm::dvec3(0.0));
     // A point a hair below an integer counts as on it (floor(x + 1e-10)): a plane at y = 0
@@ -40,11 +40,12 @@ TEST(Gradient, DefaultMapIsBlackToWhiteAndWraps) {
 }
 
 TEST(Gradient, AxisIsNormalisedAndMapInterpolated) {
-    const Pigment p = gradient({0.0, 0.0, 4.0},
-                               {{0.2, rgb(1, 0, 0)}, {0.6, rgb(0, 1, 0)}, {0.6, rgb(0, 0, 1)}});
+    const Pigment p =
+        gradient({0.0, 0.0, 4.0}, {{0.2, rgb(1, 0, 0)}, {0.6, rgb(0, 1, 0)}, {0.6, rgb(0, 0, 1)}});
     EXPECT_EQ(evaluate_pigment(p, {0, 0, 0.1}).rgb, glm::dvec3(1, 0, 0));  // below the first
     const glm::dvec3 mid = evaluate_pigment(p, {0, 0, 0.4}).rgb;
-    const double f = (0.4 - static_cast<double>(0.2f)) / (static_cast<double>(0.6f) - static_cast<double>(0.2f));
+    const double f =
+        (0.4 - static_cast<double>(0.2f)) / (static_cast<double>(0.6f) - static_cast<double>(0.2f));
     EXPECT_NEAR(mid.x, 1.0 - f, 1e-12);
     EXPECT_NEAR(mid.y, f, 1e-12);
     // At an entry shared by two colours (a sharp step), the later entry wins from there on.

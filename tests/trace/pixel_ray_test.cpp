@@ -22,7 +22,8 @@ TEST(PovPixelRay, CentresMatchPovRaysArithmeticBitForBit) {
             const double x0 = x / w - 0.5;
             const double y0 = ((h - 1) - y) / h - 0.5;
             glm::dvec3 d;
-            for (int i = 0; i < 3; ++i) d[i] = 1.0 * c.direction[i] + x0 * c.right[i] + y0 * c.up[i];
+            for (int i = 0; i < 3; ++i)
+                d[i] = 1.0 * c.direction[i] + x0 * c.right[i] + y0 * c.up[i];
             const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
             d = d * (1.0 / len);
             const PixelRay r = pov_pixel_ray(c, col + 0.5, row + 0.5, w, h);

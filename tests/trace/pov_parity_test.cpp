@@ -7,10 +7,10 @@
 
 #include "image/image_compare.h"
 #include "image/image_io.h"
-#include "trace/render.h"
 #include "pov_writer.h"
 #include "povray_runner.h"
 #include "scene_builders.h"
+#include "trace/render.h"
 
 namespace mirage {
 namespace {
@@ -38,9 +38,9 @@ Scene showcase_scene() {
     s.lights.push_back(light({6.0, 5.0, -3.0}, glm::dvec3(0.5, 0.45, 0.4)));
 
     Finish ground = finish_with(0.1, 0.7);
-    s.primitives.push_back(primitive(
-        Plane{{0.0, 1.0, 0.0}, 0.0},
-        texture(checker(rgb(0.9, 0.9, 0.85), rgb(0.15, 0.2, 0.35)), ground)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 1.0, 0.0}, 0.0},
+                  texture(checker(rgb(0.9, 0.9, 0.85), rgb(0.15, 0.2, 0.35)), ground)));
 
     Finish shiny = finish_with(0.1, 0.6);
     shiny.specular = 0.6;
@@ -75,8 +75,8 @@ Scene showcase_scene() {
                                      texture(solid(rgb(0.9, 0.85, 0.1)), finish_with(0.1, 0.7))));
 
     SkySphere sky;
-    sky.pigments.push_back(gradient({0.0, 1.0, 0.0}, {{0.0, rgb(0.9, 0.9, 1.0)},
-                                                      {1.0, rgb(0.2, 0.35, 0.8)}}));
+    sky.pigments.push_back(
+        gradient({0.0, 1.0, 0.0}, {{0.0, rgb(0.9, 0.9, 1.0)}, {1.0, rgb(0.2, 0.35, 0.8)}}));
     s.sky_sphere = sky;
     return s;
 }
@@ -92,25 +92,24 @@ Scene transforms_scene() {
     s.lights.push_back(light({-4.0, 6.0, -5.0}, glm::dvec3(0.9)));
     s.lights.push_back(light({4.0, 3.0, -4.0}, glm::dvec3(0.3, 0.3, 0.5), /*shadowless=*/true));
 
-    s.primitives.push_back(primitive(
-        Plane{{0.0, 1.0, 0.0}, 0.0},
-        texture(checker(rgb(1.0, 1.0, 1.0), rgb(0.3, 0.1, 0.1),
-                        then(scale({0.7, 0.7, 0.7}), rotate({0.0, 25.0, 0.0}))),
-                finish_with(0.2, 0.6))));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 1.0, 0.0}, 0.0},
+                  texture(checker(rgb(1.0, 1.0, 1.0), rgb(0.3, 0.1, 0.1),
+                                  then(scale({0.7, 0.7, 0.7}), rotate({0.0, 25.0, 0.0}))),
+                          finish_with(0.2, 0.6))));
 
     Finish f = finish_with(0.1, 0.7);
     f.specular = 0.4;
     f.roughness = 0.1;
-    s.primitives.push_back(primitive(Sphere{{0.0, 0.0, 0.0}, 1.0},
-                                     texture(gradient({0.0, 2.0, 0.0},
-                                                      {{0.0, rgb(1.0, 0.0, 0.0)},
-                                                       {0.5, rgb(1.0, 1.0, 0.0)},
-                                                       {1.0, rgb(0.0, 0.3, 1.0)}},
-                                                      then(scale({1.0, 0.5, 1.0}),
-                                                           translate({-1.5, 0.6, 0.5}))),
-                                             f),
-                                     then(scale({1.0, 0.6, 0.8}), then(rotate({0.0, 0.0, 20.0}),
-                                                                       translate({-1.5, 0.6, 0.5})))));
+    s.primitives.push_back(primitive(
+        Sphere{{0.0, 0.0, 0.0}, 1.0},
+        texture(
+            gradient(
+                {0.0, 2.0, 0.0},
+                {{0.0, rgb(1.0, 0.0, 0.0)}, {0.5, rgb(1.0, 1.0, 0.0)}, {1.0, rgb(0.0, 0.3, 1.0)}},
+                then(scale({1.0, 0.5, 1.0}), translate({-1.5, 0.6, 0.5}))),
+            f),
+        then(scale({1.0, 0.6, 0.8}), then(rotate({0.0, 0.0, 20.0}), translate({-1.5, 0.6, 0.5})))));
 
     Finish glow = finish_with(0.0, 0.3);
     glow.emission = glm::dvec3(0.4, 0.3, 0.1);
@@ -119,10 +118,10 @@ Scene transforms_scene() {
                               then(rotate({-30.0, 40.0, 0.0}), translate({1.2, 0.4, 0.0})));
     s.primitives.push_back(cyl);
 
-    Primitive disc = primitive(Disc{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.8, 0.35},
-                               texture(solid(rgb(0.2, 0.6, 0.9)), finish_with(0.1, 0.8)),
-                               then(scale({1.5, 1.0, 1.0}), then(rotate({10.0, -20.0, 0.0}),
-                                                                 translate({0.3, 1.6, 2.5}))));
+    Primitive disc = primitive(
+        Disc{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.8, 0.35},
+        texture(solid(rgb(0.2, 0.6, 0.9)), finish_with(0.1, 0.8)),
+        then(scale({1.5, 1.0, 1.0}), then(rotate({10.0, -20.0, 0.0}), translate({0.3, 1.6, 2.5}))));
     disc.no_shadow = true;
     s.primitives.push_back(disc);
 
@@ -135,9 +134,9 @@ Scene transforms_scene() {
                                      then(make_transform(shear), translate({2.4, 0.0, 1.5}))));
 
     SkySphere sky;
-    sky.pigments.push_back(gradient({0.0, 1.0, 0.0}, {{0.0, rgb(1.0, 0.8, 0.6)},
-                                                      {0.4, rgb(0.4, 0.6, 0.9)},
-                                                      {1.0, rgb(0.1, 0.2, 0.6)}}));
+    sky.pigments.push_back(gradient(
+        {0.0, 1.0, 0.0},
+        {{0.0, rgb(1.0, 0.8, 0.6)}, {0.4, rgb(0.4, 0.6, 0.9)}, {1.0, rgb(0.1, 0.2, 0.6)}}));
     Colour clear{glm::dvec3(1.0), 0.0, 1.0};
     Colour cloud{glm::dvec3(1.0, 1.0, 1.0), 0.0, 0.3};
     sky.pigments.push_back(checker(clear, cloud, scale({0.15, 0.15, 0.15})));
@@ -157,12 +156,12 @@ Scene mirrors_scene(int max_trace_level) {
                                      texture(checker(rgb(0.8, 0.8, 0.8), rgb(0.1, 0.1, 0.1)))));
     Finish mirror = finish_with(0.0, 0.05);
     mirror.reflection = glm::dvec3(0.9, 0.85, 0.8);
-    s.primitives.push_back(primitive(Plane{{0.0, 0.0, -1.0}, -3.0},
-                                     texture(solid(rgb(1.0, 1.0, 1.0)), mirror)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 0.0, -1.0}, -3.0}, texture(solid(rgb(1.0, 1.0, 1.0)), mirror)));
     Finish weak = finish_with(0.0, 0.1);
     weak.reflection = glm::dvec3(0.3);
-    s.primitives.push_back(primitive(Plane{{0.0, 0.0, 1.0}, -3.0},
-                                     texture(solid(rgb(1.0, 1.0, 1.0)), weak)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 0.0, 1.0}, -3.0}, texture(solid(rgb(1.0, 1.0, 1.0)), weak)));
     s.primitives.push_back(primitive(Sphere{{0.5, 0.5, 1.0}, 0.5},
                                      texture(solid(rgb(0.9, 0.2, 0.2)), finish_with(0.2, 0.7))));
     s.background = rgb(0.3, 0.5, 0.7);
@@ -218,16 +217,18 @@ Scene handwritten_scene() {
     s.camera = look_at_camera({0.0, 2.0, -6.0}, {0.0, 0.6, 0.0}, 1.33, 1.0);  // POV-Ray's defaults
     s.lights.push_back(light({-4.0, 7.0, -5.0}));
     SkySphere sky;
-    sky.pigments.push_back(gradient({0, 1, 0}, {{0.0, rgb(1.0, 0.9, 0.8)}, {1.0, rgb(0.3, 0.4, 0.9)}}));
-    sky.pigments.push_back(checker(Colour{glm::dvec3(1.0), 0.0, 1.0}, Colour{glm::dvec3(1.0), 0.0, 0.6},
-                                   scale({0.2, 0.2, 0.2})));
+    sky.pigments.push_back(
+        gradient({0, 1, 0}, {{0.0, rgb(1.0, 0.9, 0.8)}, {1.0, rgb(0.3, 0.4, 0.9)}}));
+    sky.pigments.push_back(checker(Colour{glm::dvec3(1.0), 0.0, 1.0},
+                                   Colour{glm::dvec3(1.0), 0.0, 0.6}, scale({0.2, 0.2, 0.2})));
     sky.transform = rotate({0.0, 0.0, 10.0});
     s.sky_sphere = sky;
     s.primitives.push_back(primitive(
-        Plane{{0, 1, 0}, 0.0},
-        texture(checker(rgb(0.9, 0.9, 0.9), rgb(0.2, 0.2, 0.4), then(scale({0.5, 0.5, 0.5}), rotate({0, 20, 0}))),
-                finish_with(0.1, 0.7))));
-    const Transform sphere_t = then(scale({1.2, 0.8, 1.0}), then(rotate({0, 0, 15}), translate({-1.0, 0.8, 0.0})));
+        Plane{{0, 1, 0}, 0.0}, texture(checker(rgb(0.9, 0.9, 0.9), rgb(0.2, 0.2, 0.4),
+                                               then(scale({0.5, 0.5, 0.5}), rotate({0, 20, 0}))),
+                                       finish_with(0.1, 0.7))));
+    const Transform sphere_t =
+        then(scale({1.2, 0.8, 1.0}), then(rotate({0, 0, 15}), translate({-1.0, 0.8, 0.0})));
     Finish shiny;
     shiny.specular = 0.5;
     shiny.roughness = 0.03;
@@ -238,7 +239,8 @@ Scene handwritten_scene() {
                          then(translate({0.0, -0.5, 0.0}), sphere_t)),
                 shiny),
         sphere_t));
-    s.primitives.push_back(primitive(Box{{-0.5, 0, -0.5}, {0.5, 1, 0.5}}, texture(solid(rgb(0.2, 0.8, 0.3))),
+    s.primitives.push_back(primitive(Box{{-0.5, 0, -0.5}, {0.5, 1, 0.5}},
+                                     texture(solid(rgb(0.2, 0.8, 0.3))),
                                      then(rotate({0, 35, 0}), translate({1.5, 0.0, 0.5}))));
     Finish mirror;
     mirror.reflection = glm::dvec3(0.3);
@@ -246,9 +248,10 @@ Scene handwritten_scene() {
                                      texture(solid(rgb(0.9, 0.6, 0.2)), mirror),
                                      then(rotate({-60, 0, 0}), translate({0.3, 0.3, -1.5}))));
     const Transform disc_t = translate({-2.5, 1.2, 2.0});
-    s.primitives.push_back(primitive(Disc{{0, 0, 0}, {0, 0, 1}, 0.7, 0.2},
-                                     texture(checker(rgb(1, 1, 1), rgb(0.8, 0, 0), then(scale({0.25, 0.25, 0.25}), disc_t))),
-                                     disc_t));
+    s.primitives.push_back(primitive(
+        Disc{{0, 0, 0}, {0, 0, 1}, 0.7, 0.2},
+        texture(checker(rgb(1, 1, 1), rgb(0.8, 0, 0), then(scale({0.25, 0.25, 0.25}), disc_t))),
+        disc_t));
     return s;
 }
 
@@ -290,7 +293,8 @@ Parity render_both(const Scene& scene, const std::string& name, int width, int h
                   "%s: PSNR %.2f dB, RMSE %.5f, max %.3f at (%d, %d), %lld of %lld pixels over "
                   "2.5/255",
                   name.c_str(), cmp->psnr_db, cmp->rmse, cmp->max_error, cmp->max_x, cmp->max_y,
-                  static_cast<long long>(cmp->pixels_over), static_cast<long long>(cmp->pixel_count));
+                  static_cast<long long>(cmp->pixels_over),
+                  static_cast<long long>(cmp->pixel_count));
     p.message = text;
     std::printf("%s\n", text);
     return p;

@@ -90,8 +90,8 @@ inline std::string scene_to_pov(const Scene& s) {
     out << "global_settings { assumed_gamma 1.0 max_trace_level " << s.global.max_trace_level
         << " ambient_light rgb " << vec(s.global.ambient_light) << " }\n";
     const Camera& c = s.camera;
-    out << "camera { perspective location " << vec(c.location) << " direction "
-        << vec(c.direction) << " right " << vec(c.right) << " up " << vec(c.up) << " }\n";
+    out << "camera { perspective location " << vec(c.location) << " direction " << vec(c.direction)
+        << " right " << vec(c.right) << " up " << vec(c.up) << " }\n";
     out << "background { " << colour(s.background) << " }\n";
     if (s.sky_sphere) {
         out << "sky_sphere {\n";
@@ -124,9 +124,8 @@ inline std::string scene_to_pov(const Scene& s) {
         // The object's transform first, then the texture: its pigment transform is the whole
         // of it, as the Scene holds it.
         out << "\n  " << transform_text(p.transform.matrix) << "\n  texture { "
-            << pigment_text(p.texture.pigment) << "\n    " << finish_text(p.texture.finish)
-            << " }" << (p.no_shadow ? " no_shadow" : "") << (p.inverse ? " inverse" : "")
-            << "\n}\n";
+            << pigment_text(p.texture.pigment) << "\n    " << finish_text(p.texture.finish) << " }"
+            << (p.no_shadow ? " no_shadow" : "") << (p.inverse ? " inverse" : "") << "\n}\n";
     }
     return out.str();
 }

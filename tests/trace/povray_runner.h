@@ -23,8 +23,9 @@ inline bool povray_available() {
 
 /// Writes `pov_text` to dir/name.pov and renders dir/name.png with `povray -D -A`.  POV-Ray
 /// runs in `dir` (its I/O restrictions allow writing only there and under /tmp).
-inline Result<Image> render_with_povray(const std::string& pov_text, const std::filesystem::path& dir,
-                                        const std::string& name, int width, int height) {
+inline Result<Image> render_with_povray(const std::string& pov_text,
+                                        const std::filesystem::path& dir, const std::string& name,
+                                        int width, int height) {
     std::filesystem::create_directories(dir);
     const std::filesystem::path pov = dir / (name + ".pov");
     {

@@ -98,7 +98,8 @@ TEST(PolylineMarch, JointsOnACurvedSurfaceAreNeverLost) {
     for (int i = 0; i < 20000; ++i) {
         const glm::dvec3 n = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
         const glm::dvec3 vertex = glm::dvec3(0.3, -0.2, 0.1) + 1.7 * n;
-        const glm::dvec3 start = vertex + 3.0 * glm::normalize(n + 0.5 * glm::dvec3(u(rng), u(rng), u(rng)));
+        const glm::dvec3 start =
+            vertex + 3.0 * glm::normalize(n + 0.5 * glm::dvec3(u(rng), u(rng), u(rng)));
         PolylineMarch march(accel, start);
         if (!march.segment_to(vertex)) march.segment_to(vertex + 2.0 * n);
         ASSERT_TRUE(march.result().hit) << i;

@@ -23,10 +23,13 @@ Scene small_scene() {
     Finish shiny;
     shiny.reflection = glm::dvec3(0.4);
     shiny.specular = 0.5;
-    s.primitives.push_back(primitive(Sphere{{0.0, 1.0, 0.0}, 1.0}, texture(solid(rgb(0.8, 0.2, 0.1)), shiny)));
-    s.primitives.push_back(primitive(Box{{1.2, 0.0, -0.5}, {2.0, 0.8, 0.5}}, texture(solid(rgb(0.1, 0.7, 0.2)))));
+    s.primitives.push_back(
+        primitive(Sphere{{0.0, 1.0, 0.0}, 1.0}, texture(solid(rgb(0.8, 0.2, 0.1)), shiny)));
+    s.primitives.push_back(
+        primitive(Box{{1.2, 0.0, -0.5}, {2.0, 0.8, 0.5}}, texture(solid(rgb(0.1, 0.7, 0.2)))));
     SkySphere sky;
-    sky.pigments.push_back(gradient({0, 1, 0}, {{0.0, rgb(0.9, 0.9, 1.0)}, {1.0, rgb(0.2, 0.3, 0.8)}}));
+    sky.pigments.push_back(
+        gradient({0, 1, 0}, {{0.0, rgb(0.9, 0.9, 1.0)}, {1.0, rgb(0.2, 0.3, 0.8)}}));
     s.sky_sphere = sky;
     return s;
 }
@@ -45,7 +48,8 @@ TEST(Render, SameBytesWhateverTheThreadsAndTiles) {
     const Scene s = small_scene();
     auto reference = render(s, settings(1, 32));
     ASSERT_TRUE(reference.ok()) << reference.message();
-    for (const auto& [threads, tile] : {std::pair{2, 32}, std::pair{3, 7}, std::pair{8, 1}, std::pair{0, 16}}) {
+    for (const auto& [threads, tile] :
+         {std::pair{2, 32}, std::pair{3, 7}, std::pair{8, 1}, std::pair{0, 16}}) {
         auto other = render(s, settings(threads, tile));
         ASSERT_TRUE(other.ok());
         ASSERT_EQ(other->image.pixels.size(), reference->image.pixels.size());
@@ -77,7 +81,7 @@ TEST(Render, CountsRaysAndSegments) {
 
 /// A propagator that records how many rays it followed and delegates to straight rays.
 class CountingPropagator final : public Propagator {
-public:
+  public:
     PathHit propagate(const SceneAccel& accel, const glm::dvec3& origin,
                       const glm::dvec3& direction) const override {
         ++calls;
@@ -87,7 +91,7 @@ public:
     }
     mutable std::atomic<long> calls{0};
 
-private:
+  private:
     StraightPropagator straight_;
 };
 
@@ -108,10 +112,9 @@ TEST(Render, UsesThePixelRayFunctionGiven) {
     // A camera function that looks straight up from everywhere: the image is the sky's zenith.
     const Scene s = small_scene();
     const StraightPropagator straight;
-    auto r = render(s, settings(1, 32), straight,
-                    [](const Camera&, double, double, int, int) {
-                        return PixelRay{glm::dvec3(0.0, 5.0, 0.0), glm::dvec3(0.0, 1.0, 0.0)};
-                    });
+    auto r = render(s, settings(1, 32), straight, [](const Camera&, double, double, int, int) {
+        return PixelRay{glm::dvec3(0.0, 5.0, 0.0), glm::dvec3(0.0, 1.0, 0.0)};
+    });
     ASSERT_TRUE(r.ok());
     const glm::vec3 zenith = r->image.at(0, 0);
     EXPECT_NEAR(zenith.x, static_cast<float>(0.2f), 1e-6);
@@ -130,6 +133,17 @@ TEST(Render, RefusesBadSizesAndUnsupportedScenes) {
     auto g = render(glass, settings(1, 32));
     ASSERT_FALSE(g.ok());
     EXPECT_EQ(g.message().rfind("glass.pov:3:1: pigment with filter or transmit", 0), 0u);
+}
+
+TEST(Render, RefusesADegenerateCamera) {
+    Scene s = small_scene();
+    s.camera.direction = glm::dvec3(0.0);
+    s.camera.right = glm::dvec3(0.0);
+    s.camera.up = glm::dvec3(0.0);
+    s.camera.loc = FileLoc{"cam.pov", 2, 1};
+    auto r = render(s, settings(1, 32));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message().rfind("cam.pov:2:1: camera: its vectors give no ray direction", 0), 0u);
 }
 
 TEST(Render, NoProgressBarWhenStderrIsNotATerminal) {

@@ -22,16 +22,27 @@ Scene random_scene(int count, unsigned seed) {
         const double r = 0.2 + 0.3 * (u(rng) + 1.0);
         Shape shape;
         switch (i % 5) {
-            case 0: shape = Sphere{c, r}; break;
-            case 1: shape = Box{c - glm::dvec3(r), c + glm::dvec3(r, 0.5 * r, 1.5 * r)}; break;
-            case 2: shape = Cylinder{c, c + glm::dvec3(u(rng), 1.0, u(rng)), 0.5 * r, i % 2 == 0}; break;
-            case 3: shape = Disc{c, {u(rng), 1.0, u(rng)}, r, 0.3 * r}; break;
-            default: shape = Sphere{c, r}; break;
+            case 0:
+                shape = Sphere{c, r};
+                break;
+            case 1:
+                shape = Box{c - glm::dvec3(r), c + glm::dvec3(r, 0.5 * r, 1.5 * r)};
+                break;
+            case 2:
+                shape = Cylinder{c, c + glm::dvec3(u(rng), 1.0, u(rng)), 0.5 * r, i % 2 == 0};
+                break;
+            case 3:
+                shape = Disc{c, {u(rng), 1.0, u(rng)}, r, 0.3 * r};
+                break;
+            default:
+                shape = Sphere{c, r};
+                break;
         }
         Transform t;
         if (i % 3 == 0) {
-            t = then(translate(-c), then(scale({1.0 + 0.5 * (u(rng) + 1.0), 1.0, 0.7}),
-                                         then(rotate({30.0 * u(rng), 90.0 * u(rng), 0.0}), translate(c))));
+            t = then(translate(-c),
+                     then(scale({1.0 + 0.5 * (u(rng) + 1.0), 1.0, 0.7}),
+                          then(rotate({30.0 * u(rng), 90.0 * u(rng), 0.0}), translate(c))));
         }
         Primitive p = primitive(shape, Texture{}, t);
         p.no_shadow = i % 4 == 1;
@@ -49,7 +60,8 @@ std::optional<std::pair<double, int>> brute_force(const SceneAccel& accel, const
     for (int i = 0; i < accel.primitive_count(); ++i) {
         if (shadow_only && scene.primitives[i].no_shadow) continue;
         ShapeHit h;
-        if (intersect_shape(accel.shape(i), o, d, t_min, t_max, h) && (!best || h.t < best->first)) {
+        if (intersect_shape(accel.shape(i), o, d, t_min, t_max, h) &&
+            (!best || h.t < best->first)) {
             best = std::make_pair(h.t, i);
         }
     }
@@ -131,7 +143,8 @@ TEST(SceneAccel, EmptySceneAndBuildErrors) {
 TEST(SceneAccel, ManyCoincidentShapesStillWork) {
     // Identical bounds defeat every split: the hierarchy must stay shallow and correct.
     Scene s;
-    for (int i = 0; i < 500; ++i) s.primitives.push_back(primitive(Sphere{{0.0, 0.0, 0.0}, 1.0 + 1e-3 * i}, Texture{}));
+    for (int i = 0; i < 500; ++i)
+        s.primitives.push_back(primitive(Sphere{{0.0, 0.0, 0.0}, 1.0 + 1e-3 * i}, Texture{}));
     auto accel = SceneAccel::build(s);
     ASSERT_TRUE(accel.ok());
     const auto hit = accel->closest_hit({0, 0, -10}, {0, 0, 1}, 1e-4, 100.0);

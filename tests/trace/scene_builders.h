@@ -3,7 +3,6 @@
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-
 #include <string>
 #include <utility>
 
@@ -15,7 +14,9 @@ inline Transform make_transform(const glm::dmat4& m) { return Transform{m, glm::
 inline Transform translate(const glm::dvec3& v) {
     return make_transform(glm::translate(glm::dmat4(1.0), v));
 }
-inline Transform scale(const glm::dvec3& v) { return make_transform(glm::scale(glm::dmat4(1.0), v)); }
+inline Transform scale(const glm::dvec3& v) {
+    return make_transform(glm::scale(glm::dmat4(1.0), v));
+}
 /// POV-Ray's `rotate <x, y, z>` in degrees: about x, then y, then z.
 inline Transform rotate(const glm::dvec3& deg) {
     glm::dmat4 m(1.0);

@@ -76,7 +76,8 @@ TEST(Shading, UnlitSideGetsAmbientAndEmissionOnly) {
     s.lights[0].location = glm::dvec3(0.0, 0.0, 10.0);  // behind the sphere
     Rig rig(s);
     const glm::dvec3 pigment = to_single(glm::dvec3(0.5, 0.6, 0.7));
-    const glm::dvec3 expected = pigment * to_single(f.ambient) * 0.5 + pigment * to_single(f.emission);
+    const glm::dvec3 expected =
+        pigment * to_single(f.ambient) * 0.5 + pigment * to_single(f.emission);
     EXPECT_NEAR(glm::length(rig.trace({0, 0, -5}, {0, 0, 1}) - expected), 0.0, 1e-9);
 }
 
@@ -89,7 +90,9 @@ TEST(Shading, NormalFacesTheViewerFromInside) {
     Rig rig(s);
     // From the centre the light falls square on the inside: diffuse = pigment * light.
     const glm::dvec3 got = rig.trace({0.0, 0.0, 0.0}, {0, 0, 1});
-    EXPECT_NEAR(glm::length(got - to_single(glm::dvec3(0.5, 0.6, 0.7)) * to_single(glm::dvec3(1.0, 0.9, 0.8))), 0.0, 1e-9);
+    EXPECT_NEAR(glm::length(got - to_single(glm::dvec3(0.5, 0.6, 0.7)) *
+                                      to_single(glm::dvec3(1.0, 0.9, 0.8))),
+                0.0, 1e-9);
 }
 
 Scene ball_over_ground(bool no_shadow, bool shadowless) {
@@ -101,7 +104,8 @@ Scene ball_over_ground(bool no_shadow, bool shadowless) {
     ground.ambient = glm::dvec3(0.1);
     ground.diffuse = 0.6;
     ground.specular = 0.8;  // a highlight a shadowless light must not make
-    s.primitives.push_back(primitive(Plane{{0.0, 1.0, 0.0}, 0.0}, texture(solid(rgb(1, 1, 1)), ground)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 1.0, 0.0}, 0.0}, texture(solid(rgb(1, 1, 1)), ground)));
     Primitive ball = primitive(Sphere{{0.0, 2.0, 0.0}, 1.0}, texture(solid(rgb(1, 0, 0))));
     ball.no_shadow = no_shadow;
     s.primitives.push_back(ball);
@@ -110,8 +114,8 @@ Scene ball_over_ground(bool no_shadow, bool shadowless) {
 
 TEST(Shading, ShadowsAreCastAndSkippedAsPovRayDoes) {
     const glm::dvec3 eye(0.0, 5.0, -10.0);
-    const glm::dvec3 under(0.0, 0.0, 0.0);    // right under the ball
-    const glm::dvec3 aside(3.0, 0.0, -1.0);   // in the open
+    const glm::dvec3 under(0.0, 0.0, 0.0);   // right under the ball
+    const glm::dvec3 aside(3.0, 0.0, -1.0);  // in the open
     const auto at = [&](Rig& rig, const glm::dvec3& p, TraceCounters* c = nullptr) {
         return rig.trace(eye, p - eye, c);
     };
@@ -144,7 +148,8 @@ Scene mirror_floor(double reflection, int max_trace_level) {
     mirror.ambient = glm::dvec3(0.0);
     mirror.diffuse = 0.0;
     mirror.reflection = glm::dvec3(reflection);
-    s.primitives.push_back(primitive(Plane{{0.0, 1.0, 0.0}, 0.0}, texture(solid(rgb(1, 1, 1)), mirror)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 1.0, 0.0}, 0.0}, texture(solid(rgb(1, 1, 1)), mirror)));
     return s;
 }
 
@@ -152,7 +157,9 @@ TEST(Shading, ReflectionShowsWhatTheMirrorSees) {
     Rig rig(mirror_floor(0.5, 5));
     TraceCounters c;
     const glm::dvec3 got = rig.trace({0, 1, 0}, {0.3, -1, 0.2}, &c);
-    EXPECT_NEAR(glm::length(got - to_single(glm::dvec3(0.5)) * to_single(glm::dvec3(0.2, 0.4, 0.6))), 0.0, 1e-12);
+    EXPECT_NEAR(
+        glm::length(got - to_single(glm::dvec3(0.5)) * to_single(glm::dvec3(0.2, 0.4, 0.6))), 0.0,
+        1e-12);
     EXPECT_EQ(c.camera_rays, 1u);
     EXPECT_EQ(c.reflected_rays, 1u);
     EXPECT_EQ(c.segments, 2u);
@@ -179,8 +186,10 @@ TEST(Shading, MirrorsFacingEachOtherStopAfterMaxTraceLevel) {
     mirror.ambient = glm::dvec3(1.0);
     mirror.diffuse = 0.0;
     mirror.reflection = glm::dvec3(0.5);
-    s.primitives.push_back(primitive(Plane{{0.0, 0.0, 1.0}, 1.0}, texture(solid(rgb(1, 1, 1)), mirror)));
-    s.primitives.push_back(primitive(Plane{{0.0, 0.0, 1.0}, -1.0}, texture(solid(rgb(1, 1, 1)), mirror)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 0.0, 1.0}, 1.0}, texture(solid(rgb(1, 1, 1)), mirror)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 0.0, 1.0}, -1.0}, texture(solid(rgb(1, 1, 1)), mirror)));
     Rig rig(s);
     TraceCounters c;
     // Levels 1..4 each add ambient 1 weighted by 0.5^k: 1 + 0.5 + 0.25 + 0.125.
@@ -188,6 +197,20 @@ TEST(Shading, MirrorsFacingEachOtherStopAfterMaxTraceLevel) {
     EXPECT_NEAR(got.x, 1.875, 1e-12);
     EXPECT_EQ(c.reflected_rays, 3u);
     EXPECT_EQ(c.trace_level_cutoffs, 1u);
+}
+
+TEST(Shading, ZeroRoughnessIsPovRaysExponentZero) {
+    // POV-Ray keeps an exponent of 0 for `roughness 0`: the highlight is flat wherever the
+    // halfway vector faces the surface.
+    Finish f;
+    f.ambient = glm::dvec3(0.0);
+    f.diffuse = 0.0;
+    f.specular = 0.25;
+    f.roughness = 0.0;
+    Rig rig(lit_sphere(f));
+    const glm::dvec3 light_colour = to_single(glm::dvec3(1.0, 0.9, 0.8));
+    EXPECT_NEAR(glm::length(rig.trace({0.5, 0.0, -5.0}, {0, 0, 1}) - 0.25 * light_colour), 0.0,
+                1e-12);
 }
 
 TEST(CheckSupported, RefusesTransparencyAndOtherGammas) {
@@ -209,8 +232,9 @@ TEST(CheckSupported, RefusesTransparencyAndOtherGammas) {
     s.global.assumed_gamma = 2.2;
     status = check_supported(s);
     ASSERT_FALSE(status.ok());
-    EXPECT_EQ(status.message(),
-              "g.pov: assumed_gamma 2.2 is not supported by the built-in tracer (use assumed_gamma 1.0)");
+    EXPECT_EQ(
+        status.message(),
+        "g.pov: assumed_gamma 2.2 is not supported by the built-in tracer (use assumed_gamma 1.0)");
 
     // The sky may be transparent: POV-Ray's layering is implemented.
     s.global.assumed_gamma = 1.0;

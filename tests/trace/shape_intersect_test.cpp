@@ -21,7 +21,8 @@ PreparedShape prepared(const Shape& shape, const Transform& t = {}, bool inverse
 }
 
 /// The closest hit over [1e-4, 2e10] (the tracer's interval), or -1.
-double hit_t(const PreparedShape& s, const glm::dvec3& o, const glm::dvec3& d, int* part = nullptr) {
+double hit_t(const PreparedShape& s, const glm::dvec3& o, const glm::dvec3& d,
+             int* part = nullptr) {
     ShapeHit h;
     if (!intersect_shape(s, o, glm::normalize(d), 1e-4, kPovBoundHuge, h)) return -1.0;
     if (part) *part = h.part;
@@ -144,11 +145,14 @@ TEST(Cylinder, SideCapsAndOpen) {
     const auto closed = prepared(c);
     int part = 0;
     EXPECT_NEAR(hit_t(closed, {-5.0, 2.0, 0.0}, {1, 0, 0}, &part), 4.5, 1e-12);
-    EXPECT_NEAR(glm::length(shape_normal(closed, {-0.5, 2.0, 0.0}, part) - glm::dvec3(-1, 0, 0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(shape_normal(closed, {-0.5, 2.0, 0.0}, part) - glm::dvec3(-1, 0, 0)),
+                0.0, 1e-12);
     EXPECT_NEAR(hit_t(closed, {0.1, 10.0, 0.2}, {0, -1, 0}, &part), 7.0, 1e-12);
-    EXPECT_NEAR(glm::length(shape_normal(closed, {0.1, 3.0, 0.2}, part) - glm::dvec3(0, 1, 0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(shape_normal(closed, {0.1, 3.0, 0.2}, part) - glm::dvec3(0, 1, 0)), 0.0,
+                1e-12);
     EXPECT_NEAR(hit_t(closed, {0.1, -10.0, 0.2}, {0, 1, 0}, &part), 11.0, 1e-12);
-    EXPECT_NEAR(glm::length(shape_normal(closed, {0.1, 1.0, 0.2}, part) - glm::dvec3(0, -1, 0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(shape_normal(closed, {0.1, 1.0, 0.2}, part) - glm::dvec3(0, -1, 0)),
+                0.0, 1e-12);
     // Open: down the axis, no caps to hit.
     Cylinder o = c;
     o.open = true;
@@ -183,8 +187,9 @@ TEST(Disc, RingAndNormal) {
     EXPECT_EQ(hit_t(d, {0.0, 1.0, -5.0}, {0, 0, 1}), -1.0);          // edge-on
     EXPECT_EQ(shape_normal(d, {1.0, 1.0, 0.0}, 0), glm::dvec3(0, 1, 0));
     // Scaled non-uniformly: the normal follows as a normal, not as a vector.
-    const auto tilted = prepared(Disc{{0.0, 0.0, 0.0}, glm::normalize(glm::dvec3(1, 1, 0)), 1.0, 0.0},
-                                 scale({2.0, 1.0, 1.0}));
+    const auto tilted =
+        prepared(Disc{{0.0, 0.0, 0.0}, glm::normalize(glm::dvec3(1, 1, 0)), 1.0, 0.0},
+                 scale({2.0, 1.0, 1.0}));
     EXPECT_NEAR(glm::length(tilted.normal - glm::normalize(glm::dvec3(0.5, 1.0, 0.0))), 0.0, 1e-12);
 }
 
@@ -213,7 +218,8 @@ TEST(Shapes, BoundsContainTheSurface) {
     // Random rays at random transformed shapes: every hit point lies in the bounds.
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const Transform t = then(scale({1.5, 0.7, 1.2}), then(rotate({20.0, 35.0, -10.0}), translate({0.5, 1.0, -0.3})));
+    const Transform t = then(scale({1.5, 0.7, 1.2}),
+                             then(rotate({20.0, 35.0, -10.0}), translate({0.5, 1.0, -0.3})));
     const Shape shapes[] = {Sphere{{0.2, 0.1, 0.0}, 0.8}, Box{{-0.5, -0.2, -0.4}, {0.6, 0.9, 0.3}},
                             Cylinder{{0.0, -0.5, 0.2}, {0.3, 0.7, -0.1}, 0.4, false},
                             Disc{{0.1, 0.2, 0.3}, {0.2, 1.0, 0.4}, 0.9, 0.2}};
@@ -244,9 +250,11 @@ TEST(Shapes, RefusesWhatPovRayRefuses) {
     auto plane = prepare_shape(primitive(Plane{{0.0, 0.0, 0.0}, 1.0}, Texture{}));
     ASSERT_FALSE(plane.ok());
     EXPECT_EQ(plane.message(), "plane: degenerate normal (zero length)");
-    auto disc = prepare_shape(primitive(Disc{{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 1.0, 0.0}, Texture{}));
+    auto disc =
+        prepare_shape(primitive(Disc{{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 1.0, 0.0}, Texture{}));
     EXPECT_FALSE(disc.ok());
-    auto flat = prepare_shape(primitive(Sphere{}, Texture{}, Transform{glm::dmat4(0.0), glm::dmat4(0.0)}));
+    auto flat =
+        prepare_shape(primitive(Sphere{}, Texture{}, Transform{glm::dmat4(0.0), glm::dmat4(0.0)}));
     ASSERT_FALSE(flat.ok());
     EXPECT_NE(flat.message().find("cannot be inverted"), std::string::npos);
     Transform wrong = scale({2.0, 2.0, 2.0});
