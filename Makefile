@@ -20,7 +20,7 @@ NAME    := $(basename $(notdir $(SCENE)))
 
 # Debian 12 packages the build, the tests and the renders need.
 PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev openimageio-tools \
-            libglm-dev libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
+            libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox
 
 .PHONY: all deps configure build test render bench compare clean
 

@@ -1,0 +1,323 @@
+#include "atmosphere/exact_ray.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "util/check.h"
+
+// Derivations (notation of exact_ray.h; x = c dz).
+//
+// Every class satisfies (dy/dz)^2 = (eta^2 - beta^2) / beta^2 and, with F = exp(alpha (y - y0)/2),
+//   inferior            F = cosh x + sg (P/k) sinh x       = cosh(x - x_t) / cosh(x_t)
+//   superior trapped    F = cos x  + sg (P/kappa) sin x    = cos(x - x_M) / cos(x_M)
+//   superior escaping   F = cosh x + sg (P/sigma) sinh x   = sinh(A + sg x) / sinh(A)
+//   boundary (k2 = 0)   F = 1 + sg P gamma dz
+// Written as C(x) + sg P gamma dz S(x)/x the last three are one continuous family in k2, which
+// is what keeps rays near the trapped/escaping boundary accurate ("sinc form").  The inferior
+// form becomes -x + logaddexp(ln((1-rho)/2), ln((1+rho)/2) + 2x) with ln(1 - |rho|) computed as
+// -(ln(1 + w^2) + ln(1 + |rho|)): no overflow at alpha y0 = 2000 and no cancellation for
+// steep rays whose vertex lies far below the ground.
+
+namespace mirage {
+
+namespace {
+
+constexpr double kLn2 = 0.69314718055994530942;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string number(double v) {
+    std::ostringstream out;
+    out.precision(17);
+    out << v;
+    return out.str();
+}
+
+double logaddexp(double a, double b) {
+    if (a < b) std::swap(a, b);
+    if (b == -kInf) return a;
+    return a + std::log1p(std::exp(b - a));
+}
+
+// sin(x)/x and sinh(x)/x, accurate near 0.
+double sinc(double x) {
+    if (std::fabs(x) < 1e-4) return 1.0 - x * x / 6.0;
+    return std::sin(x) / x;
+}
+double sinhc(double x) {
+    if (std::fabs(x) < 1e-4) return 1.0 + x * x / 6.0;
+    return std::sinh(x) / x;
+}
+
+// atanh(t)/t and atan(t)/t for the ground distances of rays near the boundary.
+double atanhc(double t) {
+    if (std::fabs(t) < 1e-4) return 1.0 + t * t / 3.0;
+    return std::atanh(t) / t;
+}
+double atanc(double t) {
+    if (std::fabs(t) < 1e-4) return 1.0 - t * t / 3.0;
+    return std::atan(t) / t;
+}
+
+void classify_straight(ExactRay& r) {
+    r.ray_class = RayClass::Straight;
+    r.turn_kind = TurnKind::None;
+    r.y_turn = kNaN;
+    r.dz_turn = kNaN;
+    r.hits_ground = r.cos_i < 0.0;
+    r.dz_ground = r.hits_ground ? r.y0 * r.sin_i / -r.cos_i : kInf;
+}
+
+void setup_inferior(ExactRay& r) {
+    const double alpha = r.profile.alpha;
+    // ln k2 and ln(1 + w^2) in log space (w overflows for stiff alpha y0); for P >= E
+    // from ln P, so that alpha y0 never enters a sum it would swamp.
+    double ln_k2 = 0.0;
+    if (r.P == 0.0) {
+        r.log1p_w2 = 0.0;
+        r.asinh_w = 0.0;
+        ln_k2 = -alpha * r.y0;
+    } else if (r.ln_w >= 0.0) {
+        ln_k2 = 2.0 * r.ln_P + std::log1p(std::exp(-2.0 * r.ln_w));
+        r.log1p_w2 = 2.0 * r.ln_w + std::log1p(std::exp(-2.0 * r.ln_w));
+        r.asinh_w = r.ln_w > 300.0 ? r.ln_w + kLn2 : std::asinh(std::exp(r.ln_w));
+    } else {
+        const double w = std::exp(r.ln_w);
+        r.log1p_w2 = std::log1p(w * w);
+        r.asinh_w = std::asinh(w);
+        ln_k2 = -alpha * r.y0 + r.log1p_w2;
+    }
+    r.k2 = std::exp(ln_k2);
+    r.q = std::exp(0.5 * ln_k2);
+    r.c = r.gamma * r.q;
+    // |rho| = P / k = w / sqrt(1 + w^2);  ln(1 - |rho|) = -(ln(1 + w^2) + ln(1 + |rho|)).
+    const double rho = r.P == 0.0 ? 0.0 : std::exp(r.ln_P - 0.5 * ln_k2);
+    const double ln_1p_rho = std::log1p(rho) - kLn2;
+    const double ln_1m_rho = -(r.log1p_w2 + std::log1p(rho)) - kLn2;
+    r.ln_coef_lo = r.sg > 0 ? ln_1m_rho : ln_1p_rho;  // coefficient of exp(-x)
+    r.ln_coef_hi = r.sg > 0 ? ln_1p_rho : ln_1m_rho;  // coefficient of exp(+x)
+
+    r.y_turn = r.ln_w >= 0.0 ? -ln_k2 / alpha : r.y0 - r.log1p_w2 / alpha;
+    r.dz_turn = -r.sg * r.asinh_w / r.c;
+    const bool vertex_in_air = ln_k2 < 0.0;  // k < 1
+    if (r.sg < 0) {
+        r.ray_class = vertex_in_air ? RayClass::InfTurn : RayClass::InfGround;
+        r.turn_kind = vertex_in_air ? TurnKind::Ahead : TurnKind::BelowGround;
+    } else {
+        r.ray_class = RayClass::InfUp;
+        r.turn_kind = vertex_in_air ? TurnKind::Behind : TurnKind::BelowGround;
+    }
+    r.hits_ground = r.ray_class == RayClass::InfGround;
+    r.dz_ground = kInf;
+    if (r.hits_ground) {
+        // c dz_g = 2 atanh(t), t = N / D, from tanh(x/2) and the quadratic it solves.
+        const double k = r.q;
+        const double N = k * -std::expm1(r.ln_E);
+        const double rr = std::sqrt(-std::expm1(-alpha * r.y0));
+        const double k2m1 = std::max(0.0, (r.P - rr) * (r.P + rr));
+        const double D = r.P + r.E * std::sqrt(k2m1);
+        const double t = N / D;
+        if (t < 0.5) {
+            r.dz_ground = 2.0 * t * atanhc(t) / r.c;
+        } else {
+            // ln((1 + t)/(1 - t)) with D - N = E B computed without cancellation.
+            const double B = std::sqrt(k2m1) + k - r.E / (r.P + k);
+            r.dz_ground = (std::log(D + N) - r.ln_E - std::log(B)) / r.c;
+        }
+    }
+}
+
+void setup_superior(ExactRay& r) {
+    const double alpha = r.profile.alpha;
+    const double E0 = std::exp(-alpha * r.y0);
+    r.k2 = E0 - r.P * r.P;
+    r.q = std::sqrt(std::fabs(r.k2));
+    r.c = r.gamma * r.q;
+    r.dz_ground = kInf;
+    if (r.k2 > 0.0) {
+        // Trapped: rises to the apex y_M and comes back to the ground.
+        const double w = std::exp(r.ln_w);
+        const double one_m_w2 = (1.0 - w) * (1.0 + w);
+        r.theta = std::atan2(w, std::sqrt(one_m_w2));
+        r.y_turn = r.y0 - (std::log1p(-w) + std::log1p(w)) / alpha;
+        r.dz_turn = r.sg * r.theta / r.c;
+        // From the apex unless the apex is so far above that y_M swamps y0.
+        r.vertex_form = -(std::log1p(-w) + std::log1p(w)) <= 2.0 + alpha * r.y0;
+        r.ray_class = r.sg > 0 ? RayClass::SupTrappedUp : RayClass::SupTrappedDown;
+        r.turn_kind = r.sg > 0 ? TurnKind::Ahead : TurnKind::Behind;
+        r.hits_ground = true;
+        const double kappa = r.q;
+        const double root = r.E * std::sqrt(1.0 - r.k2);
+        if (r.sg > 0) {
+            const double t = (r.P + root) / (kappa * (1.0 + r.E));
+            r.dz_ground = 2.0 * std::atan(t) / r.c;
+        } else {
+            const double a = -std::expm1(r.ln_E) / (root + r.P);  // t / kappa
+            r.dz_ground = 2.0 * a * atanc(kappa * a) / r.gamma;
+        }
+        return;
+    }
+    // Escaping, or exactly on the boundary k2 = 0.
+    r.y_turn = kNaN;
+    r.dz_turn = kNaN;
+    r.turn_kind = TurnKind::None;
+    r.ray_class = r.sg > 0 ? RayClass::SupEscapeUp : RayClass::SupEscapeDown;
+    r.hits_ground = r.sg < 0;
+    if (r.hits_ground) {
+        const double sigma = r.q;
+        const double one_m_E = -std::expm1(r.ln_E);
+        const double root = std::sqrt(1.0 + sigma * sigma);
+        const double D = r.P + r.E * root;
+        const double t = sigma * one_m_E / D;
+        if (t < 0.5) {
+            r.dz_ground = 2.0 * (one_m_E / D) * atanhc(t) / r.gamma;
+        } else {
+            const double N = sigma * one_m_E;
+            const double B = r.E / (r.P + sigma) + root + sigma;
+            r.dz_ground = (std::log(D + N) - r.ln_E - std::log(B)) / r.c;
+        }
+    }
+}
+
+// ln F(dz) for the superior classes (see the header comment of this file).
+double superior_ln_F(const ExactRay& r, double dz) {
+    const double x = r.c * dz;
+    if (r.k2 > 0.0) {
+        if (r.vertex_form) {
+            // ln F = ln(cos(x - sg theta) / cos(theta)); cos(theta) = kappa / E.
+            return std::log(std::cos(x - r.sg * r.theta)) - std::log(r.q) + r.ln_E;
+        }
+        return std::log(std::cos(x) + r.sg * r.P * r.gamma * dz * sinc(x));
+    }
+    if (r.k2 == 0.0) return std::log1p(r.sg * r.P * r.gamma * dz);
+    const double sigma = r.q;
+    const double E0 = r.E * r.E;
+    const double ps = r.P + sigma;
+    if (r.sg > 0) {
+        if (x < 1.0) return std::log(std::cosh(x) + r.P * r.gamma * dz * sinhc(x));
+        return x + std::log(ps / (2.0 * sigma)) + std::log1p(-E0 / (ps * ps) * std::exp(-2.0 * x));
+    }
+    if (sigma < 0.5 * r.P) return std::log(std::cosh(x) - r.P * r.gamma * dz * sinhc(x));
+    return std::log(ps / (2.0 * sigma)) - x + std::log1p(-E0 / (ps * ps) * std::exp(2.0 * x));
+}
+
+}  // namespace
+
+std::string_view ray_class_name(RayClass c) {
+    switch (c) {
+        case RayClass::Straight: return "straight";
+        case RayClass::InfTurn: return "inf_turn";
+        case RayClass::InfGround: return "inf_ground";
+        case RayClass::InfUp: return "inf_up";
+        case RayClass::SupTrappedUp: return "sup_trapped_up";
+        case RayClass::SupTrappedDown: return "sup_trapped_down";
+        case RayClass::SupEscapeUp: return "sup_escape_up";
+        case RayClass::SupEscapeDown: return "sup_escape_down";
+    }
+    return "?";
+}
+
+std::string_view turn_kind_name(TurnKind k) {
+    switch (k) {
+        case TurnKind::Ahead: return "ahead";
+        case TurnKind::Behind: return "behind";
+        case TurnKind::BelowGround: return "below_ground";
+        case TurnKind::None: return "none";
+    }
+    return "?";
+}
+
+Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad) {
+    if (auto s = validate(profile); !s) return s.error();
+    if (!std::isfinite(y0) || y0 < 0.0)
+        return make_error("start height y0 = " + number(y0) + " m must be finite and >= 0");
+    if (!std::isfinite(i_rad) || i_rad <= 0.0 || i_rad >= M_PI)
+        return make_error("angle from the vertical i = " + number(i_rad) +
+                          " rad must lie strictly between 0 and pi (a vertical ray has no "
+                          "horizontal distance)");
+    ExactRay r;
+    r.profile = profile;
+    r.y0 = y0;
+    r.i = i_rad;
+    r.cos_i = std::cos(i_rad);
+    r.sin_i = std::sin(i_rad);
+    r.sg = r.cos_i < 0.0 ? -1 : 1;
+    r.s = profile_sign(profile);
+    r.eta_p = eta(profile, y0);
+    r.beta = r.eta_p * r.sin_i;
+    if (r.s == 0 || profile.eta1 == 0.0) {
+        r.s = 0;
+        classify_straight(r);
+        return r;
+    }
+    const double alpha = profile.alpha;
+    r.P = r.eta_p * std::fabs(r.cos_i) / profile.eta1;
+    r.ln_P = std::log(r.P);
+    r.ln_E = -0.5 * alpha * y0;
+    r.E = std::exp(r.ln_E);
+    r.ln_w = r.ln_P - r.ln_E;
+    r.gamma = alpha * profile.eta1 / (2.0 * r.beta);
+    if (r.s > 0) {
+        setup_inferior(r);
+    } else {
+        setup_superior(r);
+    }
+    MIRAGE_CHECK(!std::isnan(r.k2) && !std::isnan(r.c) && !std::isnan(r.dz_ground));
+    return r;
+}
+
+double height_at(const ExactRay& r, double dz) {
+    const double alpha = r.profile.alpha;
+    if (r.s == 0) return r.y0 + dz * r.cos_i / r.sin_i;
+    if (r.s > 0) {
+        const double x = r.c * dz;
+        const double ln_F = -x + logaddexp(r.ln_coef_lo, r.ln_coef_hi + 2.0 * x);
+        return r.y0 + (2.0 / alpha) * ln_F;
+    }
+    if (r.k2 > 0.0 && r.vertex_form) {
+        // From the apex: y_M + (2/alpha) ln cos(x - x_M).
+        return r.y_turn + (2.0 / alpha) * std::log(std::cos(r.c * dz - r.sg * r.theta));
+    }
+    return r.y0 + (2.0 / alpha) * superior_ln_F(r, dz);
+}
+
+double slope_at(const ExactRay& r, double dz) {
+    if (r.s == 0) return r.cos_i / r.sin_i;
+    const double scale = r.profile.eta1 / r.beta;  // 2 gamma / alpha
+    const double x = r.c * dz;
+    if (r.s > 0) return scale * r.q * std::tanh(x + r.sg * r.asinh_w);
+    if (r.k2 > 0.0) {
+        if (r.vertex_form) return -scale * r.q * std::tan(x - r.sg * r.theta);
+        // d ln F / dz over gamma, from F = cos x + sg P gamma dz sinc x.
+        const double F = std::cos(x) + r.sg * r.P * r.gamma * dz * sinc(x);
+        const double dF = r.sg * r.P * std::cos(x) - r.k2 * r.gamma * dz * sinc(x);
+        return scale * dF / F;
+    }
+    if (r.k2 == 0.0) return scale * r.sg * r.P / (1.0 + r.sg * r.P * r.gamma * dz);
+    const double sigma = r.q;
+    if (x >= 1.0 || (r.sg < 0 && sigma >= 0.5 * r.P)) {
+        // sg sigma coth(A + sg x), A = asinh(sigma / E).
+        const double A = std::asinh(sigma / r.E);
+        return scale * r.sg * sigma / std::tanh(A + r.sg * x);
+    }
+    const double F = std::cosh(x) + r.sg * r.P * r.gamma * dz * sinhc(x);
+    const double dF = r.sg * r.P * std::cosh(x) + r.q * r.q * r.gamma * dz * sinhc(x);
+    return scale * dF / F;
+}
+
+double curvature_at_height(const ExactRay& r, double y) {
+    if (r.s == 0) return 0.0;
+    const double e1 = r.profile.eta1;
+    return r.s * r.profile.alpha * e1 * e1 * std::exp(-r.profile.alpha * y) /
+           (2.0 * r.beta * r.beta);
+}
+
+double asymptotic_slope(const ExactRay& r) {
+    if (r.s == 0) return r.cos_i >= 0.0 ? r.cos_i / r.sin_i : kNaN;
+    if (r.s > 0) return r.hits_ground ? kNaN : r.profile.eta1 * r.q / r.beta;
+    if (r.ray_class == RayClass::SupEscapeUp) return r.profile.eta1 * r.q / r.beta;
+    return kNaN;
+}
+
+}  // namespace mirage

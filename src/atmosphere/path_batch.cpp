@@ -1,0 +1,82 @@
+#include "atmosphere/path_batch.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "atmosphere/exact_ray.h"
+
+namespace mirage {
+
+const char* const kPathBatchColumns =
+    "case_id,k2,k,y_turn,dz_turn,turn_kind,ray_class,y_d1,y_d2,y_d3,dydz_d1,dydz_d2,dydz_d3,"
+    "hits_ground,dz_ground";
+
+namespace {
+
+std::string g17(double v) {
+    if (std::isnan(v) || std::isinf(v)) return std::isinf(v) && v > 0 ? "inf" : "nan";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+std::string quoted(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return out + "\"";
+}
+
+}  // namespace
+
+Result<std::string> run_path_batch(const CsvTable& table) {
+    static const char* const required[] = {"case_id", "profile", "eta0", "eta1", "alpha",
+                                           "y0",      "i_rad",   "d1",   "d2",   "d3"};
+    int col[10];
+    for (int j = 0; j < 10; ++j) {
+        col[j] = table.column(required[j]);
+        if (col[j] < 0)
+            return make_error(table.source + ":1: missing column '" + required[j] + "'");
+    }
+    std::string out = std::string(kPathBatchColumns) + "\n";
+    for (const auto& row : table.rows) {
+        const std::string where = table.source + ":" + std::to_string(row.line);
+        auto kind = parse_profile_kind(row.fields[col[1]]);
+        if (!kind) return make_error(where + ": column 'profile': " + kind.message());
+        double v[8];
+        for (int j = 0; j < 8; ++j) {
+            auto x = csv_number(table, row, col[j + 2]);
+            if (!x) return x.error();
+            v[j] = *x;
+        }
+        const Profile profile{*kind, v[0], v[1], v[2]};
+        if (auto s = validate(profile); !s) return make_error(where + ": " + s.message());
+        if (!(v[3] > 0.0))
+            return make_error(where + ": column 'y0': eye height " + g17(v[3]) +
+                              " m must be above the ground");
+        auto ray = make_exact_ray(profile, v[3], v[4]);
+        if (!ray) return make_error(where + ": column 'i_rad': " + ray.message());
+        std::string line = quoted(row.fields[col[0]]);
+        auto add = [&](const std::string& s) { line += "," + s; };
+        add(g17(ray->k2));
+        add(g17(ray->k2 >= 0.0 ? ray->q : NAN));
+        add(g17(ray->y_turn));
+        add(g17(ray->dz_turn));
+        add(std::string(turn_kind_name(ray->turn_kind)));
+        add(std::string(ray_class_name(ray->ray_class)));
+        for (int j = 0; j < 3; ++j) {
+            const double d = v[5 + j];
+            add(g17(ray->hits_ground && d > ray->dz_ground ? NAN : height_at(*ray, d)));
+        }
+        for (int j = 0; j < 3; ++j) {
+            const double d = v[5 + j];
+            add(g17(ray->hits_ground && d > ray->dz_ground ? NAN : slope_at(*ray, d)));
+        }
+        add(ray->hits_ground ? "1" : "0");
+        add(g17(ray->hits_ground ? ray->dz_ground : NAN));
+        out += line + "\n";
+    }
+    return out;
+}
+
+}  // namespace mirage

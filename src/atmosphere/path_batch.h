@@ -1,0 +1,21 @@
+// Batch evaluation of exact rays from a CSV in the reference's columns (`mirage path --batch`).
+#pragma once
+
+#include <string>
+
+#include "util/csv.h"
+#include "util/result.h"
+
+namespace mirage {
+
+/// The output columns, in order.
+extern const char* const kPathBatchColumns;
+
+/// Evaluates every row of `table` (columns case_id, profile, eta0, eta1, alpha, y0, i_rad,
+/// d1, d2, d3 at least; others ignored) and returns the output CSV text: case_id, k2, k,
+/// y_turn, dz_turn, turn_kind, ray_class, y_d1..3, dydz_d1..3, hits_ground, dz_ground, with 17
+/// significant digits and "nan" where a value is not defined.  The first bad row or value is
+/// an error naming the file, the line and the column; nothing is returned then.
+Result<std::string> run_path_batch(const CsvTable& table);
+
+}  // namespace mirage

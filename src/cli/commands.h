@@ -1,0 +1,16 @@
+// The subcommands of the mirage tool, each set up by its own file.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace mirage {
+
+void setup_path_command(CLI::App& app);
+
+/// Thrown by a subcommand's callback to end the program with `code` after it has printed its
+/// own message.
+struct CommandFailed {
+    int code = 1;
+};
+
+}  // namespace mirage

@@ -1,0 +1,107 @@
+#include "util/csv.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace mirage {
+
+int CsvTable::column(std::string_view name) const {
+    for (size_t i = 0; i < header.size(); ++i)
+        if (header[i] == name) return static_cast<int>(i);
+    return -1;
+}
+
+Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
+    CsvTable table;
+    table.source = source;
+    std::vector<CsvRow> rows;
+    CsvRow row;
+    std::string field;
+    int line = 1;
+    row.line = 1;
+    bool in_quotes = false;
+    bool row_has_content = false;
+    auto end_field = [&] {
+        row.fields.push_back(field);
+        field.clear();
+    };
+    auto end_row = [&] {
+        end_field();
+        if (row_has_content || row.fields.size() > 1 || !row.fields[0].empty())
+            rows.push_back(std::move(row));
+        row = CsvRow{};
+        row_has_content = false;
+    };
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
+        if (in_quotes) {
+            if (ch == '"') {
+                if (i + 1 < text.size() && text[i + 1] == '"') {
+                    field += '"';
+                    ++i;
+                } else {
+                    in_quotes = false;
+                }
+            } else {
+                if (ch == '\n') ++line;
+                field += ch;
+            }
+            continue;
+        }
+        if (ch == '"') {
+            in_quotes = true;
+            row_has_content = true;
+        } else if (ch == ',') {
+            end_field();
+            row_has_content = true;
+        } else if (ch == '\r') {
+            // tolerate CRLF
+        } else if (ch == '\n') {
+            end_row();
+            ++line;
+            row.line = line;
+        } else {
+            field += ch;
+            row_has_content = true;
+        }
+    }
+    if (in_quotes) return make_error(source + ":" + std::to_string(row.line) + ": unterminated quoted field");
+    if (row_has_content || !field.empty()) end_row();
+    if (rows.empty()) return make_error(source + ": empty CSV (no header row)");
+    table.header = std::move(rows.front().fields);
+    for (size_t r = 1; r < rows.size(); ++r) {
+        if (rows[r].fields.size() != table.header.size()) {
+            return make_error(source + ":" + std::to_string(rows[r].line) + ": row has " +
+                              std::to_string(rows[r].fields.size()) + " fields, the header has " +
+                              std::to_string(table.header.size()));
+        }
+        table.rows.push_back(std::move(rows[r]));
+    }
+    return table;
+}
+
+Result<CsvTable> read_csv_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return make_error(path + ": cannot open: " + std::strerror(errno));
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return parse_csv(buffer.str(), path);
+}
+
+Result<double> csv_number(const CsvTable& table, const CsvRow& row, int column) {
+    const std::string& text = row.fields.at(column);
+    const std::string where = table.source + ":" + std::to_string(row.line) + ": column '" +
+                              table.header.at(column) + "'";
+    if (text.empty()) return make_error(where + ": missing number");
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size())
+        return make_error(where + ": '" + text + "' is not a number");
+    return v;
+}
+
+}  // namespace mirage

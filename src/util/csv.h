@@ -1,0 +1,38 @@
+// A small CSV reader (RFC 4180: quoted fields, doubled quotes) that keeps each row's line
+// number, so that errors can name the row and the column.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "util/result.h"
+
+namespace mirage {
+
+struct CsvRow {
+    int line = 0;  // 1-based line of the file where the row starts
+    std::vector<std::string> fields;
+};
+
+struct CsvTable {
+    std::string source;  // file name, for messages
+    std::vector<std::string> header;
+    std::vector<CsvRow> rows;
+
+    /// Index of the named column, or -1.
+    int column(std::string_view name) const;
+};
+
+/// Parses CSV text whose first row is the header.  Rows with another field count than the
+/// header, unterminated quotes and an empty text are errors naming source:line.
+Result<CsvTable> parse_csv(std::string_view text, const std::string& source);
+
+/// Reads and parses a CSV file.
+Result<CsvTable> read_csv_file(const std::string& path);
+
+/// Parses a whole field as a double ("nan", "inf" accepted); an error names the place.
+Result<double> csv_number(const CsvTable& table, const CsvRow& row, int column);
+
+}  // namespace mirage

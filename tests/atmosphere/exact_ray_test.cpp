@@ -1,0 +1,197 @@
+#include "atmosphere/exact_ray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "util/csv.h"
+
+namespace mirage {
+namespace {
+
+struct RefCase {
+    std::string id;
+    Profile profile;
+    double y0, i, d[3];
+    double k2, k, y_turn, dz_turn;
+    std::string turn_kind, ray_class;
+    double y_d[3], dydz_d[3];
+    bool hits_ground;
+    double dz_ground, tol;
+};
+
+std::vector<RefCase> load(const std::string& path) {
+    auto table = read_csv_file(path);
+    EXPECT_TRUE(table.ok()) << (table.ok() ? "" : table.message());
+    std::vector<RefCase> cases;
+    if (!table) return cases;
+    auto num = [&](const CsvRow& row, const char* name) {
+        auto v = csv_number(*table, row, table->column(name));
+        EXPECT_TRUE(v.ok()) << name;
+        return v.ok() ? *v : NAN;
+    };
+    for (const auto& row : table->rows) {
+        RefCase c;
+        c.id = row.fields[table->column("case_id")];
+        const auto kind = parse_profile_kind(row.fields[table->column("profile")]);
+        c.profile = {*kind, num(row, "eta0"), num(row, "eta1"), num(row, "alpha")};
+        c.y0 = num(row, "y0");
+        c.i = num(row, "i_rad");
+        c.k2 = num(row, "k2");
+        c.k = num(row, "k");
+        c.y_turn = num(row, "y_turn");
+        c.dz_turn = num(row, "dz_turn");
+        c.turn_kind = row.fields[table->column("turn_kind")];
+        c.ray_class = row.fields[table->column("ray_class")];
+        for (int j = 0; j < 3; ++j) {
+            const std::string n = std::to_string(j + 1);
+            c.d[j] = num(row, ("d" + n).c_str());
+            c.y_d[j] = num(row, ("y_d" + n).c_str());
+            c.dydz_d[j] = num(row, ("dydz_d" + n).c_str());
+        }
+        c.hits_ground = num(row, "hits_ground") != 0.0;
+        c.dz_ground = num(row, "dz_ground");
+        c.tol = num(row, "tol_rel");
+        cases.push_back(c);
+    }
+    return cases;
+}
+
+// The reference's scoring rule: heights relative to max(y0, |ref|), the rest relative to
+// |ref|; a NaN reference must be matched by "not defined".
+void expect_close(const char* what, double got, double ref, double scale, double tol,
+                  const std::string& id) {
+    if (std::isnan(ref)) {
+        EXPECT_TRUE(std::isnan(got) || std::isinf(got)) << id << " " << what << " = " << got;
+        return;
+    }
+    const double err = std::fabs(got - ref) / scale;
+    EXPECT_LE(err, tol) << id << " " << what << ": got " << got << ", reference " << ref;
+}
+
+void check_reference_file(const std::string& name, size_t expected_cases) {
+    const auto cases = load(std::string(MIRAGE_REFERENCE_DIR) + "/" + name);
+    ASSERT_EQ(cases.size(), expected_cases);
+    for (const auto& c : cases) {
+        auto ray = make_exact_ray(c.profile, c.y0, c.i);
+        ASSERT_TRUE(ray.ok()) << c.id << ": " << ray.message();
+        EXPECT_EQ(ray_class_name(ray->ray_class), c.ray_class) << c.id;
+        EXPECT_EQ(turn_kind_name(ray->turn_kind), c.turn_kind) << c.id;
+        EXPECT_EQ(ray->hits_ground, c.hits_ground) << c.id;
+        expect_close("k2", ray->k2, c.k2, std::fabs(c.k2), c.tol, c.id);
+        if (!std::isnan(c.k)) expect_close("k", ray->q, c.k, c.k, c.tol, c.id);
+        const double y_turn = ray->y_turn;
+        expect_close("y_turn", y_turn, c.y_turn, std::max(c.y0, std::fabs(c.y_turn)), c.tol, c.id);
+        expect_close("dz_turn", ray->dz_turn, c.dz_turn, std::fabs(c.dz_turn), c.tol, c.id);
+        if (c.hits_ground)
+            expect_close("dz_ground", ray->dz_ground, c.dz_ground, c.dz_ground, c.tol, c.id);
+        for (int j = 0; j < 3; ++j) {
+            expect_close("y_d", height_at(*ray, c.d[j]), c.y_d[j],
+                         std::max(c.y0, std::fabs(c.y_d[j])), c.tol, c.id + " d" + std::to_string(j + 1));
+            expect_close("dydz_d", slope_at(*ray, c.d[j]), c.dydz_d[j], std::fabs(c.dydz_d[j]),
+                         c.tol, c.id + " d" + std::to_string(j + 1));
+        }
+    }
+}
+
+TEST(ExactRay, EveryReferenceCasePassesWithinItsTolerance) {
+    check_reference_file("path_public.csv", 25);
+}
+
+// Stiff and extreme families beyond the public reference (tools/gen_extreme_paths.py: the
+// literal closed forms at 110 digits): eta1 = 1e-6 and 1e-8, grazing at 1e-8 rad,
+// alpha y0 = 2000, k^2 = 1 +/- 1e-12, k -> 0, kappa^2 = +/- 1e-8, rays from the ground.
+TEST(ExactRay, ExtremeFamiliesPassAsAccuratelyAsTheirConditioningAllows) {
+    check_reference_file("path_extreme.csv", 35);
+}
+
+}  // namespace
+}  // namespace mirage
+
+namespace mirage {
+namespace {
+
+struct Case {
+    const char* preset;
+    double y0, elev;
+};
+
+// A ray started at a point of another ray's path, in the direction of that path, is the same
+// ray: the invariant and the closed forms agree wherever the second ray starts.
+TEST(ExactRay, RayStartedOnAnotherRaysPathContinuesIt) {
+    const Case cases[] = {{"paper", 1.5, -0.2},        {"paper", 1.5, 0.1},
+                          {"hot-road", 1.5, -2e-3},    {"hot-road", 0.3, -1e-4},
+                          {"paper-superior", 1.0, 0.05}, {"paper-superior", 1.0, -0.3},
+                          {"cold-sea", 2.0, 1e-3},     {"cold-sea", 2.0, -5e-3}};
+    for (const auto& c : cases) {
+        auto a = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
+        ASSERT_TRUE(a.ok());
+        const double reach = a->hits_ground ? a->dz_ground : 4.0 / a->c;
+        for (double f : {0.1, 0.35, 0.6}) {
+            const double d = f * reach;
+            const double y = height_at(*a, d);
+            const double slope = slope_at(*a, d);
+            auto b = make_exact_ray(*preset_profile(c.preset), y, M_PI / 2 - std::atan(slope));
+            ASSERT_TRUE(b.ok()) << b.message();
+            EXPECT_NEAR(b->beta, a->beta, 1e-13 * a->beta) << c.preset << " " << c.elev;
+            EXPECT_EQ(b->hits_ground, a->hits_ground) << c.preset << " " << c.elev;
+            if (a->hits_ground) {
+                EXPECT_NEAR(b->dz_ground, a->dz_ground - d, 1e-9 * a->dz_ground);
+            }
+            for (double g : {0.05, 0.2, 0.35}) {
+                const double e = g * reach;
+                EXPECT_NEAR(height_at(*b, e), height_at(*a, d + e),
+                            1e-10 * std::max(c.y0, std::fabs(height_at(*a, d + e))))
+                    << c.preset << " " << c.elev << " from " << d << " at +" << e;
+            }
+        }
+    }
+}
+
+TEST(ExactRay, PathIsSymmetricAboutItsTurningPoint) {
+    const Case cases[] = {{"paper", 1.5, -0.2}, {"hot-road", 1.5, -3e-3},
+                          {"paper-superior", 1.0, 0.05}, {"cold-sea", 2.0, 2e-3}};
+    for (const auto& c : cases) {
+        auto r = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
+        ASSERT_TRUE(r.ok());
+        ASSERT_EQ(r->turn_kind, TurnKind::Ahead) << c.preset;
+        EXPECT_NEAR(height_at(*r, r->dz_turn), r->y_turn, 1e-13 * c.y0);
+        EXPECT_NEAR(slope_at(*r, r->dz_turn), 0.0, 1e-9);
+        for (double f : {0.1, 0.5, 0.9, 1.0}) {
+            const double u = f * r->dz_turn;
+            EXPECT_NEAR(height_at(*r, r->dz_turn - u), height_at(*r, r->dz_turn + u), 1e-12 * c.y0)
+                << c.preset << " u = " << u;
+            EXPECT_NEAR(slope_at(*r, r->dz_turn - u), -slope_at(*r, r->dz_turn + u),
+                        1e-10 * std::fabs(slope_at(*r, r->dz_turn + u)))
+                << c.preset << " u = " << u;
+        }
+    }
+}
+
+// Rays that just touch the ground: k^2 = 1 separates turning rays from ground hits; both
+// sides stay finite and consistent.
+TEST(ExactRay, RaysThatJustTouchTheGroundAreConsistent) {
+    const Profile p = *preset_profile("paper");
+    const double y0 = 1.5;
+    const double eta_p = eta(p, y0);
+    for (double k2 : {1.0 - 1e-12, 1.0 + 1e-12}) {
+        const double cos_i = -std::sqrt(k2 - std::exp(-p.alpha * y0)) * p.eta1 / eta_p;
+        auto r = make_exact_ray(p, y0, std::acos(cos_i));
+        ASSERT_TRUE(r.ok());
+        EXPECT_NEAR(r->k2, k2, 1e-14);
+        EXPECT_NEAR(r->y_turn, 0.0, 1e-12);
+        EXPECT_EQ(r->hits_ground, k2 > 1.0);
+        EXPECT_TRUE(std::isfinite(r->dz_turn));
+        if (r->hits_ground) {
+            // It hits the ground very close to the vertex it never reaches.
+            EXPECT_NEAR(r->dz_ground, r->dz_turn, 1e-5 * r->dz_turn);
+            EXPECT_NEAR(height_at(*r, r->dz_ground), 0.0, 1e-12);
+        } else {
+            EXPECT_GT(height_at(*r, r->dz_turn), 0.0);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace mirage
