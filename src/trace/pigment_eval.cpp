@@ -106,8 +106,10 @@ glm::dvec3 sky_colour(const Scene& scene, const glm::dvec3& direction) {
             filter *= c.rgb * c.filter + glm::dvec3(c.transmit);
         }
     }
+    // The background: POV-Ray's parser (3.7, no alpha output) precomposes it over black,
+    // rgb * (1 - transmit), and drops its filter; ComputeSky then takes it as opaque.
     const PigmentColour background = from_colour(scene.background);
-    colour += background.rgb * filter;
+    colour += background.rgb * (1.0 - background.transmit) * filter;
     return colour;
 }
 

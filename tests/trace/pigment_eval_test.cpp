@@ -57,10 +57,12 @@ TEST(PatternValue, GradientAlongAnOffAxisVector) {
     EXPECT_NEAR(pattern_value(p, {0.5, 0.5, 7.0}), std::sqrt(0.5), 1e-15);
 }
 
-TEST(Sky, BackgroundAloneIgnoresFilterAndTransmit) {
+TEST(Sky, BackgroundIsPrecomposedOverBlack) {
+    // POV-Ray 3.7 renders background { rgbt <0.5, 0.5, 0.5, 0.5> } as code 137 = rgb 0.25:
+    // its parser multiplies by 1 - transmit and drops filter.
     Scene s;
-    s.background = Colour{glm::dvec3(0.2, 0.4, 0.6), 0.0, 0.5};
-    EXPECT_NEAR(glm::length(sky_colour(s, {0, 1, 0}) - glm::dvec3(0.2, 0.4, 0.6)), 0.0, 1e-7);
+    s.background = Colour{glm::dvec3(0.2, 0.4, 0.6), 0.3, 0.5};
+    EXPECT_NEAR(glm::length(sky_colour(s, {0, 1, 0}) - glm::dvec3(0.1, 0.2, 0.3)), 0.0, 1e-7);
 }
 
 TEST(Sky, TheLastPigmentIsOnTopAndTransmitShowsWhatIsBelow) {

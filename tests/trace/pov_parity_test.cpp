@@ -164,7 +164,7 @@ Scene mirrors_scene(int max_trace_level) {
         primitive(Plane{{0.0, 0.0, 1.0}, -3.0}, texture(solid(rgb(1.0, 1.0, 1.0)), weak)));
     s.primitives.push_back(primitive(Sphere{{0.5, 0.5, 1.0}, 0.5},
                                      texture(solid(rgb(0.9, 0.2, 0.2)), finish_with(0.2, 0.7))));
-    s.background = rgb(0.3, 0.5, 0.7);
+    s.background = Colour{glm::dvec3(0.6, 0.8, 1.0), 0.2, 0.4};  // precomposed by POV-Ray
     return s;
 }
 
