@@ -177,7 +177,7 @@ Scene horizon_scene() {
     s.lights.push_back(light({100.0, 100.0, -50.0}));
     s.primitives.push_back(primitive(Plane{{0.0, 1.0, 0.0}, 0.0},
                                      texture(checker(rgb(0.9, 0.9, 0.9), rgb(0.1, 0.1, 0.1)))));
-    s.background = rgb(0.5, 0.6, 0.9);
+    s.background = Colour{glm::dvec3(0.7, 0.8, 1.0), 0.2, 0.3};  // precomposed by POV-Ray
     return s;
 }
 
