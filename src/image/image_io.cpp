@@ -1,0 +1,153 @@
+#include "image/image_io.h"
+
+#include <OpenImageIO/fmath.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "util/check.h"
+
+namespace mirage {
+
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+/// A temporary name in the same directory as `path`, so the rename stays on one file system.
+/// OpenImageIO picks the format from the extension, so the extension is kept last.
+std::string temporary_name(const std::string& path) {
+    const std::filesystem::path p(path);
+    std::string name(".");
+    name.append(p.stem().string()).append(".tmp").append(p.extension().string());
+    return (p.parent_path() / name).string();
+}
+
+Status write_through_temporary(const std::string& path, const OIIO::ImageSpec& spec,
+                               const OIIO::TypeDesc& format, const void* data) {
+    const std::string tmp = temporary_name(path);
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) return make_error(path + ": cannot write images of this type: " + OIIO::geterror());
+    if (!out->open(tmp, spec)) {
+        return make_error(path + ": cannot open for writing: " + out->geterror());
+    }
+    if (!out->write_image(format, data)) {
+        std::string message = path + ": write failed: " + out->geterror();
+        out->close();
+        std::remove(tmp.c_str());
+        return make_error(message);
+    }
+    if (!out->close()) {
+        std::string message = path + ": write failed: " + out->geterror();
+        std::remove(tmp.c_str());
+        return make_error(message);
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::remove(tmp.c_str());
+        return make_error(path + ": cannot rename the written file into place: " + ec.message());
+    }
+    return Ok{};
+}
+
+Status check_image(const Image& image, const std::string& path) {
+    if (image.empty()) return make_error(path + ": refusing to write an empty image");
+    MIRAGE_CHECK(image.pixels.size() == static_cast<std::size_t>(image.width) *
+                                            static_cast<std::size_t>(image.height) * 3);
+    return Ok{};
+}
+
+}  // namespace
+
+std::uint8_t encode_srgb8(float linear) {
+    // Single precision throughout, as POV-Ray (its pow is the float overload): this decides
+    // the rounding of a few values per thousand.
+    float encoded;
+    if (linear <= 0.0031308f) {
+        encoded = linear * 12.92f;
+    } else {
+        encoded = 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    }
+    if (!(encoded > 0.0f)) encoded = 0.0f;  // also NaN, which POV-Ray never produces
+    if (encoded > 1.0f) encoded = 1.0f;
+    return static_cast<std::uint8_t>(std::floor(encoded * 255.0f + 0.5f));
+}
+
+float decode_srgb8(std::uint8_t code) {
+    const float x = static_cast<float>(code) / 255.0f;
+    if (x < 0.04045f) return x / 12.92f;
+    return std::pow((x + 0.055f) / 1.055f, 2.4f);
+}
+
+Image quantize_srgb8(const Image& linear) {
+    Image out(linear.width, linear.height);
+    for (std::size_t i = 0; i < linear.pixels.size(); ++i) {
+        // OpenImageIO's own conversion, so the values equal what read_image gives for the PNG.
+        out.pixels[i] = OIIO::convert_type<std::uint8_t, float>(encode_srgb8(linear.pixels[i]));
+    }
+    return out;
+}
+
+Status write_png(const Image& linear, const std::string& path) {
+    if (auto s = check_image(linear, path); !s) return s;
+    std::vector<std::uint8_t> bytes(linear.pixels.size());
+    for (std::size_t i = 0; i < linear.pixels.size(); ++i) {
+        bytes[i] = encode_srgb8(linear.pixels[i]);
+    }
+    OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("Software", "mirage");
+    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+}
+
+Status write_exr(const Image& linear, const std::string& path) {
+    if (auto s = check_image(linear, path); !s) return s;
+    OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::FLOAT);
+    spec.attribute("oiio:ColorSpace", "Linear");
+    spec.attribute("compression", "zip");
+    return write_through_temporary(path, spec, OIIO::TypeDesc::FLOAT, linear.pixels.data());
+}
+
+Status write_image(const Image& linear, const std::string& path) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".png") return write_png(linear, path);
+    if (ext == ".exr") return write_exr(linear, path);
+    return make_error(path + ": unknown image type '" + ext + "' (use .png or .exr)");
+}
+
+Result<Image> read_image(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) return make_error(path + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
+        return make_error(path + ": not a 2D image with pixels");
+    }
+    const int channels = spec.nchannels;
+    std::vector<float> data(static_cast<std::size_t>(spec.width) * spec.height * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) {
+        return make_error(path + ": cannot read pixels: " + in->geterror());
+    }
+    in->close();
+    Image image(spec.width, spec.height);
+    for (std::size_t p = 0, n = static_cast<std::size_t>(spec.width) * spec.height; p < n; ++p) {
+        for (int c = 0; c < 3; ++c) {
+            const int source = channels >= 3 ? c : 0;
+            image.pixels[p * 3 + c] = data[p * channels + source];
+        }
+    }
+    return image;
+}
+
+}  // namespace mirage

@@ -1,0 +1,40 @@
+// Image files through OpenImageIO: 8-bit PNG encoded as POV-Ray 3.7 encodes it, linear
+// float OpenEXR, and reading any format OpenImageIO knows.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "image/image.h"
+#include "util/result.h"
+
+namespace mirage {
+
+/// POV-Ray 3.7's 8-bit code for a linear value, as it writes PNG with assumed_gamma 1.0
+/// and the default File_Gamma (sRGB): the sRGB transfer function in single precision,
+/// clipped to [0, 1], rounded half up, no dithering (base/image/colourspace.cpp,
+/// encoding.h IntEncode).
+std::uint8_t encode_srgb8(float linear);
+
+/// Inverse of the sRGB transfer function for an 8-bit code (exact to float precision).
+float decode_srgb8(std::uint8_t code);
+
+/// The image POV-Ray's PNG would hold, as code values / 255: what `read_image` returns for
+/// that PNG.  For comparing a linear render with a PNG without writing a file.
+Image quantize_srgb8(const Image& linear);
+
+/// Writes linear pixels as an 8-bit RGB PNG encoded by `encode_srgb8`, tagged sRGB.  Writes
+/// to a temporary name beside `path` and renames it, so a failure leaves `path` untouched.
+Status write_png(const Image& linear, const std::string& path);
+
+/// Writes linear pixels as a float RGB OpenEXR (no encoding), through a temporary name.
+Status write_exr(const Image& linear, const std::string& path);
+
+/// Writes by extension: .png as `write_png`, .exr as `write_exr`; anything else is refused.
+Status write_image(const Image& linear, const std::string& path);
+
+/// Reads the first three channels of an image as stored: an 8-bit PNG gives code / 255
+/// (no linearisation), an EXR its linear floats.  A grey image is spread to RGB.
+Result<Image> read_image(const std::string& path);
+
+}  // namespace mirage

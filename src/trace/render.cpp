@@ -1,0 +1,157 @@
+#include "trace/render.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "trace/scene_accel.h"
+#include "util/check.h"
+
+namespace mirage {
+
+namespace {
+
+/// A progress bar on stderr, redrawn when the shown percentage changes.
+class ProgressBar {
+  public:
+    ProgressBar(bool enabled, int total) : enabled_(enabled), total_(total) {}
+    void advance() {
+        if (!enabled_) return;
+        const int done = ++done_;
+        const int percent = static_cast<int>(100LL * done / total_);
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (percent == shown_) return;
+        shown_ = percent;
+        constexpr int kWidth = 40;
+        const int filled = percent * kWidth / 100;
+        std::fprintf(stderr, "\rtrace [%.*s%*s] %3d%%", filled,
+                     "########################################", kWidth - filled, "", percent);
+        if (done == total_) std::fputc('\n', stderr);
+        std::fflush(stderr);
+    }
+
+  private:
+    bool enabled_;
+    int total_;
+    std::atomic<int> done_{0};
+    std::mutex mutex_;
+    int shown_ = -1;
+};
+
+}  // namespace
+
+double RenderStats::segments_per_ray() const {
+    return rays() > 0 ? static_cast<double>(counters.segments) / static_cast<double>(rays()) : 0.0;
+}
+
+double RenderStats::mrays_per_second() const {
+    return seconds > 0.0 ? static_cast<double>(all_rays()) / seconds * 1e-6 : 0.0;
+}
+
+Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
+                            const Propagator& propagator, const PixelRayFunction& pixel_ray) {
+    if (settings.width <= 0 || settings.height <= 0) {
+        return make_error("image size must be positive, got " + std::to_string(settings.width) +
+                          "x" + std::to_string(settings.height));
+    }
+    if (settings.tile_size <= 0) return make_error("tile size must be positive");
+    if (auto s = check_supported(scene); !s) return s.error();
+    auto accel = SceneAccel::build(scene);
+    if (!accel) return accel.error();
+    // A degenerate camera would give NaN rays: refuse it before tracing.
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, std::pair{1.0 * settings.width, 0.0},
+                               std::pair{0.0, 1.0 * settings.height},
+                               std::pair{1.0 * settings.width, 1.0 * settings.height},
+                               std::pair{0.5 * settings.width, 0.5 * settings.height}}) {
+        const PixelRay r = pixel_ray(scene.camera, x, y, settings.width, settings.height);
+        const bool finite = std::isfinite(r.origin.x) && std::isfinite(r.origin.y) &&
+                            std::isfinite(r.origin.z) && std::isfinite(r.direction.x) &&
+                            std::isfinite(r.direction.y) && std::isfinite(r.direction.z);
+        if (!finite || std::abs(glm::length(r.direction) - 1.0) > 1e-9) {
+            std::string where;
+            if (!scene.camera.loc.file.empty()) {
+                where = scene.camera.loc.file + ":" + std::to_string(scene.camera.loc.line) + ":" +
+                        std::to_string(scene.camera.loc.column) + ": ";
+            }
+            return make_error(where +
+                              "camera: its vectors give no ray direction (zero or "
+                              "parallel direction, right and up?)");
+        }
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    const Shader shader(scene, *accel, propagator);
+    const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
+    const int tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
+    const int tile_count = tiles_x * tiles_y;
+    int threads = settings.threads > 0 ? settings.threads
+                                       : static_cast<int>(std::thread::hardware_concurrency());
+    threads = std::clamp(threads, 1, std::max(1, tile_count));
+
+    RenderResult result;
+    result.image = Image(settings.width, settings.height);
+    std::vector<TraceCounters> counters(threads);
+    std::atomic<int> next_tile{0};
+    ProgressBar progress(settings.progress && isatty(fileno(stderr)) != 0, tile_count);
+
+    // Every pixel depends on nothing but its position, so the tiles can go in any order on
+    // any thread and the image is the same.
+    const auto work = [&](int thread) {
+        TraceCounters& mine = counters[thread];
+        for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
+            const int x0 = (tile % tiles_x) * settings.tile_size;
+            const int y0 = (tile / tiles_x) * settings.tile_size;
+            const int x1 = std::min(x0 + settings.tile_size, settings.width);
+            const int y1 = std::min(y0 + settings.tile_size, settings.height);
+            for (int y = y0; y < y1; ++y) {
+                for (int x = x0; x < x1; ++x) {
+                    const PixelRay ray =
+                        pixel_ray(scene.camera, x + 0.5, y + 0.5, settings.width, settings.height);
+                    const glm::dvec3 c = shader.trace_camera_ray(ray.origin, ray.direction, mine);
+                    MIRAGE_CHECK(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+                    result.image.set(x, y, glm::vec3(c));
+                }
+            }
+            progress.advance();
+        }
+    };
+    std::vector<std::thread> pool;
+    pool.reserve(threads - 1);
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& t : pool) t.join();
+
+    result.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.stats.threads = threads;
+    for (const auto& c : counters) result.stats.counters.add(c);
+    return result;
+}
+
+Result<RenderResult> render(const Scene& scene, const RenderSettings& settings) {
+    const StraightPropagator straight;
+    return render(scene, settings, straight, pov_pixel_ray);
+}
+
+std::string format_stats(const RenderStats& stats, int width, int height) {
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(3);
+    out << width << "x" << height << ": " << stats.rays() << " rays (" << stats.counters.camera_rays
+        << " camera, " << stats.counters.reflected_rays << " reflected) + "
+        << stats.counters.shadow_rays << " shadow, " << stats.segments_per_ray()
+        << " segments/ray, " << stats.seconds << " s, " << stats.mrays_per_second()
+        << " Mrays/s on " << stats.threads << " thread" << (stats.threads == 1 ? "" : "s");
+    return out.str();
+}
+
+}  // namespace mirage

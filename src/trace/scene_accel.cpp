@@ -1,0 +1,213 @@
+#include "trace/scene_accel.h"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+#include "util/check.h"
+
+namespace mirage {
+
+namespace {
+
+constexpr int kLeafSize = 2;
+constexpr int kBins = 12;
+constexpr int kMaxDepth = 64;
+
+/// Whether `a` should replace `b` as the closest hit: nearer, or as near and earlier in the
+/// scene (POV-Ray keeps the first of equal depths in its object list).
+inline bool better(double t, int primitive, double best_t, int best_primitive) {
+    return t < best_t || (t == best_t && primitive < best_primitive);
+}
+
+}  // namespace
+
+Result<SceneAccel> SceneAccel::build(const Scene& scene) {
+    SceneAccel accel;
+    const int n = static_cast<int>(scene.primitives.size());
+    accel.shapes_.reserve(n);
+    accel.casts_shadow_.reserve(n);
+    std::vector<Aabb> boxes;
+    std::vector<glm::dvec3> centres;
+    std::vector<int> finite;
+    boxes.reserve(n);
+    centres.reserve(n);
+    for (int i = 0; i < n; ++i) {
+        const Primitive& p = scene.primitives[i];
+        auto shape = prepare_shape(p);
+        if (!shape) return shape.error();
+        accel.shapes_.push_back(*shape);
+        accel.casts_shadow_.push_back(p.no_shadow ? 0 : 1);
+        const Aabb box = shape_bounds(*shape);
+        boxes.push_back(box.finite() ? box.padded(1e-9, 1e-12) : box);
+        centres.push_back(box.finite() ? box.centre() : glm::dvec3(0.0));
+        if (box.finite()) {
+            finite.push_back(i);
+            accel.finite_bounds_.extend(boxes.back());
+        } else {
+            accel.unbounded_.push_back(i);
+        }
+    }
+    if (!finite.empty()) {
+        accel.nodes_.reserve(2 * finite.size());
+        accel.build_node(finite, 0, static_cast<int>(finite.size()), 0, boxes, centres);
+        accel.order_ = finite;
+    }
+    return accel;
+}
+
+int SceneAccel::build_node(std::vector<int>& items, int begin, int end, int depth,
+                           const std::vector<Aabb>& boxes, const std::vector<glm::dvec3>& centres) {
+    const int index = static_cast<int>(nodes_.size());
+    nodes_.push_back(Node{});
+    Aabb box;
+    Aabb centre_box;
+    for (int i = begin; i < end; ++i) {
+        box.extend(boxes[items[i]]);
+        centre_box.extend(centres[items[i]]);
+    }
+    nodes_[index].box = box;
+    const int count = end - begin;
+    const auto make_leaf = [&] {
+        nodes_[index].first = begin;
+        nodes_[index].count = count;
+        return index;
+    };
+    if (count <= kLeafSize || depth >= kMaxDepth) {
+        return make_leaf();
+    }
+
+    // Binned surface area heuristic on the axis where the centres spread most.
+    const glm::dvec3 extent = centre_box.hi - centre_box.lo;
+    int axis = 0;
+    if (extent.y > extent[axis]) axis = 1;
+    if (extent.z > extent[axis]) axis = 2;
+    if (!(extent[axis] > 0.0)) return make_leaf();  // all centres coincide
+
+    std::array<Aabb, kBins> bin_box;
+    std::array<int, kBins> bin_count{};
+    const double scale = kBins / extent[axis];
+    const auto bin_of = [&](int item) {
+        const int b = static_cast<int>((centres[item][axis] - centre_box.lo[axis]) * scale);
+        return std::clamp(b, 0, kBins - 1);
+    };
+    for (int i = begin; i < end; ++i) {
+        const int b = bin_of(items[i]);
+        bin_box[b].extend(boxes[items[i]]);
+        ++bin_count[b];
+    }
+    std::array<double, kBins> right_cost{};
+    Aabb right;
+    int right_n = 0;
+    for (int b = kBins - 1; b > 0; --b) {
+        right.extend(bin_box[b]);
+        right_n += bin_count[b];
+        right_cost[b] = right.half_area() * right_n;
+    }
+    Aabb left;
+    int left_n = 0;
+    int best_split = -1;
+    double best_cost = std::numeric_limits<double>::infinity();
+    for (int b = 1; b < kBins; ++b) {
+        left.extend(bin_box[b - 1]);
+        left_n += bin_count[b - 1];
+        if (left_n == 0 || left_n == count) continue;
+        const double cost = left.half_area() * left_n + right_cost[b];
+        if (cost < best_cost) {
+            best_cost = cost;
+            best_split = b;
+        }
+    }
+    if (best_split < 0) return make_leaf();
+    const double leaf_cost = box.half_area() * count;
+    if (count <= 4 && best_cost >= leaf_cost) return make_leaf();
+
+    // A stable partition keeps the build independent of anything but the input order.
+    const auto middle = std::stable_partition(items.begin() + begin, items.begin() + end,
+                                              [&](int item) { return bin_of(item) < best_split; });
+    const int mid = static_cast<int>(middle - items.begin());
+    MIRAGE_CHECK(mid > begin && mid < end);
+    nodes_[index].axis = axis;
+    build_node(items, begin, mid, depth + 1, boxes, centres);
+    const int second = build_node(items, mid, end, depth + 1, boxes, centres);
+    nodes_[index].first = second;
+    nodes_[index].count = 0;
+    return index;
+}
+
+template <bool kAnyShadow>
+bool SceneAccel::traverse(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
+                          double t_max, Candidate& best) const {
+    bool found = false;
+    // Unbounded primitives first: a near plane tightens the interval for the hierarchy.
+    for (const int i : unbounded_) {
+        if (kAnyShadow && !casts_shadow_[i]) continue;
+        ShapeHit hit;
+        const double limit = found ? best.t : t_max;
+        if (intersect_shape(shapes_[i], origin, direction, t_min, limit, hit) &&
+            (!found || better(hit.t, i, best.t, best.primitive))) {
+            best = Candidate{hit.t, hit.part, i};
+            found = true;
+            if (kAnyShadow) return true;
+        }
+    }
+    if (nodes_.empty()) return found;
+
+    const SlabRay ray(origin, direction);
+    std::array<int, kMaxDepth + 8> stack;  // a node at depth k leaves at most k + 2 entries
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        const double limit = found ? best.t : t_max;
+        if (!slab_test(node.box, ray, t_min, limit)) continue;
+        if (node.count > 0) {
+            for (int k = node.first; k < node.first + node.count; ++k) {
+                const int i = order_[k];
+                if (kAnyShadow && !casts_shadow_[i]) continue;
+                ShapeHit hit;
+                const double lim = found ? best.t : t_max;
+                if (intersect_shape(shapes_[i], origin, direction, t_min, lim, hit) &&
+                    (!found || better(hit.t, i, best.t, best.primitive))) {
+                    best = Candidate{hit.t, hit.part, i};
+                    found = true;
+                    if (kAnyShadow) return true;
+                }
+            }
+            continue;
+        }
+        const int first_child = static_cast<int>(&node - nodes_.data()) + 1;
+        const int second_child = node.first;
+        MIRAGE_CHECK(top + 2 <= static_cast<int>(stack.size()));
+        // Visit the child on the ray's side of the split first (pushed last).
+        if (direction[node.axis] < 0.0) {
+            stack[top++] = first_child;
+            stack[top++] = second_child;
+        } else {
+            stack[top++] = second_child;
+            stack[top++] = first_child;
+        }
+    }
+    return found;
+}
+
+std::optional<SurfaceHit> SceneAccel::closest_hit(const glm::dvec3& origin,
+                                                  const glm::dvec3& direction, double t_min,
+                                                  double t_max) const {
+    Candidate best;
+    if (!traverse<false>(origin, direction, t_min, t_max, best)) return std::nullopt;
+    SurfaceHit hit;
+    hit.t = best.t;
+    hit.primitive = best.primitive;
+    hit.point = origin + best.t * direction;
+    hit.normal = shape_normal(shapes_[best.primitive], hit.point, best.part);
+    return hit;
+}
+
+bool SceneAccel::any_shadow_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
+                                double t_max) const {
+    Candidate best;
+    return traverse<true>(origin, direction, t_min, t_max, best);
+}
+
+}  // namespace mirage

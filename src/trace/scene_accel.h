@@ -1,0 +1,78 @@
+// The scene's geometry prepared for ray queries: a bounding volume hierarchy over the
+// finite primitives plus a list of the unbounded ones (planes), answering the closest hit
+// along a segment and whether any shadow-casting primitive lies on one.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <vector>
+
+#include "scene/scene.h"
+#include "trace/bounds.h"
+#include "trace/shape_intersect.h"
+#include "util/result.h"
+
+namespace mirage {
+
+/// Where a ray met a surface.
+struct SurfaceHit {
+    double t = 0.0;          // distance from the query's origin along its unit direction
+    glm::dvec3 point{0.0};   // world point, origin + t direction
+    glm::dvec3 normal{0.0};  // unit geometric normal as the shape defines it (outward,
+                             // flipped for `inverse`), not turned toward the ray
+    int primitive = -1;      // index into Scene::primitives
+};
+
+class SceneAccel {
+  public:
+    /// Prepares every primitive of the scene; fails with the first one that cannot be
+    /// prepared (its message names the place in the scene file).
+    static Result<SceneAccel> build(const Scene& scene);
+
+    /// The closest hit with t in the closed interval [t_min, t_max] along origin + t
+    /// direction (direction of unit length), or nothing.  Exact ties go to the primitive
+    /// that comes first in the scene, whatever the traversal order.  Thread-safe.
+    std::optional<SurfaceHit> closest_hit(const glm::dvec3& origin, const glm::dvec3& direction,
+                                          double t_min, double t_max) const;
+
+    /// Whether a primitive that casts shadows (not `no_shadow`) is hit for some t in
+    /// [t_min, t_max].  Thread-safe.
+    bool any_shadow_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
+                        double t_max) const;
+
+    int primitive_count() const { return static_cast<int>(shapes_.size()); }
+    const PreparedShape& shape(int primitive) const { return shapes_[primitive]; }
+    /// World bounds of the finite primitives (empty when there are none).
+    const Aabb& finite_bounds() const { return finite_bounds_; }
+    /// Primitives kept outside the hierarchy because they are unbounded.
+    const std::vector<int>& unbounded() const { return unbounded_; }
+
+  private:
+    struct Node {
+        Aabb box;
+        int first = 0;  // leaf: first index into order_; inner: index of the second child
+        int count = 0;  // leaf: number of primitives; inner: 0 (first child follows the node)
+        int axis = 0;   // inner: the split axis, to visit the nearer child first
+    };
+    struct Candidate {
+        double t = 0.0;
+        int part = 0;
+        int primitive = -1;
+    };
+
+    int build_node(std::vector<int>& items, int begin, int end, int depth,
+                   const std::vector<Aabb>& boxes, const std::vector<glm::dvec3>& centres);
+    template <bool kAnyShadow>
+    bool traverse(const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max,
+                  Candidate& best) const;
+
+    std::vector<PreparedShape> shapes_;
+    std::vector<std::uint8_t> casts_shadow_;
+    std::vector<Node> nodes_;
+    std::vector<int> order_;  // finite primitives in leaf order
+    std::vector<int> unbounded_;
+    Aabb finite_bounds_;
+};
+
+}  // namespace mirage
