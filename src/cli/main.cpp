@@ -8,6 +8,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "mirage 0.1");
     app.require_subcommand(1);
     mirage::setup_path_command(app);
+    mirage::setup_compile_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -25,8 +25,9 @@ double distance_to_box_edge(const HorizontalBox& b, double x, double z, double h
 
 Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
                                const glm::dvec3& dir_in, const HorizontalBox& scene,
-                               const HorizontalBox& layers, int max_events) {
-    MIRAGE_CHECK(origin.y > 0.0);
+                               const HorizontalBox& layers, int max_events,
+                               const ObjectQuery* objects) {
+    MIRAGE_CHECK(origin.y >= 0.0);
     // The indices POV-Ray gets: each layer's index divided by the camera layer's.
     const int k0 = s.layer_at(origin.y);
     const double n_cam = s.index(k0);
@@ -61,6 +62,19 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
         const double t_layers = hlen > 0.0
                                     ? distance_to_box_edge(layers, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
                                     : kInf;
+        if (objects) {
+            const double reach = std::min(t_plane, t_layers);
+            if (auto hit = (*objects)(p, d, std::isfinite(reach) ? reach : 1e30)) {
+                if (in_scene && t_scene < hit->t) {
+                    out.scene_point = p + t_scene * d;
+                    out.scene_dir = d;
+                }
+                out.object = hit;
+                out.object_point = p + hit->t * d;
+                out.object_dir = d;
+                return out;
+            }
+        }
         if (in_scene && t_scene <= t_plane) {
             out.scene_point = p + t_scene * d;
             out.scene_dir = d;

@@ -5,6 +5,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <functional>
+#include <optional>
+
 #include "layers/stack.h"
 
 namespace mirage {
@@ -18,6 +21,17 @@ struct HorizontalBox {
 /// Distance along the horizontal direction (hx, hz) (unit) from (x, z) to the box's edge.
 double distance_to_box_edge(const HorizontalBox& box, double x, double z, double hx, double hz);
 
+/// An opaque object met along a straight piece of the path.
+struct ObjectHit {
+    double t = 0.0;             // distance along the (unit) direction
+    glm::dvec3 normal{0.0};     // surface normal there
+    int id = -1;                // which object
+};
+
+/// Finds the closest object hit within (0, t_max] along origin + t direction.
+using ObjectQuery =
+    std::function<std::optional<ObjectHit>(const glm::dvec3& origin, const glm::dvec3& dir, double t_max)>;
+
 struct Trace3dOutcome {
     bool ground = false;       // hit the ground inside the scene box
     glm::dvec3 scene_point{0.0};  // ground hit, or where it leaves the scene box
@@ -26,12 +40,18 @@ struct Trace3dOutcome {
     glm::dvec3 final_dir{0.0};    // its direction then
     int crossings = 0;         // boundary events inside the layers
     bool cut_off = false;
+    std::optional<ObjectHit> object;  // the object that stopped the ray, if any
+    glm::dvec3 object_point{0.0};     // where
+    glm::dvec3 object_dir{0.0};       // the ray's direction there
 };
 
 /// Traces from `origin` along `dir` (unit).  The scene ends at `scene`; the layers span
 /// `layers` (which contains `scene`); outside them the ray is straight.
+/// `objects`, when given, stops the ray at the first opaque object it meets.  A ray may start
+/// on the ground (y = 0, going up) or anywhere above it.
 Trace3dOutcome trace_layers_3d(const LayerStack& stack, const glm::dvec3& origin,
                                const glm::dvec3& dir, const HorizontalBox& scene,
-                               const HorizontalBox& layers, int max_events = 100000);
+                               const HorizontalBox& layers, int max_events = 100000,
+                               const ObjectQuery* objects = nullptr);
 
 }  // namespace mirage

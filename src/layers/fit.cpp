@@ -610,34 +610,45 @@ FitResult fit_layers(const Profile& profile, double y0, const std::vector<Design
     // the fewest crossings.
     FitResult best;
     FitQuality best_q{std::numeric_limits<double>::infinity(), std::numeric_limits<int>::max()};
-    std::vector<double> aims = {1.0, 0.85, 0.7, 1.2, 1.5, 2.0, 3.0};
-    const double margins[] = {0.97, 0.9, 0.8};
-    for (size_t a = 0; a < aims.size(); ++a) {
-        const double aim_factor = aims[a];
-        // Nothing within the budget yet: keep loosening the aim until the budget is kept.
-        if (a + 1 == aims.size() && best_q.max_crossings > settings.max_crossings &&
-            aims.size() < 30)
-            aims.push_back(aim_factor * 1.4);
-        bool done = false;
-        for (double margin : margins) {
+    auto in_budget = [&](const FitQuality& q) { return q.max_crossings <= settings.max_crossings; };
+    // Tries one aim (a tolerance factor) with each margin; keeps the best design seen.
+    // Returns whether the aim's best try kept the budget, and whether the tolerance was met.
+    auto attempt = [&](double aim_factor, bool& kept_budget) {
+        kept_budget = false;
+        for (double margin : {0.97, 0.9, 0.8}) {
             FitSettings aim = settings;
             aim.tolerance_px = settings.tolerance_px * aim_factor;
             aim.oneway_margin = margin;
             FitResult f = fit_once(profile, y0, rays, aim, fixed_excess);
             const FitQuality q = measure_fit(f.stack, y0, rays, settings.layers_extent_factor);
-            const bool in_budget = q.max_crossings <= settings.max_crossings;
-            const bool best_in_budget = best_q.max_crossings <= settings.max_crossings;
-            if ((in_budget && (!best_in_budget || q.max_error_px < best_q.max_error_px)) ||
-                (!in_budget && !best_in_budget && q.max_crossings < best_q.max_crossings)) {
+            kept_budget = kept_budget || in_budget(q);
+            if ((in_budget(q) && (!in_budget(best_q) || q.max_error_px < best_q.max_error_px)) ||
+                (!in_budget(q) && !in_budget(best_q) && q.max_crossings < best_q.max_crossings)) {
                 best = std::move(f);
                 best_q = q;
             }
-            if (in_budget && q.max_error_px <= settings.tolerance_px) {
-                done = true;
-                break;
-            }
+            if (in_budget(q) && q.max_error_px <= settings.tolerance_px) return true;
         }
-        if (done) break;
+        return false;
+    };
+    bool kept = false;
+    for (double aim : {1.0, 0.85, 0.7})
+        if (attempt(aim, kept)) return best.quality = best_q, best;
+    // Out of reach: find the tightest aim that keeps the budget.  Loosen geometrically until
+    // the budget is kept, then bisect between the last aim over it and the first within.
+    double over = 0.7, within = 0.0;
+    if (kept) {
+        within = 0.7;
+        over = 0.0;
+    }
+    for (double aim = 1.2; within == 0.0 && aim < 1e4; aim *= 1.5) {
+        if (attempt(aim, kept)) return best.quality = best_q, best;
+        if (kept) within = aim; else over = aim;
+    }
+    for (int i = 0; i < 6 && within > 0.0 && over > 0.0; ++i) {
+        const double mid = std::sqrt(over * within);
+        if (attempt(mid, kept)) break;
+        if (kept) within = mid; else over = mid;
     }
     best.quality = best_q;
     return best;

@@ -1,0 +1,66 @@
+// `mirage compile SCENE.pov`: the scene with a banded refraction medium for POV-Ray.
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "compile/compile.h"
+
+namespace mirage {
+
+namespace {
+
+struct CompileCliOptions {
+    CompileOptions compile;
+    double tolerance = 0.0;
+    std::string layers;
+    int count = 0;
+    bool json = false;
+    bool quiet = false;
+};
+
+}  // namespace
+
+void setup_compile_command(CLI::App& app) {
+    auto o = std::make_shared<CompileCliOptions>();
+    auto* sub = app.add_subcommand(
+        "compile", "Fit horizontal refractive layers to a scene's camera rays and write them for POV-Ray");
+    sub->add_option("scene", o->compile.scene, "the .pov template")->required();
+    sub->add_option("-W,--width", o->compile.width, "image width, pixels")->capture_default_str();
+    sub->add_option("-H,--height", o->compile.height, "image height, pixels")->capture_default_str();
+    sub->add_option("-o,--output", o->compile.out_dir,
+                    "directory for mirage_layers.inc, SCENE.ini, layers.csv, report.json "
+                    "(default build/render/SCENE)");
+    sub->add_option("--image", o->compile.image, "the image the .ini renders (default next to the directory)");
+    auto* tol = sub->add_option("--tolerance", o->tolerance, "largest path error, pixels (default: Mirage_Tolerance, else 0.5)");
+    auto* layers = sub->add_option("--layers", o->layers, "adaptive (default) or uniform (Berger's equal layers)")
+                       ->check(CLI::IsMember({"adaptive", "uniform"}));
+    auto* count = sub->add_option("--count", o->count, "number of uniform layers");
+    sub->add_option("-L,--library-path", o->compile.library_paths, "extra include directory (searched first)");
+    sub->add_flag("--antialias", o->compile.antialias, "antialias the render (+A0.3)");
+    sub->add_flag("--json", o->json, "print the report as JSON");
+    sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
+    sub->callback([o, tol, layers, count] {
+        CompileOptions c = o->compile;
+        if (*tol) c.tolerance_px = o->tolerance;
+        if (*layers) c.layers = o->layers == "uniform" ? LayerMode::Uniform : LayerMode::Adaptive;
+        if (*count) {
+            if (o->count < 1) {
+                std::cerr << "mirage compile: --count " << o->count << ": must be at least 1\n";
+                throw CommandFailed{1};
+            }
+            c.layer_count = o->count;
+        }
+        auto report = compile_scene(c);
+        if (!report) {
+            std::cerr << "mirage compile: " << report.message() << "\n";
+            throw CommandFailed{1};
+        }
+        if (o->json) {
+            std::cout << report_json(*report);
+        } else if (!o->quiet) {
+            std::cout << report_text(*report);
+        }
+    });
+}
+
+}  // namespace mirage

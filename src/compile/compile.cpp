@@ -1,0 +1,480 @@
+#include "compile/compile.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "atmosphere/exact_ray.h"
+#include "layers/band_tracer3d.h"
+#include "layers/fit.h"
+#include "layers/outcome.h"
+#include "pov/emit_layers.h"
+#include "scene/camera.h"
+#include "scene/parser.h"
+#include "trace/scene_accel.h"
+#include "util/atomic_file.h"
+#include "util/check.h"
+#include "util/format.h"
+
+namespace fs = std::filesystem;
+
+namespace mirage {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// POV-Ray counts a camera ray and every ray it spawns (refraction, reflection) as one more
+// trace level; max_trace_level 256 is its ceiling and a ray that reaches it returns black.
+// Staying at 255 or below keeps the statistics' "Max Level" under 256.
+constexpr int kMaxLevel = 255;
+// How far the layers reach beyond the scene, in scene extents: far enough that the camera's
+// rays leave them through the top (towards the sky, with eta(infinity)) or reach the ground.
+constexpr double kLayersExtentFactor = 1000.0;
+
+std::string scene_name(const std::string& path) { return fs::path(path).stem().string(); }
+
+// The directory mirage.inc lives in: pov_includes beside the executable's project.
+std::vector<std::string> default_library_paths(const std::string& scene) {
+    std::vector<std::string> paths;
+    paths.push_back(fs::absolute(fs::path(scene)).parent_path().string());
+#ifdef MIRAGE_POV_INCLUDES
+    paths.push_back(MIRAGE_POV_INCLUDES);
+#endif
+    paths.push_back("/usr/share/povray-3.7/include");
+    return paths;
+}
+
+struct PixelRay {
+    glm::dvec3 direction{0.0};
+    double elevation = 0.0;
+    double exit_dz = 0.0;
+    double pixel_rad = 0.0;
+};
+
+double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+double percentile(std::vector<double> v, double q) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const size_t i = static_cast<size_t>(std::floor(q * (v.size() - 1) + 0.5));
+    return v[std::min(i, v.size() - 1)];
+}
+
+// The largest trace level POV-Ray reaches for one camera ray: one level per boundary event
+// in the layers and per reflection off an object, following every reflection whose weight
+// stays above POV-Ray's adc_bailout.
+int trace_levels(const LayerStack& stack, const Scene& scene, const SceneAccel& accel,
+                 const ObjectQuery& objects, const glm::dvec3& origin, const glm::dvec3& dir,
+                 const HorizontalBox& scene_box, const HorizontalBox& layers_box, int level,
+                 double weight) {
+    // Followed past the ceiling (to 4 times it) so that a design over it knows by how much.
+    const Trace3dOutcome t =
+        trace_layers_3d(stack, origin, dir, scene_box, layers_box, 4 * kMaxLevel, &objects);
+    level += t.crossings;
+    if (t.cut_off) return std::max(level, 4 * kMaxLevel);
+    int deepest = level;
+    if (t.object) {
+        const Primitive& prim = scene.primitives[t.object->id];
+        const glm::dvec3 refl = prim.texture.finish.reflection;
+        const double r = std::max({refl.x, refl.y, refl.z});
+        if (r > 0.0 && weight * r >= 1.0 / 255.0) {
+            glm::dvec3 n = t.object->normal;
+            if (glm::dot(n, t.object_dir) > 0.0) n = -n;
+            const glm::dvec3 rd = glm::reflect(t.object_dir, n);
+            glm::dvec3 start = t.object_point + 1e-6 * n;
+            start.y = std::max(start.y, 0.0);
+            deepest = std::max(deepest, trace_levels(stack, scene, accel, objects, start, rd,
+                                                     scene_box, layers_box, level + 1, weight * r));
+        }
+    }
+    (void)accel;
+    return deepest;
+}
+
+}  // namespace
+
+Result<CompileReport> compile_scene(const CompileOptions& opt) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (opt.width < 1 || opt.height < 1 || opt.width > 20000 || opt.height > 20000)
+        return make_error("image size " + std::to_string(opt.width) + "x" +
+                          std::to_string(opt.height) + " must be 1 to 20000 pixels each way");
+    CompileReport rep;
+    rep.scene = opt.scene;
+    rep.name = scene_name(opt.scene);
+    rep.width = opt.width;
+    rep.height = opt.height;
+
+    ParseOptions po;
+    po.library_paths = opt.library_paths;
+    for (const auto& p : default_library_paths(opt.scene)) po.library_paths.push_back(p);
+    po.image_width = opt.width;
+    po.image_height = opt.height;
+    po.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    auto parsed = parse_scene_file(opt.scene, po);
+    if (!parsed) return parsed.error();
+    const Scene& scene = *parsed;
+    auto settings_r = read_atmosphere_settings(scene);
+    if (!settings_r) return settings_r.error();
+    AtmosphereSettings settings = *settings_r;
+    if (opt.tolerance_px) {
+        if (!(*opt.tolerance_px > 0.0))
+            return make_error("--tolerance " + shortest(*opt.tolerance_px) + ": must be > 0 pixels");
+        settings.tolerance_px = *opt.tolerance_px;
+    }
+    if (opt.layers) settings.layers = *opt.layers;
+    if (opt.layer_count) settings.layer_count = *opt.layer_count;
+    rep.tolerance_px = settings.tolerance_px;
+    rep.atmosphere = settings.declared ? settings.profile_label : "none declared";
+
+    const Camera& cam = scene.camera;
+    const double eye_y = cam.location.y;
+    if (!(eye_y > 0.0)) {
+        const std::string at = cam.loc.file.empty()
+                                   ? scene.file + ": "
+                                   : cam.loc.file + ":" + std::to_string(cam.loc.line) + ":" +
+                                         std::to_string(cam.loc.column) + ": ";
+        return make_error(at + "the camera is at y = " + shortest(eye_y) +
+                          ": it must be above the ground (y = 0) for an atmosphere over it");
+    }
+
+    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
+    auto accel_r = SceneAccel::build(scene);
+    if (!accel_r) return accel_r.error();
+    const SceneAccel& accel = *accel_r;
+    double extent = 0.0;
+    if (settings.extent) {
+        extent = *settings.extent;
+        rep.left_out.push_back("the atmosphere reaches " + sig(extent, 4) +
+                               " units from the camera (Mirage_Extent)");
+    } else {
+        const Aabb& b = accel.finite_bounds();
+        if (b.empty() || !b.finite()) {
+            if (settings.declared && !scene.skipped.empty())
+                return make_error(scene.skipped.front().loc.file + ":" +
+                                  std::to_string(scene.skipped.front().loc.line) + ":" +
+                                  std::to_string(scene.skipped.front().loc.column) + ": " +
+                                  scene.skipped.front().what +
+                                  " has no extent mirage can compute; declare Mirage_Extent");
+            if (settings.declared)
+                return make_error(scene.file +
+                                  ": the scene has no finite object to take the atmosphere's "
+                                  "extent from; declare Mirage_Extent (units from the camera)");
+        } else {
+            for (int i = 0; i < 4; ++i) {
+                const double x = (i & 1) ? b.hi.x : b.lo.x, z = (i & 2) ? b.hi.z : b.lo.z;
+                extent = std::max(extent, std::hypot(x - cam.location.x, z - cam.location.z));
+            }
+            extent *= 1.25;
+            if (!scene.skipped.empty())
+                rep.warnings.push_back("objects mirage does not know (" + scene.skipped.front().what +
+                                       ", ...) were left out of the extent; declare Mirage_Extent "
+                                       "if they lie farther away");
+        }
+    }
+    if (extent <= 0.0) extent = 100.0 * eye_y;
+    rep.extent = extent;
+    const HorizontalBox scene_box{cam.location.x - extent, cam.location.x + extent,
+                                  cam.location.z - extent, cam.location.z + extent};
+    const double layers_reach = kLayersExtentFactor * extent;
+    const HorizontalBox layers_box{cam.location.x - layers_reach, cam.location.x + layers_reach,
+                                   cam.location.z - layers_reach, cam.location.z + layers_reach};
+    rep.layers_extent = layers_reach;
+
+    // Every pixel centre's ray.
+    const int W = opt.width, H = opt.height;
+    std::vector<PixelRay> rays(static_cast<size_t>(W) * H);
+    for (int row = 0; row < H; ++row) {
+        for (int col = 0; col < W; ++col) {
+            PixelRay& r = rays[static_cast<size_t>(row) * W + col];
+            r.direction = camera_ray(cam, col + 0.5, row + 0.5, W, H).direction;
+            r.elevation = std::asin(std::clamp(r.direction.y, -1.0, 1.0));
+            const double hl = std::hypot(r.direction.x, r.direction.z);
+            r.exit_dz = hl > 0.0 ? distance_to_box_edge(scene_box, cam.location.x, cam.location.z,
+                                                        r.direction.x / hl, r.direction.z / hl)
+                                 : extent;
+            r.pixel_rad = angle_between(camera_ray(cam, col + 0.5, row, W, H).direction,
+                                        camera_ray(cam, col + 0.5, row + 1.0, W, H).direction);
+        }
+    }
+
+    const Profile profile = profile_in_scene_units(settings);
+    LayerStack stack;
+    stack.profile = profile;
+    stack.excess = {eta_sq_excess(profile, eye_y)};
+    rep.mode = settings.declared ? (settings.layers == LayerMode::Uniform ? "uniform" : "adaptive")
+                                 : "none";
+    // Errors of the homogeneous model: when no ray bends by the tolerance, no layers at all.
+    auto pixel_errors = [&](const LayerStack& s, std::vector<double>& err, int& max_cross) {
+        err.assign(rays.size(), 0.0);
+        max_cross = 0;
+        for (size_t i = 0; i < rays.size(); ++i) {
+            const PixelRay& r = rays[i];
+            const Trace3dOutcome t = trace_layers_3d(s, cam.location, r.direction, scene_box,
+                                                     layers_box, 100000);
+            BandOutcome b;
+            b.ground = t.ground;
+            const double hl = std::hypot(r.direction.x, r.direction.z);
+            b.dz = glm::length(glm::dvec2(t.scene_point.x - cam.location.x,
+                                          t.scene_point.z - cam.location.z));
+            if (!t.ground && hl > 0.0) b.dz = r.exit_dz;
+            b.y = t.scene_point.y;
+            const double sh = std::hypot(t.scene_dir.x, t.scene_dir.z);
+            b.slope = sh > 0.0 ? t.scene_dir.y / sh : 0.0;
+            b.sky = t.sky;
+            const double fh = std::hypot(t.final_dir.x, t.final_dir.z);
+            b.final_slope = fh > 0.0 ? t.final_dir.y / fh : 0.0;
+            const BandOutcome e = exact_outcome(profile, eye_y, r.elevation, r.exit_dz);
+            err[i] = t.cut_off ? kInf : outcome_error_rad(eye_y, e, b) / r.pixel_rad;
+            max_cross = std::max(max_cross, t.crossings);
+        }
+    };
+    std::vector<double> err;
+    int max_cross = 0;
+    if (settings.declared && profile.kind != ProfileKind::None) {
+        pixel_errors(stack, err, max_cross);
+        const double straight_max = *std::max_element(err.begin(), err.end());
+        if (straight_max <= settings.tolerance_px && settings.layers == LayerMode::Adaptive) {
+            rep.left_out.push_back("every layer: no camera ray bends by " +
+                                   sig(settings.tolerance_px, 3) + " px (largest bend " +
+                                   sig(straight_max, 3) + " px)");
+        } else if (settings.layers == LayerMode::Uniform) {
+            if (settings.layer_count < 1)
+                return make_error(scene.file + ": uniform layers need a count: --count N or "
+                                               "Mirage_Layer_Count");
+            // Over the heights the camera's rays reach inside the scene.
+            double top = eye_y;
+            for (const auto& r : rays) {
+                auto ex = make_exact_ray(profile, eye_y, M_PI / 2 - r.elevation);
+                if (!ex) continue;
+                top = std::max(top, height_at(*ex, std::min(r.exit_dz, ex->hits_ground ? ex->dz_ground : kInf)));
+            }
+            top = std::min(top, std::max(eye_y * 1.001, height_of_excess(profile,
+                                  eta_sq_excess(profile, kInf) * 0.99)));
+            stack = uniform_layers(profile, eye_y, settings.layer_count, top);
+            // Berger's layers do not care where the camera is; POV-Ray needs it off a boundary.
+            for (double& h : stack.heights)
+                if (std::fabs(h - eye_y) < 1e-9 * std::max(1.0, eye_y)) h += 1e-6 * std::max(1.0, eye_y);
+            rep.left_out.push_back("layers above y = " + sig(top, 4) +
+                                   ": no camera ray reaches higher inside the scene");
+        } else {
+            // Fit to the rays of the image's centre column, measure on every pixel.
+            std::vector<DesignRay> design;
+            const int col = W / 2;
+            for (int row = 0; row < H; ++row) {
+                const PixelRay& r = rays[static_cast<size_t>(row) * W + col];
+                design.push_back({r.elevation, r.exit_dz, r.pixel_rad, col, row});
+            }
+            FitSettings fs;
+            fs.tolerance_px = settings.tolerance_px;
+            fs.layers_extent_factor = kLayersExtentFactor;
+            // The budget of one pass through the layers: a camera ray may meet a reflective
+            // object and pass through them again; measured below and tightened if needed.
+            fs.max_crossings = kMaxLevel - 1;
+            ObjectQuery objects = [&](const glm::dvec3& o, const glm::dvec3& d, double t_max)
+                -> std::optional<ObjectHit> {
+                auto h = accel.closest_hit(o, d, 1e-6, t_max);
+                if (!h) return std::nullopt;
+                return ObjectHit{h->t, h->normal, h->primitive};
+            };
+            for (int attempt = 0; attempt < 12; ++attempt) {
+                FitResult f = fit_layers(profile, eye_y, design, fs);
+                rep.max_error_px_fitted = f.quality.max_error_px;
+                // The deepest trace level of any camera ray with its reflections.
+                int level = 0;
+                for (size_t i = 0; i < rays.size(); ++i)
+                    level = std::max(level, trace_levels(f.stack, scene, accel, objects,
+                                                         cam.location, rays[i].direction,
+                                                         scene_box, layers_box, 1, 1.0));
+                stack = f.stack;
+                rep.max_trace_level = level;
+                if (level <= kMaxLevel) break;
+                // Over the ceiling: fewer crossings per pass, in proportion.
+                const int per_pass = std::min(f.quality.max_crossings, fs.max_crossings);
+                fs.max_crossings = std::max(
+                    4, std::min(per_pass - 1, static_cast<int>(per_pass * double(kMaxLevel - 1) / level)));
+                rep.warnings.push_back("a camera ray with its reflections reached trace level " +
+                                       std::to_string(level) + "; refitted within " +
+                                       std::to_string(fs.max_crossings) + " crossings per pass");
+            }
+        }
+        pixel_errors(stack, err, max_cross);
+    } else {
+        err.assign(rays.size(), 0.0);
+        rep.left_out.push_back("every layer: the scene declares no atmosphere");
+    }
+    rep.max_crossings = max_cross;
+    rep.layers = stack.boundaries();
+    const int k_cam = stack.layer_at(eye_y);
+    rep.below_camera = k_cam;
+    rep.above_camera = stack.boundaries() - k_cam;
+    if (rep.layers > 0) {
+        rep.lowest = stack.heights.front();
+        rep.highest = stack.heights.back();
+        if (profile.kind == ProfileKind::Inferior)
+            rep.left_out.push_back("layers below y = " + sig(rep.lowest, 4) +
+                                   ": no camera ray turns lower");
+        rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
+                               ": the index is within 1% of eta(infinity), or no camera ray "
+                               "reaches higher");
+        rep.left_out.push_back("the layers' horizontal extent beyond " + sig(layers_reach, 4) +
+                               " units from the camera");
+    }
+    rep.pixels = static_cast<int>(err.size());
+    rep.p50_error_px = percentile(err, 0.50);
+    rep.p95_error_px = percentile(err, 0.95);
+    rep.p99_error_px = percentile(err, 0.99);
+    rep.max_error_px = err.empty() ? 0.0 : *std::max_element(err.begin(), err.end());
+    std::vector<RowExcess> rows(H);
+    for (int row = 0; row < H; ++row) {
+        rows[row].row = row;
+        for (int col = 0; col < W; ++col) {
+            const double e = err[static_cast<size_t>(row) * W + col];
+            rows[row].max_error_px = std::max(rows[row].max_error_px, e);
+            if (e > settings.tolerance_px) ++rows[row].pixels_over;
+        }
+        rep.pixels_over += rows[row].pixels_over;
+        if (rows[row].pixels_over > 0) rep.rows_over.push_back(rows[row]);
+    }
+    rep.within_tolerance = rep.pixels_over == 0;
+    if (rep.max_trace_level == 0 && rep.layers > 0) {
+        // Uniform designs: measure the trace levels too.
+        ObjectQuery objects = [&](const glm::dvec3& o, const glm::dvec3& d, double t_max)
+            -> std::optional<ObjectHit> {
+            auto h = accel.closest_hit(o, d, 1e-6, t_max);
+            if (!h) return std::nullopt;
+            return ObjectHit{h->t, h->normal, h->primitive};
+        };
+        for (size_t i = 0; i < rays.size(); ++i)
+            rep.max_trace_level = std::max(
+                rep.max_trace_level, trace_levels(stack, scene, accel, objects, cam.location,
+                                                  rays[i].direction, scene_box, layers_box, 1, 1.0));
+        if (rep.max_trace_level > kMaxLevel)
+            rep.warnings.push_back("some camera rays reach POV-Ray's trace-level ceiling with these "
+                                   "layers: they will render black");
+    }
+
+    // Outputs, each to a temporary name first.
+    const fs::path dir = opt.out_dir.empty() ? fs::path("build/render") / rep.name : fs::path(opt.out_dir);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) return make_error(dir.string() + ": cannot create: " + ec.message());
+    const fs::path abs_dir = fs::absolute(dir);
+    rep.include_path = (abs_dir / "mirage_layers.inc").string();
+    rep.csv_path = (abs_dir / "layers.csv").string();
+    rep.ini_path = (abs_dir / (rep.name + ".ini")).string();
+    rep.report_path = (abs_dir / "report.json").string();
+    rep.image_path = opt.image.empty() ? (abs_dir.parent_path() / (rep.name + ".png")).string()
+                                       : fs::absolute(opt.image).string();
+    const std::string scene_abs = fs::absolute(opt.scene).string();
+    if (fs::equivalent(scene_abs, rep.include_path, ec) || fs::equivalent(scene_abs, rep.ini_path, ec))
+        return make_error(opt.scene + ": the outputs would overwrite the template");
+
+    LayerEmitSettings es;
+    es.camera_y = eye_y;
+    es.extent = layers_box;
+    es.header = {"mirage_layers.inc: the banded atmosphere of " + rep.name + " at " +
+                     std::to_string(W) + "x" + std::to_string(H) + ", written by mirage compile.",
+                 "Atmosphere: " + rep.atmosphere + "; " + rep.mode + " layers.",
+                 "Error over the " + std::to_string(rep.pixels) + " pixel centres: p50 " +
+                     sig(rep.p50_error_px, 3) + " px, p95 " + sig(rep.p95_error_px, 3) +
+                     " px, max " + sig(rep.max_error_px, 3) + " px (tolerance " +
+                     sig(rep.tolerance_px, 3) + " px).",
+                 "Do not edit: run mirage compile again."};
+    IniSettings ini;
+    ini.scene = scene_abs;
+    ini.output_image = rep.image_path;
+    ini.width = W;
+    ini.height = H;
+    ini.library_paths.push_back(abs_dir.string());
+    for (const auto& p : po.library_paths) ini.library_paths.push_back(fs::absolute(p).string());
+    ini.antialias = opt.antialias;
+    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::pair<std::string, std::string> files[] = {
+        {rep.include_path, layers_include(stack, es)},
+        {rep.csv_path, layers_csv(stack, eye_y)},
+        {rep.ini_path, render_ini(ini)},
+        {rep.report_path, report_json(rep)},
+    };
+    for (const auto& [path, text] : files)
+        if (auto s = write_file_atomic(path, text); !s) return s.error();
+    return rep;
+}
+
+std::string report_json(const CompileReport& r) {
+    nlohmann::json j;
+    j["scene"] = r.scene;
+    j["width"] = r.width;
+    j["height"] = r.height;
+    j["atmosphere"] = r.atmosphere;
+    j["mode"] = r.mode;
+    j["tolerance_px"] = r.tolerance_px;
+    j["layers"] = r.layers;
+    j["layers_below_camera"] = r.below_camera;
+    j["layers_above_camera"] = r.above_camera;
+    j["p50_error_px"] = r.p50_error_px;
+    j["p95_error_px"] = r.p95_error_px;
+    j["p99_error_px"] = r.p99_error_px;
+    j["max_error_px"] = std::isfinite(r.max_error_px) ? nlohmann::json(r.max_error_px) : nlohmann::json("inf");
+    j["max_error_px_fitted_column"] = r.max_error_px_fitted;
+    j["pixels"] = r.pixels;
+    j["pixels_over_tolerance"] = r.pixels_over;
+    j["within_tolerance"] = r.within_tolerance;
+    j["max_crossings"] = r.max_crossings;
+    j["max_trace_level"] = r.max_trace_level;
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& row : r.rows_over)
+        rows.push_back({{"row", row.row},
+                        {"max_error_px", std::isfinite(row.max_error_px) ? nlohmann::json(row.max_error_px)
+                                                                         : nlohmann::json("inf")},
+                        {"pixels_over", row.pixels_over}});
+    j["rows_over_tolerance"] = rows;
+    j["left_out"] = r.left_out;
+    j["warnings"] = r.warnings;
+    j["extent"] = r.extent;
+    j["layers_extent"] = r.layers_extent;
+    j["seconds"] = r.seconds;
+    j["include"] = r.include_path;
+    j["ini"] = r.ini_path;
+    j["csv"] = r.csv_path;
+    j["image"] = r.image_path;
+    return j.dump(2) + "\n";
+}
+
+std::string report_text(const CompileReport& r) {
+    std::ostringstream s;
+    s << r.name << " at " << r.width << "x" << r.height << ": " << r.atmosphere << ", " << r.mode
+      << " layers\n";
+    s << "  layers      " << r.layers << " boundaries (" << r.below_camera << " below the camera, "
+      << r.above_camera << " above)";
+    if (r.layers > 0) s << " from y = " << sig(r.lowest, 6) << " to " << sig(r.highest, 6);
+    s << "\n";
+    s << "  error       p50 " << sig(r.p50_error_px, 3) << " px, p95 " << sig(r.p95_error_px, 3)
+      << " px, max " << sig(r.max_error_px, 3) << " px over " << r.pixels
+      << " pixel centres (tolerance " << sig(r.tolerance_px, 3) << " px)\n";
+    if (!r.rows_over.empty()) {
+        s << "  over        " << r.pixels_over << " pixels in " << r.rows_over.size()
+          << " rows exceed the tolerance; worst rows:";
+        auto rows = r.rows_over;
+        std::sort(rows.begin(), rows.end(),
+                  [](const RowExcess& a, const RowExcess& b) { return a.max_error_px > b.max_error_px; });
+        for (size_t i = 0; i < std::min<size_t>(5, rows.size()); ++i)
+            s << " row " << rows[i].row << " (" << sig(rows[i].max_error_px, 3) << " px, "
+              << rows[i].pixels_over << " px over)" << (i + 1 < std::min<size_t>(5, rows.size()) ? "," : "");
+        s << "\n";
+    }
+    s << "  budget      " << r.max_crossings << " boundary crossings per camera ray, trace level "
+      << r.max_trace_level << " of 256 with reflections\n";
+    for (const auto& l : r.left_out) s << "  left out    " << l << "\n";
+    for (const auto& w : r.warnings) s << "  warning     " << w << "\n";
+    s << "  wrote       " << r.include_path << "\n              " << r.ini_path
+      << "\n              " << r.csv_path << "\n";
+    s << "  time        " << sig(r.seconds, 3) << " s\n";
+    return s.str();
+}
+
+}  // namespace mirage

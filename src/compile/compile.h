@@ -1,0 +1,69 @@
+// `mirage compile`: a .pov template becomes a POV-Ray scene with a banded refraction
+// medium.  Reads the scene (camera, atmosphere, objects for the extent), fits horizontal
+// layers to the camera's rays at the render's size, measures every pixel centre's error with
+// an independent band tracer, keeps the trace-level budget of every camera ray and its
+// reflections, and writes the layers include, the .ini and the layer table.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compile/atmosphere_settings.h"
+#include "util/result.h"
+
+namespace mirage {
+
+struct CompileOptions {
+    std::string scene;                      // the template
+    int width = 320, height = 240;          // the render's size
+    std::string out_dir;                    // where the include, .ini and CSV go
+    std::string image;                      // the image the .ini renders to (default: out_dir/<scene>.png)
+    std::optional<double> tolerance_px;     // overrides Mirage_Tolerance
+    std::optional<LayerMode> layers;        // overrides Mirage_Layers
+    std::optional<int> layer_count;         // overrides Mirage_Layer_Count
+    bool antialias = false;
+    std::vector<std::string> library_paths;  // extra include directories, searched first
+};
+
+/// A camera row whose worst pixel exceeds the tolerance.
+struct RowExcess {
+    int row = 0;
+    double max_error_px = 0.0;
+    int pixels_over = 0;
+};
+
+struct CompileReport {
+    std::string scene, name;
+    int width = 0, height = 0;
+    std::string atmosphere;      // what the scene declares
+    std::string mode;            // "adaptive", "uniform" or "none"
+    double tolerance_px = 0.0;
+    int layers = 0;              // boundaries emitted
+    int below_camera = 0, above_camera = 0;
+    double p50_error_px = 0.0, p95_error_px = 0.0, p99_error_px = 0.0, max_error_px = 0.0;
+    double max_error_px_fitted = 0.0;  // over the column the design was fitted to
+    int pixels = 0, pixels_over = 0;
+    int max_crossings = 0;       // boundary events of a camera ray in the layers
+    int max_trace_level = 0;     // with its reflections, as POV-Ray counts levels
+    bool within_tolerance = false;
+    std::vector<RowExcess> rows_over;
+    std::vector<std::string> left_out;  // what the design leaves out, and why
+    std::vector<std::string> warnings;
+    double extent = 0.0;         // horizontal reach of the scene from the camera
+    double layers_extent = 0.0;  // horizontal reach of the layers
+    double lowest = 0.0, highest = 0.0;  // of the boundaries
+    double seconds = 0.0;
+    std::string include_path, ini_path, csv_path, image_path, report_path;
+};
+
+/// Compiles the scene; on success every output was written (atomically), on failure none
+/// was changed and the message names the place at fault.
+Result<CompileReport> compile_scene(const CompileOptions& options);
+
+/// The report as JSON (keys layers, max_error_px, p95_error_px, max_crossings, seconds and
+/// the rest) and as text for people.
+std::string report_json(const CompileReport& report);
+std::string report_text(const CompileReport& report);
+
+}  // namespace mirage
