@@ -85,7 +85,7 @@ void SceneParser::set_texture(ObjectNode& node, Texture texture, const Token& at
 Texture SceneParser::parse_texture_body(const Token& kw) {
     Texture tex = default_texture_;
     if (const Value* v = peek_identifier_value(0); v && std::holds_alternative<Texture>(v->data)) {
-        tex = std::get<Texture>(identifier_value(next()).data);
+        tex = identifier_as<Texture>(next(), "a texture");
     }
     while (true) {
         const Token t = peek(0);
@@ -93,11 +93,11 @@ Texture SceneParser::parse_texture_body(const Token& kw) {
         // A pigment or finish identifier alone stands for pigment { Ident } (POV-Ray allows it).
         if (const Value* v = peek_identifier_value(0)) {
             if (std::holds_alternative<Pigment>(v->data)) {
-                tex.pigment = std::get<Pigment>(identifier_value(next()).data);
+                tex.pigment = identifier_as<Pigment>(next(), "a pigment");
                 continue;
             }
             if (std::holds_alternative<Finish>(v->data)) {
-                tex.finish = std::get<Finish>(identifier_value(next()).data);
+                tex.finish = identifier_as<Finish>(next(), "a finish");
                 continue;
             }
         }
@@ -149,7 +149,7 @@ Texture SceneParser::parse_texture_body(const Token& kw) {
 // modifiers; it changes the pigment it is given, keeping what is not mentioned.
 void SceneParser::parse_pigment_body(Pigment& p, const Token& kw) {
     if (const Value* v = peek_identifier_value(0); v && std::holds_alternative<Pigment>(v->data)) {
-        p = std::get<Pigment>(identifier_value(next()).data);
+        p = identifier_as<Pigment>(next(), "a pigment");
     }
     const Token t = peek(0);
     if (starts_colour(t)) {
@@ -234,7 +234,7 @@ void SceneParser::parse_pigment_body(Pigment& p, const Token& kw) {
 void SceneParser::parse_finish_block(Finish& f, const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0); v && std::holds_alternative<Finish>(v->data)) {
-        f = std::get<Finish>(identifier_value(next()).data);
+        f = identifier_as<Finish>(next(), "a finish");
     }
     bool diffuse_albedo = false, phong_albedo = false, specular_albedo = false;
     while (true) {
@@ -334,7 +334,7 @@ std::vector<ColourMapEntry> SceneParser::parse_colour_map(const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
         v && std::holds_alternative<ColourMapValue>(v->data)) {
-        auto entries = std::get<ColourMapValue>(identifier_value(next()).data).entries;
+        auto entries = identifier_as<ColourMapValue>(next(), "a color_map").entries;
         expect_close_brace(kw);
         return entries;
     }

@@ -178,7 +178,7 @@ static bool starts_with_object_identifier(const Value* v) {
 ObjectNode SceneParser::parse_shape(const Token& kw) {
     expect_open_brace(kw);
     if (starts_with_object_identifier(peek_identifier_value(0))) {
-        ObjectNode copy = std::get<ObjectNode>(identifier_value(next()).data);
+        ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
         parse_object_modifiers(copy, kw);
         return copy;
     }
@@ -250,7 +250,7 @@ ObjectNode SceneParser::parse_union(const Token& kw) {
         // `union { Obj translate x }` is Obj moved; `union { A B }` is a union of two.
         const Value* next_value = peek_identifier_value(1);
         if (!starts_with_object_identifier(next_value) && !starts_object(peek(1))) {
-            ObjectNode copy = std::get<ObjectNode>(identifier_value(next()).data);
+            ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
             parse_object_modifiers(copy, kw);
             return copy;
         }
@@ -283,7 +283,7 @@ ObjectNode SceneParser::parse_object_statement(const Token& kw) {
 ObjectNode SceneParser::parse_light_source(const Token& kw) {
     expect_open_brace(kw);
     if (starts_with_object_identifier(peek_identifier_value(0))) {
-        ObjectNode copy = std::get<ObjectNode>(identifier_value(next()).data);
+        ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
         parse_object_modifiers(copy, kw);
         return copy;
     }
@@ -433,7 +433,7 @@ Transform SceneParser::parse_transform_block(const Token& kw) {
     // `transform Ident` (the old syntax) or `transform { ... }`.
     if (const Value* v = peek_identifier_value(0);
         v && std::holds_alternative<Transform>(v->data)) {
-        return std::get<Transform>(identifier_value(next()).data);
+        return identifier_as<Transform>(next(), "a transform");
     }
     expect_open_brace(kw);
     Transform t;
@@ -448,7 +448,7 @@ Transform SceneParser::parse_transform_block(const Token& kw) {
         }
         if (const Value* v = peek_identifier_value(0);
             v && std::holds_alternative<Transform>(v->data)) {
-            t = compose_transforms(t, std::get<Transform>(identifier_value(next()).data));
+            t = compose_transforms(t, identifier_as<Transform>(next(), "a transform"));
             continue;
         }
         Transform item;
@@ -496,7 +496,7 @@ CameraState SceneParser::parse_camera(const Token& kw) {
     if (const Value* v = peek_identifier_value(0);
         v && std::holds_alternative<CameraState>(v->data)) {
         // `camera { Ident ... }`: POV-Ray 3.5+ allows only transforms after the identifier.
-        base = std::get<CameraState>(identifier_value(next()).data);
+        base = identifier_as<CameraState>(next(), "a camera");
         CameraModifiers mods;
         Transform tr;
         while (parse_transform_item(tr)) mods.transform = compose_transforms(mods.transform, tr);

@@ -190,7 +190,7 @@ SkySphere SceneParser::parse_sky_sphere_value(const Token& kw) {
     sky.loc = kw.loc();
     if (const Value* v = peek_identifier_value(0);
         v && std::holds_alternative<SkySphere>(v->data)) {
-        sky = std::get<SkySphere>(identifier_value(next()).data);
+        sky = identifier_as<SkySphere>(next(), "a sky_sphere");
     }
     while (true) {
         const Token t = peek(0);
@@ -343,6 +343,9 @@ Result<Scene> parse_scene_text(std::string_view text, const std::string& name,
         return parser.parse(file);
     } catch (const scene_detail::ParseFailure& failure) {
         return make_error(failure.message);
+    } catch (const std::exception& e) {
+        // Not expected (the parser reports its own errors); still no exception leaves here.
+        return make_error(name + ": internal error while parsing: " + e.what());
     }
 }
 

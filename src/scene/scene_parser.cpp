@@ -269,8 +269,14 @@ void SceneParser::run_deferred(std::size_t at) {
         handle_directive(t);
     } else {
         t.deferred_macro = false;
-        auto macro = std::get<std::shared_ptr<const MacroDef>>(t.symbol->value.data);
-        invoke_macro(t, macro);
+        // The name may have been redeclared meanwhile; then it is an identifier like others.
+        auto* macro = std::get_if<std::shared_ptr<const MacroDef>>(&t.symbol->value.data);
+        if (macro) {
+            auto def = *macro;
+            invoke_macro(t, def);
+        } else {
+            lookahead_.push_back(t);
+        }
     }
     for (Token& x : lookahead_) saved.push_back(std::move(x));
     lookahead_.swap(saved);

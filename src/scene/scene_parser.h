@@ -229,6 +229,14 @@ class SceneParser {
     Value parse_unsupported_value(const Token& keyword);
     const Value* peek_identifier_value(std::size_t ahead = 0);
     Value identifier_value(const Token& name);
+    /// The value of the identifier `name` (just read) as a T; an error naming `expected`
+    /// otherwise (an array element may differ from the element the dispatch looked at).
+    template <class T>
+    T identifier_as(const Token& name, const char* expected) {
+        Value v = identifier_value(name);
+        if (auto* x = std::get_if<T>(&v.data)) return std::move(*x);
+        fail(name, std::string("expected ") + expected + ", got " + value_type_name(v));
+    }
     std::shared_ptr<Value>& index_array(ArrayValue& array, const Token& name);
     // Whether '[' follows (an array index).  The look never runs a directive: POV-Ray peeks
     // at the characters after an array name.

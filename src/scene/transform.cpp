@@ -72,8 +72,9 @@ Transform make_axis_rotation(const glm::dvec3& axis, double degrees) {
 Transform make_matrix_transform(const std::array<double, 12>& m) {
     Transform t;
     // POV-Ray's row i is our column i.
-    for (int i = 0; i < 4; ++i) {
-        t.matrix[i] = glm::dvec4(m[3 * i], m[3 * i + 1], m[3 * i + 2], i == 3 ? 1.0 : 0.0);
+    for (std::size_t i = 0; i < 4; ++i) {
+        t.matrix[static_cast<int>(i)] =
+            glm::dvec4(m[3 * i], m[3 * i + 1], m[3 * i + 2], i == 3 ? 1.0 : 0.0);
     }
     t.inverse = glm::inverse(t.matrix);
     return t;

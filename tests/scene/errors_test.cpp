@@ -173,6 +173,21 @@ TEST(Errors, ReservedWordsCannotBeDeclared) {
               "         ^");
 }
 
+TEST(Errors, AnArrayElementOfTheWrongKind) {
+    EXPECT_EQ(parse_error("#declare A = array[2] { sphere { 0, 1 }, 5 }\nobject { A[1] }"),
+              "scene.pov:2:10: expected an object, got float\n"
+              "object { A[1] }\n"
+              "         ^");
+}
+
+TEST(Errors, AMacroNameRedeclaredBeforeItsCallRuns) {
+    // The look for ';' after the string defers the call; by then M is a string.
+    EXPECT_NE(parse_error("#macro M() 1 #end\n#declare M = \"s\" M sphere { 0, 1 }")
+                  .find("expected an object, camera, light_source or directive, got string "
+                        "identifier 'M'"),
+              std::string::npos);
+}
+
 TEST(Errors, MissingFileIsReportedWithItsPath) {
     auto r = parse_scene_file(data_dir() + "/no_such_scene.pov", ParseOptions{});
     ASSERT_FALSE(r.ok());
