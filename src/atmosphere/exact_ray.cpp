@@ -333,6 +333,19 @@ double distance_to_height(const ExactRay& r, double y) {
                               : std::log(F + disc) - std::log(2.0 * a);
         return x / r.c;
     }
+    if (r.s < 0 && r.k2 > 0.0 && r.c > 0.0) {
+        // Superior, trapped: cos(x - sg theta) = exp(alpha (y - y_M) / 2), before the apex
+        // going up and after it going down.
+        const double a = std::acos(std::min(1.0, std::exp(0.5 * r.profile.alpha * (y - r.y_turn))));
+        return (r.sg > 0 ? r.theta - a : a - r.theta) / r.c;
+    }
+    if (r.s < 0 && r.k2 < 0.0 && r.c > 0.0) {
+        // Superior, escaping: sigma exp(alpha y / 2) = sinh(A + sg x).
+        const double sigma = r.q;
+        const double A = std::asinh(sigma / r.E);
+        const double g = std::asinh(sigma * std::exp(0.5 * r.profile.alpha * y));
+        return r.sg * (g - A) / r.c;
+    }
     double lo = 0.0, hi = end;
     if (!std::isfinite(hi)) {
         hi = 1.0;

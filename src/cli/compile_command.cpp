@@ -37,6 +37,11 @@ void setup_compile_command(CLI::App& app) {
     auto* count = sub->add_option("--count", o->count, "number of uniform layers");
     sub->add_option("-L,--library-path", o->compile.library_paths, "extra include directory (searched first)");
     sub->add_flag("--antialias", o->compile.antialias, "antialias the render (+A0.3)");
+    sub->add_option("--layout", o->compile.layout,
+                    "nested (planes), gaps (slabs with gaps: double-precision refraction for "
+                    "real air) or auto")
+        ->check(CLI::IsMember({"auto", "nested", "gaps"}))
+        ->capture_default_str();
     sub->add_flag("--json", o->json, "print the report as JSON");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     sub->callback([o, tol, layers, count] {

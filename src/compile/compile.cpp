@@ -68,13 +68,14 @@ double percentile(std::vector<double> v, double q) {
 // The largest trace level POV-Ray reaches for one camera ray: one level per boundary event
 // in the layers and per reflection off an object, following every reflection whose weight
 // stays above POV-Ray's adc_bailout.
-int trace_levels(const LayerStack& stack, const Scene& scene, const SceneAccel& accel,
-                 const ObjectQuery& objects, const glm::dvec3& origin, const glm::dvec3& dir,
+int trace_levels(const LayerStack& stack, const Scene& scene, const ObjectQuery& objects,
+                 double camera_y, const glm::dvec3& origin, const glm::dvec3& dir,
                  const HorizontalBox& scene_box, const HorizontalBox& layers_box, int level,
                  double weight) {
     // Followed past the ceiling (to 4 times it) so that a design over it knows by how much.
     const Trace3dOutcome t =
-        trace_layers_3d(stack, origin, dir, scene_box, layers_box, 4 * kMaxLevel, &objects);
+        trace_layers_3d(stack, origin, dir, scene_box, layers_box,
+                        Trace3dOptions{4 * kMaxLevel, &objects, camera_y});
     level += t.crossings;
     if (t.cut_off) return std::max(level, 4 * kMaxLevel);
     int deepest = level;
@@ -88,12 +89,37 @@ int trace_levels(const LayerStack& stack, const Scene& scene, const SceneAccel& 
             const glm::dvec3 rd = glm::reflect(t.object_dir, n);
             glm::dvec3 start = t.object_point + 1e-6 * n;
             start.y = std::max(start.y, 0.0);
-            deepest = std::max(deepest, trace_levels(stack, scene, accel, objects, start, rd,
+            deepest = std::max(deepest, trace_levels(stack, scene, objects, camera_y, start, rd,
                                                      scene_box, layers_box, level + 1, weight * r));
         }
     }
-    (void)accel;
     return deepest;
+}
+
+// Objects met along a straight piece of a band path.  Most pieces lie far from every finite
+// object: a slab test against their common bounds spares the full query, leaving only the
+// unbounded ones (planes) to test.
+ObjectQuery object_query(const SceneAccel& accel) {
+    return [&accel](const glm::dvec3& o, const glm::dvec3& d,
+                    double t_max) -> std::optional<ObjectHit> {
+        const Aabb& b = accel.finite_bounds();
+        const bool near_finite = !b.empty() && slab_test(b, SlabRay(o, d), 1e-6, t_max);
+        if (near_finite) {
+            auto h = accel.closest_hit(o, d, 1e-6, t_max);
+            if (!h) return std::nullopt;
+            return ObjectHit{h->t, h->normal, h->primitive};
+        }
+        std::optional<ObjectHit> best;
+        for (int i : accel.unbounded()) {
+            ShapeHit sh;
+            const double reach = best ? best->t : t_max;
+            if (intersect_shape(accel.shape(i), o, d, 1e-6, reach, sh)) {
+                const glm::dvec3 p = o + sh.t * d;
+                best = ObjectHit{sh.t, shape_normal(accel.shape(i), p, sh.part), i};
+            }
+        }
+        return best;
+    };
 }
 
 }  // namespace
@@ -203,6 +229,24 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     }
 
     const Profile profile = profile_in_scene_units(settings);
+    // The layout: nested planes, or slabs with gaps where the index steps are so small that
+    // POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
+    bool gaps = false;
+    if (opt.layout == "gaps") {
+        gaps = true;
+    } else if (opt.layout == "auto") {
+        gaps = std::fabs(eta_infinity(profile) - profile.eta0) < 1e-3 * profile.eta0;
+    } else if (opt.layout != "nested") {
+        return make_error("--layout " + opt.layout + ": expected nested, gaps or auto");
+    }
+    rep.layout = gaps ? "gaps" : "nested";
+    // Gaps thick enough that POV-Ray sees both of their faces along the steepest camera ray
+    // (it ignores hits closer than MIN_ISECT_DEPTH = 1e-4 units to a ray's origin).
+    double max_sin = 0.0;
+    for (const auto& r : rays) max_sin = std::max(max_sin, std::fabs(r.direction.y));
+    const double gap = std::max(1.5e-4 * max_sin, 1e-7 * eye_y);
+    rep.gap = gaps ? gap : 0.0;
+    auto as_rendered = [&](const LayerStack& s) { return gaps ? with_gaps(s, eye_y, gap) : s; };
     LayerStack stack;
     stack.profile = profile;
     stack.excess = {eta_sq_excess(profile, eye_y)};
@@ -214,8 +258,10 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         max_cross = 0;
         for (size_t i = 0; i < rays.size(); ++i) {
             const PixelRay& r = rays[i];
-            const Trace3dOutcome t = trace_layers_3d(s, cam.location, r.direction, scene_box,
-                                                     layers_box, 100000);
+            Trace3dOptions to;
+            to.camera_y = eye_y;
+            const Trace3dOutcome t =
+                trace_layers_3d(s, cam.location, r.direction, scene_box, layers_box, to);
             BandOutcome b;
             b.ground = t.ground;
             const double hl = std::hypot(r.direction.x, r.direction.z);
@@ -274,35 +320,35 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             fs.layers_extent_factor = kLayersExtentFactor;
             // The budget of one pass through the layers: a camera ray may meet a reflective
             // object and pass through them again; measured below and tightened if needed.
-            fs.max_crossings = kMaxLevel - 1;
-            ObjectQuery objects = [&](const glm::dvec3& o, const glm::dvec3& d, double t_max)
-                -> std::optional<ObjectHit> {
-                auto h = accel.closest_hit(o, d, 1e-6, t_max);
-                if (!h) return std::nullopt;
-                return ObjectHit{h->t, h->normal, h->primitive};
-            };
+            fs.max_crossings = gaps ? (kMaxLevel - 1) / 2 : kMaxLevel - 1;
+            // POV-Ray ignores a hit closer than 1e-4 units to a ray's origin: along the
+            // steepest ray, every layer (and gap) must be thicker than that.
+            fs.min_thickness = gaps ? 3.0 * gap : 1.5e-4 * max_sin;
+            const ObjectQuery objects = object_query(accel);
             for (int attempt = 0; attempt < 12; ++attempt) {
                 FitResult f = fit_layers(profile, eye_y, design, fs);
                 rep.max_error_px_fitted = f.quality.max_error_px;
                 // The deepest trace level of any camera ray with its reflections.
                 int level = 0;
+                const LayerStack rendered = as_rendered(f.stack);
                 for (size_t i = 0; i < rays.size(); ++i)
-                    level = std::max(level, trace_levels(f.stack, scene, accel, objects,
+                    level = std::max(level, trace_levels(rendered, scene, objects, eye_y,
                                                          cam.location, rays[i].direction,
                                                          scene_box, layers_box, 1, 1.0));
                 stack = f.stack;
                 rep.max_trace_level = level;
                 if (level <= kMaxLevel) break;
                 // Over the ceiling: fewer crossings per pass, in proportion.
-                const int per_pass = std::min(f.quality.max_crossings, fs.max_crossings);
+                const int per_pass = std::min(f.quality.max_crossings, fs.max_crossings) * (gaps ? 2 : 1);
                 fs.max_crossings = std::max(
-                    4, std::min(per_pass - 1, static_cast<int>(per_pass * double(kMaxLevel - 1) / level)));
+                    4, std::min(per_pass - 1, static_cast<int>(per_pass * double(kMaxLevel - 1) / level)) /
+                           (gaps ? 2 : 1));
                 rep.warnings.push_back("a camera ray with its reflections reached trace level " +
                                        std::to_string(level) + "; refitted within " +
                                        std::to_string(fs.max_crossings) + " crossings per pass");
             }
         }
-        pixel_errors(stack, err, max_cross);
+        pixel_errors(as_rendered(stack), err, max_cross);
     } else {
         err.assign(rays.size(), 0.0);
         rep.left_out.push_back("every layer: the scene declares no atmosphere");
@@ -343,15 +389,11 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.within_tolerance = rep.pixels_over == 0;
     if (rep.max_trace_level == 0 && rep.layers > 0) {
         // Uniform designs: measure the trace levels too.
-        ObjectQuery objects = [&](const glm::dvec3& o, const glm::dvec3& d, double t_max)
-            -> std::optional<ObjectHit> {
-            auto h = accel.closest_hit(o, d, 1e-6, t_max);
-            if (!h) return std::nullopt;
-            return ObjectHit{h->t, h->normal, h->primitive};
-        };
+        const ObjectQuery objects = object_query(accel);
+        const LayerStack rendered = as_rendered(stack);
         for (size_t i = 0; i < rays.size(); ++i)
             rep.max_trace_level = std::max(
-                rep.max_trace_level, trace_levels(stack, scene, accel, objects, cam.location,
+                rep.max_trace_level, trace_levels(rendered, scene, objects, eye_y, cam.location,
                                                   rays[i].direction, scene_box, layers_box, 1, 1.0));
         if (rep.max_trace_level > kMaxLevel)
             rep.warnings.push_back("some camera rays reach POV-Ray's trace-level ceiling with these "
@@ -377,6 +419,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     LayerEmitSettings es;
     es.camera_y = eye_y;
     es.extent = layers_box;
+    es.layout = gaps ? LayerLayout::Gaps : LayerLayout::Nested;
+    es.gap = gap;
     es.header = {"mirage_layers.inc: the banded atmosphere of " + rep.name + " at " +
                      std::to_string(W) + "x" + std::to_string(H) + ", written by mirage compile.",
                  "Atmosphere: " + rep.atmosphere + "; " + rep.mode + " layers.",
@@ -412,6 +456,8 @@ std::string report_json(const CompileReport& r) {
     j["height"] = r.height;
     j["atmosphere"] = r.atmosphere;
     j["mode"] = r.mode;
+    j["layout"] = r.layout;
+    j["gap"] = r.gap;
     j["tolerance_px"] = r.tolerance_px;
     j["layers"] = r.layers;
     j["layers_below_camera"] = r.below_camera;
@@ -448,7 +494,9 @@ std::string report_json(const CompileReport& r) {
 std::string report_text(const CompileReport& r) {
     std::ostringstream s;
     s << r.name << " at " << r.width << "x" << r.height << ": " << r.atmosphere << ", " << r.mode
-      << " layers\n";
+      << " layers, " << r.layout << " layout";
+    if (r.layout == "gaps") s << " (gaps of " << sig(r.gap, 3) << " units)";
+    s << "\n";
     s << "  layers      " << r.layers << " boundaries (" << r.below_camera << " below the camera, "
       << r.above_camera << " above)";
     if (r.layers > 0) s << " from y = " << sig(r.lowest, 6) << " to " << sig(r.highest, 6);

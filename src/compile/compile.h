@@ -24,6 +24,7 @@ struct CompileOptions {
     std::optional<int> layer_count;         // overrides Mirage_Layer_Count
     bool antialias = false;
     std::vector<std::string> library_paths;  // extra include directories, searched first
+    std::string layout = "auto";            // "nested", "gaps" or "auto" (by index contrast)
 };
 
 /// A camera row whose worst pixel exceeds the tolerance.
@@ -38,6 +39,8 @@ struct CompileReport {
     int width = 0, height = 0;
     std::string atmosphere;      // what the scene declares
     std::string mode;            // "adaptive", "uniform" or "none"
+    std::string layout;          // "nested" or "gaps"
+    double gap = 0.0;            // gap thickness of the gap layout
     double tolerance_px = 0.0;
     int layers = 0;              // boundaries emitted
     int below_camera = 0, above_camera = 0;

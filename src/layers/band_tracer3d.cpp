@@ -23,20 +23,43 @@ double distance_to_box_edge(const HorizontalBox& b, double x, double z, double h
     return std::max(t, 0.0);
 }
 
+int pov_camera_layer(const LayerStack& s, double y, double camera_y) {
+    return s.layer_at(std::isnan(camera_y) ? y : camera_y);
+}
+
+float pov_ior(const LayerStack& s, int k_cam, int k) {
+    return static_cast<float>(s.index(k) / s.index(k_cam));
+}
+
+double pov_ior_ratio(const LayerStack& s, int k_cam, int from, int to) {
+    // Entering from the atmosphere (the camera's layer, a gap) or leaving into it, POV-Ray
+    // divides its double atmosphere index by the float ior (or the float by it); between
+    // two layers it divides one float ior by the other, in single precision (trace.cpp,
+    // ComputeRefraction).
+    auto air = [&](int k) { return k == k_cam || (!s.air.empty() && s.air[k]); };
+    if (air(from) && air(to)) return 1.0;
+    if (air(from)) return 1.0 / static_cast<double>(pov_ior(s, k_cam, to));
+    if (air(to)) return static_cast<double>(pov_ior(s, k_cam, from));
+    const float a = pov_ior(s, k_cam, from), b = pov_ior(s, k_cam, to);
+    return static_cast<double>(a / b);
+}
+
 Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
                                const glm::dvec3& dir_in, const HorizontalBox& scene,
-                               const HorizontalBox& layers, int max_events,
-                               const ObjectQuery* objects) {
+                               const HorizontalBox& layers, const Trace3dOptions& opt) {
+    const int max_events = opt.max_events;
+    const ObjectQuery* objects = opt.objects;
+    const double camera_y = opt.camera_y;
     MIRAGE_CHECK(origin.y >= 0.0);
-    // The indices POV-Ray gets: each layer's index divided by the camera layer's.
-    const int k0 = s.layer_at(origin.y);
-    const double n_cam = s.index(k0);
-    auto rel_index = [&](int k) { return s.index(k) / n_cam; };
+    // The indices POV-Ray gets: each layer's index divided by the camera layer's, held as
+    // single-precision floats (POV-Ray 3.7's Interior::IOR is SNGL); the camera's layer is
+    // outside every plane, POV-Ray's atmosphere of index 1.
+    const int k_cam = pov_camera_layer(s, origin.y, camera_y);
 
     Trace3dOutcome out;
     glm::dvec3 p = origin;
     glm::dvec3 d = glm::normalize(dir_in);
-    int k = k0;
+    int k = s.layer_at(origin.y);
     bool in_scene = true;
     const int top = s.boundaries();
     for (int events = 0;; ++events) {
@@ -94,9 +117,15 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
             }
             return out;
         }
+        // Snell's law at the horizontal boundary, with POV-Ray's ratio eta = n_from / n_to.
+        // POV-Ray passes a boundary of ratio 1 without refracting or spending a trace level.
+        const double eta = opt.pov_precision ? pov_ior_ratio(s, k_cam, k, next)
+                                             : s.index(k) / s.index(next);
+        if (std::fabs(eta - 1.0) < 1e-10) {
+            k = next;
+            continue;
+        }
         ++out.crossings;
-        // Snell's law at the horizontal boundary, as POV-Ray: eta = n_from / n_to.
-        const double eta = rel_index(k) / rel_index(next);
         const glm::dvec3 normal(0.0, d.y > 0.0 ? -1.0 : 1.0, 0.0);  // facing the incoming ray
         const glm::dvec3 t = glm::refract(d, normal, eta);
         if (t == glm::dvec3(0.0)) {

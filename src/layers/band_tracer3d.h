@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include <functional>
+#include <limits>
 #include <optional>
 
 #include "layers/stack.h"
@@ -47,11 +48,27 @@ struct Trace3dOutcome {
 
 /// Traces from `origin` along `dir` (unit).  The scene ends at `scene`; the layers span
 /// `layers` (which contains `scene`); outside them the ray is straight.
-/// `objects`, when given, stops the ray at the first opaque object it meets.  A ray may start
-/// on the ground (y = 0, going up) or anywhere above it.
+struct Trace3dOptions {
+    int max_events = 100000;
+    const ObjectQuery* objects = nullptr;  // stops the ray at the first opaque object
+    double camera_y = std::numeric_limits<double>::quiet_NaN();  // NaN: the ray starts there
+    bool pov_precision = true;  // POV-Ray's single-precision iors; false: exact indices
+};
+
+/// A ray may start on the ground (y = 0, going up) or anywhere above it; the camera's layer
+/// (at camera_y) is POV-Ray's atmosphere.
 Trace3dOutcome trace_layers_3d(const LayerStack& stack, const glm::dvec3& origin,
                                const glm::dvec3& dir, const HorizontalBox& scene,
-                               const HorizontalBox& layers, int max_events = 100000,
-                               const ObjectQuery* objects = nullptr);
+                               const HorizontalBox& layers, const Trace3dOptions& options = {});
+
+/// The layer of the camera (POV-Ray's atmosphere, outside every plane).
+int pov_camera_layer(const LayerStack& stack, double y, double camera_y);
+
+/// The ior POV-Ray holds for layer k's plane: its index over the camera layer's, in single
+/// precision (POV-Ray 3.7 keeps Interior::IOR as a float).
+float pov_ior(const LayerStack& stack, int k_cam, int k);
+
+/// The index ratio POV-Ray refracts with from layer `from` into layer `to`.
+double pov_ior_ratio(const LayerStack& stack, int k_cam, int from, int to);
 
 }  // namespace mirage

@@ -21,6 +21,35 @@ struct Side {
     double y(double t) const { return y0 - sgn * t; }
 };
 
+// Whether indices are kept on POV-Ray's float grid (FitSettings::pov_float_grid), for the
+// fit running on this thread.
+thread_local bool g_float_grid = true;
+
+// POV-Ray keeps each layer's ior (its index over the camera layer's) as a float, so only
+// indices on that grid exist in a render: eta^2 - eta0^2 of the float nearest u's index.
+double snap_excess(double eta0, double u_cam, double u) {
+    if (!g_float_grid) return u;
+    const double n_cam = std::sqrt(eta0 * eta0 + u_cam);
+    const float f = static_cast<float>(std::sqrt(eta0 * eta0 + u) / n_cam);
+    const double fd = f;
+    // (n_cam f)^2 - eta0^2 without cancellation.
+    return u_cam * fd * fd + eta0 * eta0 * (fd - 1.0) * (fd + 1.0);
+}
+
+// The smallest index on the float grid strictly above u.
+double snap_above(double eta0, double u_cam, double u) {
+    if (!g_float_grid) return std::nextafter(u, std::numeric_limits<double>::infinity());
+    const double n_cam = std::sqrt(eta0 * eta0 + u_cam);
+    float f = static_cast<float>(std::sqrt(eta0 * eta0 + u) / n_cam);
+    double v = snap_excess(eta0, u_cam, eta0 * eta0 * (double(f) * f - 1.0) + u_cam * double(f) * f);
+    while (!(v > u)) {
+        f = std::nextafter(f, 2.0f);
+        const double fd = f;
+        v = u_cam * fd * fd + eta0 * eta0 * (fd - 1.0) * (fd + 1.0);
+    }
+    return v;
+}
+
 // Index fractions of a gap tried for a new layer, as in the 2D study: dense near both ends.
 std::vector<double> gap_fractions() {
     std::vector<double> f;
@@ -113,7 +142,7 @@ public:
         if (fractions.empty()) fractions = {0.5 * (gap_lo_ + gap_hi_)};
         size_t layer = 0;
         while (!queue.empty()) {
-            if (t_limit - t_cur <= 1e-9 * y0_) break;
+            if (t_limit - t_cur <= std::max(1e-9 * y0_, 2.0 * min_thickness_)) break;
             const bool fixed = fixed_u != nullptr && layer > 0;
             if (fixed_u != nullptr && layer > fixed_u->size()) break;
             Choice best;
@@ -124,9 +153,8 @@ public:
                 const double u_next = layer < fixed_u->size() ? (*fixed_u)[layer] : u_far_;
                 best = evaluate_fixed(queue, u, u_next, t_cur, t_limit);
             } else {
-                const double lo = rays_[queue.front()].B, hi = prev_B;
-                for (double f : fractions) {
-                    Choice c = evaluate(queue, lo + f * (hi - lo), t_cur, t_limit);
+                for (double u : candidates_in_gap(rays_[queue.front()].B, prev_B, fractions)) {
+                    Choice c = evaluate(queue, u, t_cur, t_limit);
                     if (better(c, best)) best = c;
                 }
             }
@@ -135,8 +163,7 @@ public:
                 if (layer == 0) {
                     candidates = {u_eye_};
                 } else {
-                    const double lo = rays_[queue.front()].B, hi = prev_B;
-                    for (double f : fractions) candidates.push_back(lo + f * (hi - lo));
+                    candidates = candidates_in_gap(rays_[queue.front()].B, prev_B, fractions);
                 }
                 best = single_ray_best(queue.front(), candidates, t_cur, t_limit);
                 ++violations_;
@@ -170,6 +197,7 @@ public:
     const std::vector<double>& boundaries_t() const { return T_; }
     const std::vector<double>& layer_excess() const { return U_; }
     int violations() const { return violations_; }
+    void set_min_thickness(double t) { min_thickness_ = t; }
     void set_gap_range(double lo, double hi) {
         gap_lo_ = lo;
         gap_hi_ = hi;
@@ -183,6 +211,25 @@ private:
         double width = -1.0;
         int bad = std::numeric_limits<int>::max();
     };
+
+    // Indices at the given fractions of the gap (lo, hi), moved to POV-Ray's float grid; those
+    // that leave the gap are dropped.  A gap narrower than the grid gets the grid's first
+    // index above lo: the rays just above it then share the layer before.
+    std::vector<double> candidates_in_gap(double lo, double hi,
+                                          const std::vector<double>& fractions) const {
+        std::vector<double> out;
+        for (double f : fractions) {
+            const double u = snap_excess(profile_.eta0, u_eye_, lo + f * (hi - lo));
+            if (u > lo && u < hi && (out.empty() || u != out.back())) out.push_back(u);
+        }
+        if (out.empty()) out.push_back(snap_above(profile_.eta0, u_eye_, lo));
+        return out;
+    }
+
+    // Whether an index on the float grid fits strictly between two rays' invariants.
+    bool gap_has_index(double lo, double hi) const {
+        return snap_above(profile_.eta0, u_eye_, lo) < hi;
+    }
 
     static bool better(const Choice& a, const Choice& b) {
         if (a.bad != b.bad) return a.bad < b.bad;
@@ -251,7 +298,7 @@ private:
     }
 
     double d_max_for(double t_cur, double t_limit) const {
-        if (std::isfinite(t_limit)) return (t_limit - t_cur) * (1.0 - 1e-9);
+        if (std::isfinite(t_limit)) return std::max(min_thickness_, (t_limit - t_cur) * (1.0 - 1e-9) - min_thickness_);
         return std::max(1e3 * y0_, 1e4);
     }
 
@@ -259,7 +306,7 @@ private:
         Choice c;
         c.u = u;
         const double d_max = d_max_for(t_cur, t_limit);
-        const double d_min = std::max(1e-12, 1e-9 * d_max);
+        const double d_min = std::max({1e-12, 1e-9 * d_max, min_thickness_});
         double A = d_min, Bd = d_max;
         size_t m = 0;
         for (; m < queue.size(); ++m) {
@@ -272,6 +319,22 @@ private:
             A = a;
             Bd = b;
         }
+        // The next layer's index must fit, on POV-Ray's float grid, between the group's last
+        // ray and the first after it: end the group where it can.
+        while (m > 1 && m < queue.size() &&
+               !gap_has_index(rays_[queue[m]].B, rays_[queue[m - 1]].B))
+            --m;
+        if (m > 0 && m < queue.size()) {
+            // Recompute the group's interval for the shortened group.
+            A = d_min;
+            Bd = d_max;
+            for (size_t q = 0; q < m; ++q) {
+                double lo, hi;
+                interval(rays_[queue[q]], u, t_cur, d_min, d_max, lo, hi);
+                A = std::max(A, lo);
+                Bd = std::min(Bd, hi);
+            }
+        }
         c.m = m;
         if (m == 0) return c;
         c.width = (Bd - A) / std::max(Bd, 1e-300);
@@ -279,8 +342,12 @@ private:
         // little inside the feasible interval.
         const FitRay& last = rays_[queue[m - 1]];
         double anchor = std::isfinite(last.t_turn) ? last.t_turn - t_cur : 0.5 * (A + Bd);
-        const double inner = 0.1 * (Bd - A);
-        anchor = std::clamp(anchor, A + inner, Bd - inner);
+        // The margin is a tenth of the interval, counted only up to a few times the anchor:
+        // rays that do not turn inside the scene allow any thickness beyond some, and the
+        // layer should not grow far past where the exact paths go.
+        const double top = std::min(Bd, std::max(4.0 * std::max(anchor, A), 2.0 * A));
+        const double inner = 0.1 * (top - A);
+        anchor = std::clamp(anchor, A + inner, top - inner);
         // Rays after the group that leave the atmosphere while crossing this layer are final
         // now: count those the layer's index puts out of tolerance (independent of D).
         int left_bad = 0;
@@ -320,7 +387,7 @@ private:
         int best_off = 0;
         double best_worst = crossing.empty() ? 0.0 : mismatch(anchor, best_off);
         if (!crossing.empty() && (best_off > 0 || best_worst > 0.5)) {
-            const double lo = A + inner, hi = Bd - inner;
+            const double lo = A + inner, hi = top - inner;
             for (int k = 0; k <= 16; ++k) {
                 const double D = lo * std::pow(hi / lo, k / 16.0);
                 int off;
@@ -342,7 +409,7 @@ private:
                            double t_limit) const {
         const FitRay& r = rays_[id];
         const double d_max = d_max_for(t_cur, t_limit);
-        const double d_min = std::max(1e-12, 1e-9 * d_max);
+        const double d_min = std::max({1e-12, 1e-9 * d_max, min_thickness_});
         Choice best;
         double best_err = kInf;
         for (double u : candidates) {
@@ -376,7 +443,7 @@ private:
         Choice c;
         c.u = u;
         const double d_max = d_max_for(t_cur, t_limit);
-        const double d_min = std::max(1e-12, 1e-9 * d_max);
+        const double d_min = std::max({1e-12, 1e-9 * d_max, min_thickness_});
         size_t m = 0;
         while (m < queue.size() && rays_[queue[m]].B >= u_next) ++m;
         c.m = m;
@@ -425,6 +492,7 @@ private:
     std::vector<double> T_, U_;
     int violations_ = 0;
     double gap_lo_ = 0.0, gap_hi_ = 1.0;
+    double min_thickness_ = 0.0;
 };
 
 // Exact horizontal distance for a ray of invariant beta between heights a and b on a part
@@ -473,16 +541,16 @@ OneWay geometric_oneway(const Profile& p, double y0, int sgn_one, double u_eye, 
         const double ya = y0 - sgn_one * ow.t[j], yb = y0 - sgn_one * ow.t[j + 1];
         const double run = exact_run(p, beta, ya, yb);
         const double slope = std::fabs(yb - ya) / run;
-        ow.u.push_back(B_star + slope * slope * beta * beta);
+        ow.u.push_back(snap_excess(p.eta0, u_eye, B_star + slope * slope * beta * beta));
     }
     // Beyond the last boundary: eta(inf) on the sky side, eta0 down to the ground.
-    ow.u.push_back(u_lim);
+    ow.u.push_back(snap_excess(p.eta0, u_eye, u_lim));
     // The ground side ends at the ground: drop boundaries at or below it.
     while (!ow.t.empty() && ow.t.back() >= ow.ground) {
         ow.t.pop_back();
         ow.u.pop_back();
     }
-    if (!ow.u.empty() && sgn_one > 0) ow.u.back() = u_lim;
+    if (!ow.u.empty() && sgn_one > 0) ow.u.back() = snap_excess(p.eta0, u_eye, u_lim);
     return ow;
 }
 
@@ -558,7 +626,7 @@ void optimize_ground_layer(LayerStack& s, double y0, const std::vector<DesignRay
     const double lo = b_ground, hi = std::min(b_turn, s.excess[1]);
     if (!(hi > lo)) return;
     auto worst = [&](double u) {
-        s.excess[0] = u;
+        s.excess[0] = snap_excess(s.profile.eta0, u_eye, u);
         double w = 0.0;
         for (const DesignRay* r : ground) {
             const BandOutcome b = trace_band(s, y0, r->elevation, r->exit_dz, layers_dz);
@@ -577,7 +645,7 @@ void optimize_ground_layer(LayerStack& s, double y0, const std::vector<DesignRay
             best_u = u;
         }
     }
-    s.excess[0] = best_u;
+    s.excess[0] = snap_excess(s.profile.eta0, u_eye, best_u);
 }
 
 }  // namespace
@@ -659,6 +727,7 @@ namespace {
 FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRay>& rays,
                    const FitSettings& settings, const std::vector<double>* fixed_excess) {
     MIRAGE_CHECK(y0 > 0.0);
+    g_float_grid = settings.pov_float_grid;
     FitResult result;
     const int s = profile_sign(profile);
     const double u_eye = eta_sq_excess(profile, y0);
@@ -668,7 +737,8 @@ FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRa
     if (s == 0 || profile.eta1 == 0.0 || rays.empty()) return result;
     // The turning side: below the eye for an inferior profile, above it for a superior one.
     const int sgn_turn = s > 0 ? 1 : -1;
-    const double u_far_turn = s > 0 ? 0.0 : eta_sq_excess(profile, kInf);
+    const double u_far_turn =
+        snap_excess(profile.eta0, u_eye, s > 0 ? 0.0 : eta_sq_excess(profile, kInf));
 
     // The most grazing ray that reaches the one-way side fixes its layers.
     double s1 = kInf;
@@ -725,7 +795,10 @@ FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRa
         f.exact = *ray;
         const bool turns_inside = ray->turn_kind == TurnKind::Ahead && ray->dz_turn < r.exit_dz &&
                                   !(ray->hits_ground && ray->dz_ground < ray->dz_turn);
-        f.t_turn = ray->turn_kind == TurnKind::Ahead ? std::fabs(ray->y_turn - y0) : kInf;
+        // Where the floor of its group should lie: at its turning point if it turns inside
+        // the scene, else as deep as it gets there.
+        f.t_turn = turns_inside ? std::fabs(ray->y_turn - y0)
+                                : (e.ground ? kInf : std::fabs(e.y - y0));
         // A shift dz of where the ray is moves its end by about |slope| dz, which must stay
         // within the tolerance seen from the eye (a little margin for what follows).
         const double tol_rad = settings.oneway_margin * settings.tolerance_px * r.pixel_rad;
@@ -743,6 +816,7 @@ FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRa
         }
     }
     fit.set_gap_range(settings.gap_lo, settings.gap_hi);
+    fit.set_min_thickness(settings.min_thickness);
     fit.run(fixed_excess);
     const auto& T = fit.boundaries_t();
     const auto& U = fit.layer_excess();

@@ -37,8 +37,10 @@ struct FitSettings {
     double flat_fraction = 1e-2; // one-way layers stop where eta^2 is within this of its limit
     double layers_extent_factor = 1000.0;  // layers reach this many times the scene's extent
     double oneway_margin = 0.97; // share of the tolerance one-way rays may use per boundary
-    double gap_lo = 0.0;         // a new index lies at least this fraction into its gap
-    double gap_hi = 1.0;         // and at most this fraction
+    double min_thickness = 0.0;  // thinnest layer (and lowest floor above the ground), m
+    bool pov_float_grid = true;  // indices only where POV-Ray's float iors can hold them
+    double gap_lo = 0.1;         // a new index lies at least this fraction into its gap
+    double gap_hi = 0.9;         // and at most this fraction
 };
 
 /// How well a stack serves a set of rays (measured with the band trace against the exact

@@ -16,8 +16,32 @@ double LayerStack::index(int k) const {
     return std::sqrt(profile.eta0 * profile.eta0 + excess.at(k));
 }
 
+LayerStack with_gaps(const LayerStack& s, double camera_y, double gap) {
+    const int k_cam = s.layer_at(camera_y);
+    const double u_cam = s.excess[k_cam];
+    LayerStack g;
+    g.profile = s.profile;
+    g.excess.push_back(s.excess[0]);
+    g.air.push_back(0);
+    for (int j = 0; j < s.boundaries(); ++j) {
+        const bool touches_camera = j == k_cam - 1 || j == k_cam;
+        if (touches_camera) {
+            g.heights.push_back(s.heights[j]);
+        } else {
+            g.heights.push_back(s.heights[j] - 0.5 * gap);
+            g.excess.push_back(u_cam);
+            g.air.push_back(1);
+            g.heights.push_back(s.heights[j] + 0.5 * gap);
+        }
+        g.excess.push_back(s.excess[j + 1]);
+        g.air.push_back(0);
+    }
+    return g;
+}
+
 bool well_formed(const LayerStack& s) {
     if (s.excess.size() != s.heights.size() + 1) return false;
+    if (!s.air.empty() && s.air.size() != s.excess.size()) return false;
     for (size_t k = 0; k < s.heights.size(); ++k) {
         if (!(s.heights[k] > 0.0) || !std::isfinite(s.heights[k])) return false;
         if (k > 0 && !(s.heights[k] > s.heights[k - 1])) return false;
@@ -82,8 +106,12 @@ BandOutcome trace_band(const LayerStack& s, double y0, double elevation, double 
             }
             return out;
         }
-        ++out.crossings;
         const int next = k + dir;
+        if (s.excess[next] == s.excess[k]) {  // no index step: POV-Ray passes it freely
+            k = next;
+            continue;
+        }
+        ++out.crossings;
         if (s.excess[next] > B) {
             k = next;
         } else {

@@ -16,6 +16,9 @@ struct LayerStack {
     Profile profile;              // eta0 of `excess`; the profile the stack approximates
     std::vector<double> heights;  // N boundary heights, strictly ascending, > 0, m
     std::vector<double> excess;   // N + 1 layer values of eta^2 - eta0^2
+    // Layers POV-Ray sees as its atmosphere (index 1 relative to the camera's layer) besides
+    // the camera's own: the gaps of the gap layout (see pov/emit_layers.h).  Empty: none.
+    std::vector<char> air;
 
     int boundaries() const { return static_cast<int>(heights.size()); }
     /// The layer containing height y (a height on a boundary belongs to the layer above).
@@ -26,6 +29,12 @@ struct LayerStack {
 
 /// True when heights ascend strictly, are positive and finite, and excess has N + 1 values.
 bool well_formed(const LayerStack& stack);
+
+/// The stack as POV-Ray renders it in the gap layout: every boundary that does not touch the
+/// camera's layer becomes a gap of thickness `gap` filled with the camera layer's index (POV-
+/// Ray's atmosphere), so that every refraction divides by POV-Ray's double-precision
+/// atmosphere index instead of one single-precision ior by another.
+LayerStack with_gaps(const LayerStack& stack, double camera_y, double gap);
 
 /// What a ray does: where it ends inside the scene, and where it goes after.
 struct BandOutcome {

@@ -27,8 +27,14 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
     out << "//\n// " << s.boundaries() << " boundaries; the camera at y = " << g17(st.camera_y)
         << " is in layer " << k_cam << " of index " << g17(n_cam)
         << ", the index every ior below is relative to.\n";
-    out << "// Planes split at the camera's layer: below it plane { y, h } (inside is below),\n"
-           "// above it plane { -y, -h } (inside is above); each clipped to a thin slab.\n\n";
+    if (st.layout == LayerLayout::Gaps) {
+        out << "// Gap layout: each layer a slab of its own, gaps of " << g17(st.gap)
+            << " units between them hold the camera's index\n"
+               "// (POV-Ray's atmosphere), so that every refraction is computed in double precision.\n\n";
+    } else {
+        out << "// Planes split at the camera's layer: below it plane { y, h } (inside is below),\n"
+               "// above it plane { -y, -h } (inside is above); each clipped to a thin slab.\n\n";
+    }
     out << "global_settings { max_trace_level 256 }\n\n";
     out << "#declare Mirage_Layer_Texture = texture {\n"
            "    pigment { rgbf 1 }\n"
@@ -36,6 +42,38 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
            "}\n\n";
     const auto& h = s.heights;
     const int N = s.boundaries();
+    auto corners = [&](double y0, double y1) {
+        std::ostringstream b;
+        b << "<" << g17(st.extent.x0) << ", " << g17(y0) << ", " << g17(st.extent.z0) << ">, <"
+          << g17(st.extent.x1) << ", " << g17(y1) << ", " << g17(st.extent.z1) << ">";
+        return b.str();
+    };
+    auto box = [&](double y0, double y1) { return "box { " + corners(y0, y1) + " }"; };
+    auto tail = [&](int layer) {
+        // POV-Ray keeps an ior in single precision: the float value is what it will use.
+        return "    texture { Mirage_Layer_Texture }\n    interior { ior " +
+               sig(pov_ior(s, k_cam, layer), 9) + " }\n    no_shadow\n}\n";
+    };
+    if (st.layout == LayerLayout::Gaps) {
+        // One object per layer but the camera's: slabs between the gaps, the lowest and the
+        // highest layer as half-spaces (the top one must never be left towards the sky).
+        const double g = st.gap;
+        for (int k = 0; k <= N; ++k) {
+            if (k == k_cam) continue;
+            const double bottom = k == 0 ? 0.0 : h[k - 1] + (k - 1 == k_cam ? 0.0 : 0.5 * g);
+            const double top = k == N ? 0.0 : h[k] - (k == k_cam - 1 ? 0.0 : 0.5 * g);
+            if (k == 0) {
+                out << "plane { y, " << g17(top) << "\n    clipped_by { "
+                    << box(-1.0 - std::fabs(top), top + 0.5 * g) << " }\n" << tail(k);
+            } else if (k == N) {
+                out << "plane { -y, " << g17(-bottom) << "\n    clipped_by { "
+                    << box(bottom - 0.5 * g, bottom + 1e6) << " }\n" << tail(k);
+            } else {
+                out << "box { " << corners(bottom, top) << "\n" << tail(k);
+            }
+        }
+        return out.str();
+    }
     for (int j = 0; j < N; ++j) {
         // Half-thickness of the clipping slab: well inside the gap to the neighbours.
         const double below = j == 0 ? h[0] : h[j] - h[j - 1];
@@ -48,14 +86,8 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
         // The layer this plane's interior stands for: the one just below (under the camera)
         // or just above it.
         const int layer = under ? j : j + 1;
-        const double ior = s.index(layer) / n_cam;
         out << "plane { " << (under ? "y, " : "-y, ") << (under ? g17(h[j]) : g17(-h[j]))
-            << "\n    clipped_by { box { <" << g17(st.extent.x0) << ", " << g17(h[j] - half)
-            << ", " << g17(st.extent.z0) << ">, <" << g17(st.extent.x1) << ", "
-            << g17(h[j] + half) << ", " << g17(st.extent.z1) << "> } }\n"
-            << "    texture { Mirage_Layer_Texture }\n"
-            << "    interior { ior " << g17(ior) << " }\n"
-            << "    no_shadow\n}\n";
+            << "\n    clipped_by { " << box(h[j] - half, h[j] + half) << " }\n" << tail(layer);
     }
     return out.str();
 }
@@ -74,9 +106,9 @@ std::string layers_csv(const LayerStack& s, double camera_y) {
         if (k == k_cam) {
             out << "1,camera layer (no object)\n";
         } else if (k < k_cam) {
-            out << g17(s.index(k) / n_cam) << ",plane { y, " << g17(s.heights[k]) << " }\n";
+            out << sig(pov_ior(s, k_cam, k), 9) << ",\"plane { y, " << g17(s.heights[k]) << " }\"\n";
         } else {
-            out << g17(s.index(k) / n_cam) << ",plane { -y, " << g17(-s.heights[k - 1]) << " }\n";
+            out << sig(pov_ior(s, k_cam, k), 9) << ",\"plane { -y, " << g17(-s.heights[k - 1]) << " }\"\n";
         }
     }
     return out.str();

@@ -18,9 +18,25 @@
 
 namespace mirage {
 
+enum class LayerLayout {
+    Nested,  // planes split at the camera's layer, nested: one trace level per boundary
+    Gaps,    // disjoint slabs with thin gaps of the camera's index between them: two levels
+             // per boundary, every refraction in double precision (see below)
+};
+
+// Why two layouts: POV-Ray 3.7 holds an ior in single precision (Interior::IOR is SNGL) and
+// between two nested objects refracts with the quotient of their iors computed in single
+// precision, a relative error of up to 6e-8 per boundary.  Against the index steps of the
+// paper's profile that is nothing; against real air (index differences of 1e-5 in all)
+// it bends grazing rays by pixels.  In the gap layout a ray leaves each layer into POV-Ray's
+// atmosphere (the camera's index, held in double precision) before entering the next, so
+// each refraction is float over double and nothing accumulates; it costs twice the levels.
+
 struct LayerEmitSettings {
     double camera_y = 0.0;           // height of the camera, scene units
     HorizontalBox extent;            // horizontal extent of the layers, scene units
+    LayerLayout layout = LayerLayout::Nested;
+    double gap = 0.0;                // thickness of the gaps (Gaps layout), scene units
     std::vector<std::string> header; // comment lines at the top of the include
 };
 

@@ -195,3 +195,38 @@ TEST(ExactRay, RaysThatJustTouchTheGroundAreConsistent) {
 
 }  // namespace
 }  // namespace mirage
+
+namespace mirage {
+namespace {
+
+// distance_to_height inverts height_at on the stretch before any turning point, for every
+// class (closed forms for the exponential classes, bisection for the rest).
+TEST(ExactRay, DistanceToHeightInvertsTheHeight) {
+    struct C {
+        const char* preset;
+        double y0, elev;
+    };
+    const C cases[] = {{"paper", 1.5, -0.2},         {"paper", 1.5, 0.2},
+                       {"hot-road", 1.5, -0.003},    {"hot-road", 0.3, -0.2},
+                       {"paper-superior", 1.5, 0.02}, {"paper-superior", 1.5, -0.05},
+                       {"paper-superior", 1.5, 0.3}, {"cold-sea", 2.0, 0.001},
+                       {"cold-sea", 2.0, -0.001},    {"cold-sea", 2.0, -0.01}};
+    for (const auto& c : cases) {
+        auto r = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
+        ASSERT_TRUE(r.ok());
+        const double reach = r->turn_kind == TurnKind::Ahead ? r->dz_turn
+                             : r->hits_ground                ? r->dz_ground
+                                                             : 10.0;
+        for (double f : {0.1, 0.5, 0.9}) {
+            const double dz = f * reach;
+            EXPECT_NEAR(distance_to_height(*r, height_at(*r, dz)), dz, 1e-9 * reach)
+                << c.preset << " " << c.elev << " at " << dz;
+        }
+        // A height the ray moves away from is never reached.
+        const double away = c.elev > 0 ? c.y0 - 0.1 : c.y0 + 0.1;
+        EXPECT_TRUE(std::isinf(distance_to_height(*r, away))) << c.preset << " " << c.elev;
+    }
+}
+
+}  // namespace
+}  // namespace mirage

@@ -1,0 +1,212 @@
+#include "compile/compile.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "../cli/run_tool.h"
+#include "util/atomic_file.h"
+#include "util/csv.h"
+
+namespace mirage {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string temp_dir(const std::string& name) {
+    const fs::path d = fs::path(::testing::TempDir()) / ("mirage_compile_" + name);
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d.string();
+}
+
+// A small desert: the paper profile, a level camera, two spheres.
+const char* kDesert = R"(#version 3.7;
+#declare Mirage_Preset = "paper";
+#declare Mirage_Tolerance = 0.5;
+#include "mirage.inc"
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 1.5, 0> look_at <0, 1.5, 10> right x * image_width / image_height angle 60 }
+light_source { <-30, 60, -20>, color rgb 1 }
+sky_sphere { pigment { gradient y color_map { [0 color rgb <0.8, 0.85, 0.95>] [1 color rgb <0.1, 0.25, 0.7>] } } }
+plane { y, 0 pigment { checker color rgb <0.85, 0.72, 0.5>, color rgb <0.7, 0.55, 0.35> scale 2 } }
+sphere { <-2.5, 1.6, 14>, 1 pigment { color rgb <0.8, 0.15, 0.1> } finish { reflection 0.25 } }
+sphere { < 2.5, 1.6, 14>, 1 pigment { color rgb <0.15, 0.35, 0.8> } }
+)";
+
+std::string write_scene(const std::string& dir, const std::string& name, const std::string& text) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+TEST(Compile, WritesTheIncludeIniTableAndReport) {
+    const std::string dir = temp_dir("outputs");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    CompileOptions o;
+    o.scene = scene;
+    o.width = 64;
+    o.height = 48;
+    o.out_dir = dir + "/out";
+    auto r = compile_scene(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    EXPECT_GT(r->layers, 10);
+    EXPECT_EQ(r->layout, "nested");
+    EXPECT_LE(r->max_trace_level, 255);
+    EXPECT_EQ(r->pixels, 64 * 48);
+    EXPECT_LE(r->p50_error_px, r->p95_error_px);
+    EXPECT_LE(r->p95_error_px, r->max_error_px);
+    for (const auto& p : {r->include_path, r->ini_path, r->csv_path, r->report_path})
+        EXPECT_TRUE(fs::exists(p)) << p;
+    // The layer table reads back: one row per layer, indices as POV-Ray gets them.
+    auto csv = read_csv_file(r->csv_path);
+    ASSERT_TRUE(csv.ok()) << csv.message();
+    EXPECT_EQ(static_cast<int>(csv->rows.size()), r->layers + 1);
+    // The .ini names the template, the size and the declaration mirage.inc looks for.
+    auto ini = read_file(r->ini_path);
+    ASSERT_TRUE(ini.ok());
+    EXPECT_NE(ini->find("Width=64"), std::string::npos);
+    EXPECT_NE(ini->find("Declare=Mirage_Compiled=1"), std::string::npos);
+    EXPECT_NE(ini->find("Bounding_Method=2"), std::string::npos);
+    EXPECT_NE(ini->find("Antialias=Off"), std::string::npos);
+    auto inc = read_file(r->include_path);
+    ASSERT_TRUE(inc.ok());
+    EXPECT_NE(inc->find("max_trace_level 256"), std::string::npos);
+    EXPECT_NE(inc->find("no_shadow"), std::string::npos);
+    // The template is untouched.
+    EXPECT_EQ(*read_file(scene), kDesert);
+}
+
+TEST(Compile, NoAtmosphereMeansNoLayers) {
+    const std::string dir = temp_dir("plain");
+    std::string text = kDesert;
+    text.replace(text.find("#declare Mirage_Preset = \"paper\";"), 34, "");
+    const std::string scene = write_scene(dir, "plain.pov", text);
+    CompileOptions o;
+    o.scene = scene;
+    o.width = 32;
+    o.height = 24;
+    o.out_dir = dir + "/out";
+    auto r = compile_scene(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    EXPECT_EQ(r->layers, 0);
+    EXPECT_EQ(r->mode, "none");
+    EXPECT_EQ(r->max_error_px, 0.0);
+}
+
+TEST(Compile, ATinyIndexChangeNeedsNoLayers) {
+    // eta1 = 1e-9: no camera ray bends by a tenth of a pixel within 60 m.
+    const std::string dir = temp_dir("flat");
+    std::string text = kDesert;
+    text.replace(text.find("#declare Mirage_Preset = \"paper\";"), 34,
+                 "#declare Mirage_Profile = \"inferior\"; #declare Mirage_Eta0 = 1.0003; "
+                 "#declare Mirage_Eta1 = 1e-9; #declare Mirage_Alpha = 2.3;");
+    const std::string scene = write_scene(dir, "flat.pov", text);
+    CompileOptions o;
+    o.scene = scene;
+    o.width = 32;
+    o.height = 24;
+    o.out_dir = dir + "/out";
+    auto r = compile_scene(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    EXPECT_EQ(r->layers, 0);
+    ASSERT_FALSE(r->left_out.empty());
+    EXPECT_NE(r->left_out.front().find("no camera ray bends"), std::string::npos);
+}
+
+TEST(Compile, UniformModeGivesEqualLayers) {
+    const std::string dir = temp_dir("uniform");
+    const std::string scene = write_scene(dir, "u.pov", kDesert);
+    CompileOptions o;
+    o.scene = scene;
+    o.width = 32;
+    o.height = 24;
+    o.out_dir = dir + "/out";
+    o.layers = LayerMode::Uniform;
+    o.layer_count = 20;
+    auto r = compile_scene(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    EXPECT_EQ(r->layers, 20);
+    auto csv = read_csv_file(r->csv_path);
+    ASSERT_TRUE(csv.ok());
+    const double h1 = std::stod(csv->rows[0].fields[2]);
+    for (int k = 1; k < 20; ++k)
+        EXPECT_NEAR(std::stod(csv->rows[k].fields[2]), h1 * (k + 1), 1e-6 * (k + 1));
+}
+
+TEST(Compile, ErrorsNameTheDeclaration) {
+    const std::string dir = temp_dir("errors");
+    std::string text = kDesert;
+    text.replace(text.find("#declare Mirage_Tolerance = 0.5;"), 32, "#declare Mirage_Tolerence = 0.5;");
+    const std::string scene = write_scene(dir, "typo.pov", text);
+    CompileOptions o;
+    o.scene = scene;
+    o.width = 32;
+    o.height = 24;
+    o.out_dir = dir + "/out";
+    auto r = compile_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message(), scene + ":3:10: unknown setting Mirage_Tolerence (did you mean Mirage_Tolerance?)");
+    EXPECT_FALSE(fs::exists(dir + "/out/mirage_layers.inc"));
+
+    text = kDesert;
+    text.replace(text.find("location <0, 1.5, 0>"), 20, "location <0, -1, 0>");
+    write_scene(dir, "under.pov", text);
+    o.scene = dir + "/under.pov";
+    r = compile_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.message().find("the camera is at y = -1: it must be above the ground"),
+              std::string::npos)
+        << r.message();
+
+    text = kDesert;
+    text.replace(text.find("\"paper\""), 7, "\"sahara\"");
+    write_scene(dir, "preset.pov", text);
+    o.scene = dir + "/preset.pov";
+    r = compile_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message(), dir + "/preset.pov:2:10: Mirage_Preset: unknown preset 'sahara' (known: "
+                                 "paper, paper-superior, hot-road, cold-sea)");
+}
+
+// The compiled scene renders in stock POV-Ray with no ray cut off: its statistics show a
+// largest trace level under 256, the one the compile report predicts.
+TEST(Compile, PovRayRendersTheCompiledSceneWithinTheTraceLevelCeiling) {
+    if (std::system("povray --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "povray not installed";
+    const std::string dir = temp_dir("render");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    CompileOptions o;
+    o.scene = scene;
+    o.width = 80;
+    o.height = 60;
+    o.out_dir = dir + "/out";
+    auto r = compile_scene(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    const std::string log = dir + "/povray.log";
+    ASSERT_EQ(std::system(("povray " + r->ini_path + " >" + log + " 2>&1").c_str()), 0);
+    const std::string text = *read_file(log);
+    const auto at = text.find("Max Level: ");
+    ASSERT_NE(at, std::string::npos) << text;
+    const int level = std::stoi(text.substr(at + 11));
+    EXPECT_LT(level, 256);
+    EXPECT_EQ(level, r->max_trace_level);
+    EXPECT_TRUE(fs::exists(r->image_path));
+}
+
+TEST(CompileCli, JsonReportHasTheRequiredKeys) {
+    const std::string dir = temp_dir("cli");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    auto run = testing::run_tool("compile " + scene + " -W 32 -H 24 -o " + dir + "/out --json");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    auto j = nlohmann::json::parse(run.out);
+    for (const char* key : {"layers", "max_error_px", "p95_error_px", "max_crossings", "seconds"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    run = testing::run_tool("compile " + dir + "/missing.pov -o " + dir + "/out");
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.err.find("missing.pov"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace mirage
