@@ -12,8 +12,8 @@
 
 BUILD   ?= build
 SCENE   ?= scenes/desert.pov
-W       ?= 320
-H       ?= 240
+W       ?= 640
+H       ?= 480
 TOL     ?=
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 NAME    := $(basename $(notdir $(SCENE)))
@@ -43,7 +43,10 @@ test: build
 render: build
 	$(BUILD)/mirage compile $(SCENE) --width $(W) --height $(H) $(if $(TOL),--tolerance $(TOL)) \
 	    -o $(BUILD)/render/$(NAME)
-	povray $(BUILD)/render/$(NAME)/$(NAME).ini
+	@echo "povray $(BUILD)/render/$(NAME)/$(NAME).ini"
+	@povray $(BUILD)/render/$(NAME)/$(NAME).ini 2>$(BUILD)/render/$(NAME)/povray.log || \
+	    { tail -20 $(BUILD)/render/$(NAME)/povray.log; exit 1; }
+	@grep -E "Max Level|Trace Time" $(BUILD)/render/$(NAME)/povray.log | sed "s/^ */  /"
 	@echo "image: $(BUILD)/render/$(NAME).png"
 
 bench: build
