@@ -37,6 +37,10 @@ void setup_compile_command(CLI::App& app) {
     auto* count = sub->add_option("--count", o->count, "number of uniform layers");
     sub->add_option("-L,--library-path", o->compile.library_paths, "extra include directory (searched first)");
     sub->add_flag("--antialias", o->compile.antialias, "antialias the render (+A0.3)");
+    sub->add_option("--fit-columns", o->compile.fit_columns,
+                    "image columns to fit the layers to, spread from the centre to the edge")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
     sub->add_option("--layout", o->compile.layout,
                     "nested (planes), gaps (slabs with gaps: double-precision refraction for "
                     "real air) or auto")

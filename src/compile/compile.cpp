@@ -209,7 +209,6 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     const double layers_reach = kLayersExtentFactor * extent;
     const HorizontalBox layers_box{cam.location.x - layers_reach, cam.location.x + layers_reach,
                                    cam.location.z - layers_reach, cam.location.z + layers_reach};
-    rep.layers_extent = layers_reach;
 
     // Every pixel centre's ray.
     const int W = opt.width, H = opt.height;
@@ -308,12 +307,16 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             rep.left_out.push_back("layers above y = " + sig(top, 4) +
                                    ": no camera ray reaches higher inside the scene");
         } else {
-            // Fit to the rays of the image's centre column, measure on every pixel.
+            // Fit to the rays of a few columns spread from the image's centre to its edge
+            // (their rows have other elevations), measure on every pixel.
             std::vector<DesignRay> design;
-            const int col = W / 2;
-            for (int row = 0; row < H; ++row) {
-                const PixelRay& r = rays[static_cast<size_t>(row) * W + col];
-                design.push_back({r.elevation, r.exit_dz, r.pixel_rad, col, row});
+            const int n_cols = std::max(1, std::min(opt.fit_columns, (W + 1) / 2));
+            for (int k = 0; k < n_cols; ++k) {
+                const int col = n_cols == 1 ? W / 2 : W / 2 + (W - 1 - W / 2) * k / (n_cols - 1);
+                for (int row = 0; row < H; ++row) {
+                    const PixelRay& r = rays[static_cast<size_t>(row) * W + col];
+                    design.push_back({r.elevation, r.exit_dz, r.pixel_rad, col, row});
+                }
             }
             FitSettings fs;
             fs.tolerance_px = settings.tolerance_px;
@@ -355,6 +358,23 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     }
     rep.max_crossings = max_cross;
     rep.layers = stack.boundaries();
+    // The layers reach as far as the camera's rays still meet a boundary before they leave
+    // through the top or reach the ground, and at least past the scene: no farther.
+    double emitted_reach = 1.1 * extent;
+    if (stack.boundaries() > 0) {
+        const LayerStack rendered = as_rendered(stack);
+        Trace3dOptions to;
+        to.camera_y = eye_y;
+        for (const auto& r : rays) {
+            const Trace3dOutcome t = trace_layers_3d(rendered, cam.location, r.direction,
+                                                     scene_box, layers_box, to);
+            if (!t.cut_off) emitted_reach = std::max(emitted_reach, 1.1 * t.last_event);
+        }
+        emitted_reach = std::min(emitted_reach, layers_reach);
+    }
+    rep.layers_extent = emitted_reach;
+    const HorizontalBox emitted_box{cam.location.x - emitted_reach, cam.location.x + emitted_reach,
+                                    cam.location.z - emitted_reach, cam.location.z + emitted_reach};
     const int k_cam = stack.layer_at(eye_y);
     rep.below_camera = k_cam;
     rep.above_camera = stack.boundaries() - k_cam;
@@ -367,8 +387,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
                                ": the index is within 1% of eta(infinity), or no camera ray "
                                "reaches higher");
-        rep.left_out.push_back("the layers' horizontal extent beyond " + sig(layers_reach, 4) +
-                               " units from the camera");
+        rep.left_out.push_back("the layers beyond " + sig(emitted_reach, 4) +
+                               " units from the camera: every camera ray has left them by then");
     }
     rep.pixels = static_cast<int>(err.size());
     rep.p50_error_px = percentile(err, 0.50);
@@ -418,7 +438,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
 
     LayerEmitSettings es;
     es.camera_y = eye_y;
-    es.extent = layers_box;
+    es.extent = emitted_box;
     es.layout = gaps ? LayerLayout::Gaps : LayerLayout::Nested;
     es.gap = gap;
     es.header = {"mirage_layers.inc: the banded atmosphere of " + rep.name + " at " +

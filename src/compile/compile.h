@@ -25,6 +25,7 @@ struct CompileOptions {
     bool antialias = false;
     std::vector<std::string> library_paths;  // extra include directories, searched first
     std::string layout = "auto";            // "nested", "gaps" or "auto" (by index contrast)
+    int fit_columns = 1;                    // image columns the layers are fitted to
 };
 
 /// A camera row whose worst pixel exceeds the tolerance.

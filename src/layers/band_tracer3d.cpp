@@ -126,6 +126,7 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
             continue;
         }
         ++out.crossings;
+        out.last_event = std::hypot(p.x - origin.x, p.z - origin.z);
         const glm::dvec3 normal(0.0, d.y > 0.0 ? -1.0 : 1.0, 0.0);  // facing the incoming ray
         const glm::dvec3 t = glm::refract(d, normal, eta);
         if (t == glm::dvec3(0.0)) {

@@ -40,6 +40,7 @@ struct Trace3dOutcome {
     bool sky = false;          // leaves the layers for good going up
     glm::dvec3 final_dir{0.0};    // its direction then
     int crossings = 0;         // boundary events inside the layers
+    double last_event = 0.0;   // horizontal distance from the origin of the last event
     bool cut_off = false;
     std::optional<ObjectHit> object;  // the object that stopped the ray, if any
     glm::dvec3 object_point{0.0};     // where
