@@ -63,8 +63,15 @@ void BM_SamplePath(benchmark::State& state, const char* preset, double from, dou
     state.counters["samples_per_ray"] = samples / state.iterations();
 }
 BENCHMARK_CAPTURE(BM_SamplePath, desert, "paper", -0.41, 0.41, 60.0)
-    ->Arg(10000)->Arg(1700)->Arg(340)->Arg(34)->Arg(3);
+    ->Arg(10000)
+    ->Arg(1700)
+    ->Arg(340)
+    ->Arg(34)
+    ->Arg(3);
 BENCHMARK_CAPTURE(BM_SamplePath, road, "hot-road", -0.0087, 0.0087, 500.0)
-    ->Arg(100)->Arg(18)->Arg(3)->Arg(1);
+    ->Arg(100)
+    ->Arg(18)
+    ->Arg(3)
+    ->Arg(1);
 
 }  // namespace

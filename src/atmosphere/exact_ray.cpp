@@ -206,24 +206,36 @@ double superior_ln_F(const ExactRay& r, double dz) {
 
 std::string_view ray_class_name(RayClass c) {
     switch (c) {
-        case RayClass::Straight: return "straight";
-        case RayClass::InfTurn: return "inf_turn";
-        case RayClass::InfGround: return "inf_ground";
-        case RayClass::InfUp: return "inf_up";
-        case RayClass::SupTrappedUp: return "sup_trapped_up";
-        case RayClass::SupTrappedDown: return "sup_trapped_down";
-        case RayClass::SupEscapeUp: return "sup_escape_up";
-        case RayClass::SupEscapeDown: return "sup_escape_down";
+        case RayClass::Straight:
+            return "straight";
+        case RayClass::InfTurn:
+            return "inf_turn";
+        case RayClass::InfGround:
+            return "inf_ground";
+        case RayClass::InfUp:
+            return "inf_up";
+        case RayClass::SupTrappedUp:
+            return "sup_trapped_up";
+        case RayClass::SupTrappedDown:
+            return "sup_trapped_down";
+        case RayClass::SupEscapeUp:
+            return "sup_escape_up";
+        case RayClass::SupEscapeDown:
+            return "sup_escape_down";
     }
     return "?";
 }
 
 std::string_view turn_kind_name(TurnKind k) {
     switch (k) {
-        case TurnKind::Ahead: return "ahead";
-        case TurnKind::Behind: return "behind";
-        case TurnKind::BelowGround: return "below_ground";
-        case TurnKind::None: return "none";
+        case TurnKind::Ahead:
+            return "ahead";
+        case TurnKind::Behind:
+            return "behind";
+        case TurnKind::BelowGround:
+            return "below_ground";
+        case TurnKind::None:
+            return "none";
     }
     return "?";
 }
@@ -329,8 +341,8 @@ double distance_to_height(const ExactRay& r, double y) {
         const double F = std::exp(0.5 * r.profile.alpha * (y - r.y0));
         const double a = std::exp(r.ln_coef_hi), b = std::exp(r.ln_coef_lo);
         const double disc = std::sqrt(std::max(0.0, F * F - 4.0 * a * b));
-        const double x = down ? std::log(2.0 * b) - std::log(F + disc)
-                              : std::log(F + disc) - std::log(2.0 * a);
+        const double x =
+            down ? std::log(2.0 * b) - std::log(F + disc) : std::log(F + disc) - std::log(2.0 * a);
         return x / r.c;
     }
     if (r.s < 0 && r.k2 > 0.0 && r.c > 0.0) {
@@ -355,7 +367,10 @@ double distance_to_height(const ExactRay& r, double y) {
     for (int i = 0; i < 100 && hi - lo > 1e-15 * hi; ++i) {
         const double m = 0.5 * (lo + hi);
         const double hm = height_at(r, m);
-        if (down ? hm > y : hm < y) lo = m; else hi = m;
+        if (down ? hm > y : hm < y)
+            lo = m;
+        else
+            hi = m;
     }
     return 0.5 * (lo + hi);
 }

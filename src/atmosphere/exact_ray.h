@@ -61,11 +61,11 @@ struct ExactRay {
     double c = 0.0;      // gamma q, 1/m
 
     // Class-specific constants of the stable forms.
-    double asinh_w = 0.0;    // inferior: asinh(w)
-    double log1p_w2 = 0.0;   // inferior: ln(1 + w^2)
-    double ln_coef_lo = 0.0;  // inferior: ln((1 - rho)/2), rho = sg P / k
-    double ln_coef_hi = 0.0;  // inferior: ln((1 + rho)/2)
-    double theta = 0.0;      // trapped: asin(w), the angle from the start to the apex
+    double asinh_w = 0.0;      // inferior: asinh(w)
+    double log1p_w2 = 0.0;     // inferior: ln(1 + w^2)
+    double ln_coef_lo = 0.0;   // inferior: ln((1 - rho)/2), rho = sg P / k
+    double ln_coef_hi = 0.0;   // inferior: ln((1 + rho)/2)
+    double theta = 0.0;        // trapped: asin(w), the angle from the start to the apex
     bool vertex_form = false;  // trapped: evaluate from the apex (else from the start)
 
     RayClass ray_class = RayClass::Straight;

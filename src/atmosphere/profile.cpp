@@ -19,9 +19,12 @@ std::string number(double v) {
 
 int profile_sign(const Profile& p) {
     switch (p.kind) {
-        case ProfileKind::Inferior: return 1;
-        case ProfileKind::Superior: return -1;
-        case ProfileKind::None: return 0;
+        case ProfileKind::Inferior:
+            return 1;
+        case ProfileKind::Superior:
+            return -1;
+        case ProfileKind::None:
+            return 0;
     }
     return 0;
 }
@@ -61,8 +64,8 @@ Status validate(const Profile& p) {
     if (!std::isfinite(p.alpha) || p.alpha <= 0.0)
         return make_error("alpha = " + number(p.alpha) + " must be finite and > 0 (1/m)");
     if (p.kind == ProfileKind::Superior && !(p.eta0 * p.eta0 > p.eta1 * p.eta1))
-        return make_error("superior profile with eta0 = " + number(p.eta0) + " and eta1 = " +
-                          number(p.eta1) +
+        return make_error("superior profile with eta0 = " + number(p.eta0) +
+                          " and eta1 = " + number(p.eta1) +
                           ": eta0^2 must exceed eta1^2 (the index aloft would not be real)");
     return Ok{};
 }
@@ -83,9 +86,12 @@ Result<ProfileKind> parse_profile_kind(std::string_view name) {
 
 std::string_view profile_kind_name(ProfileKind kind) {
     switch (kind) {
-        case ProfileKind::Inferior: return "inferior";
-        case ProfileKind::Superior: return "superior";
-        case ProfileKind::None: return "none";
+        case ProfileKind::Inferior:
+            return "inferior";
+        case ProfileKind::Superior:
+            return "superior";
+        case ProfileKind::None:
+            return "none";
     }
     return "none";
 }

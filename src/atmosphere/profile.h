@@ -14,7 +14,8 @@ namespace mirage {
 enum class ProfileKind {
     None,      ///< homogeneous air: rays are straight
     Inferior,  ///< eta^2 = eta0^2 + eta1^2 (1 - exp(-alpha y)): hot ground, index grows with height
-    Superior,  ///< eta^2 = eta0^2 - eta1^2 (1 - exp(-alpha y)): cold ground, index falls with height
+    Superior,  ///< eta^2 = eta0^2 - eta1^2 (1 - exp(-alpha y)): cold ground, index falls with
+               ///< height
 };
 
 /// eta(y)^2 = eta0^2 + s eta1^2 (1 - exp(-alpha y)), s = +1 inferior, -1 superior, 0 none.

@@ -149,7 +149,7 @@ SampledPath sample_path(const ExactRay& ray, const SampleSettings& st) {
     path.dz_turn = ray.dz_turn;
     const double zt = ray.dz_turn;
     const double y_turn_path = height_at(ray, zt);
-    const double u_before = zt;           // the start lies this far before the vertex
+    const double u_before = zt;  // the start lies this far before the vertex
     const double u_after_max = dz_end - zt;
     // Height of the mirror images at distance u from the vertex (equal on both sides; taken
     // on the side that exists: the part before the vertex always lies above the ground).

@@ -11,7 +11,6 @@
 #pragma once
 
 #include <glm/vec2.hpp>
-
 #include <limits>
 #include <vector>
 
@@ -28,18 +27,18 @@ struct SampleSettings {
 
 /// How the sampled path ends after its last point.
 enum class PathEnd {
-    Ground,     // the last point is on the ground (y = 0)
-    Straight,   // beyond the last point the path is a straight line of slope end_slope
-    Cut,        // the atmosphere ends at the last point; straight beyond, slope end_slope
+    Ground,    // the last point is on the ground (y = 0)
+    Straight,  // beyond the last point the path is a straight line of slope end_slope
+    Cut,       // the atmosphere ends at the last point; straight beyond, slope end_slope
 };
 
 /// A sampled path in the ray's vertical plane: points (dz, y), the first is the start.
 struct SampledPath {
     std::vector<glm::dvec2> points;
     PathEnd end = PathEnd::Straight;
-    double end_slope = 0.0;    // dy/dz after the last point (Straight and Cut)
-    bool turns = false;        // a turning point lies on the path (it was mirrored)
-    double dz_turn = 0.0;      // where, when it turns
+    double end_slope = 0.0;  // dy/dz after the last point (Straight and Cut)
+    bool turns = false;      // a turning point lies on the path (it was mirrored)
+    double dz_turn = 0.0;    // where, when it turns
 };
 
 /// Samples the exact ray to the tolerance.  At least one of tolerance_m and tolerance_rad

@@ -1,9 +1,8 @@
 #include "layers/band_tracer3d.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <limits>
 
 #include "util/check.h"
@@ -79,12 +78,13 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
             next = k - 1;  // -1: the ground
         }
         const double hlen = std::hypot(d.x, d.z);
-        const double t_scene = in_scene && hlen > 0.0
-                                   ? distance_to_box_edge(scene, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
-                                   : kInf;
-        const double t_layers = hlen > 0.0
-                                    ? distance_to_box_edge(layers, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
-                                    : kInf;
+        const double t_scene =
+            in_scene && hlen > 0.0
+                ? distance_to_box_edge(scene, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
+                : kInf;
+        const double t_layers =
+            hlen > 0.0 ? distance_to_box_edge(layers, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
+                       : kInf;
         if (objects) {
             const double reach = std::min(t_plane, t_layers);
             if (auto hit = (*objects)(p, d, std::isfinite(reach) ? reach : 1e30)) {
@@ -119,8 +119,8 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
         }
         // Snell's law at the horizontal boundary, with POV-Ray's ratio eta = n_from / n_to.
         // POV-Ray passes a boundary of ratio 1 without refracting or spending a trace level.
-        const double eta = opt.pov_precision ? pov_ior_ratio(s, k_cam, k, next)
-                                             : s.index(k) / s.index(next);
+        const double eta =
+            opt.pov_precision ? pov_ior_ratio(s, k_cam, k, next) : s.index(k) / s.index(next);
         if (std::fabs(eta - 1.0) < 1e-10) {
             k = next;
             continue;

@@ -3,9 +3,8 @@
 // of Snell's law with total internal reflection), without the invariant the fit uses.
 #pragma once
 
-#include <glm/vec3.hpp>
-
 #include <functional>
+#include <glm/vec3.hpp>
 #include <limits>
 #include <optional>
 
@@ -24,23 +23,23 @@ double distance_to_box_edge(const HorizontalBox& box, double x, double z, double
 
 /// An opaque object met along a straight piece of the path.
 struct ObjectHit {
-    double t = 0.0;             // distance along the (unit) direction
-    glm::dvec3 normal{0.0};     // surface normal there
-    int id = -1;                // which object
+    double t = 0.0;          // distance along the (unit) direction
+    glm::dvec3 normal{0.0};  // surface normal there
+    int id = -1;             // which object
 };
 
 /// Finds the closest object hit within (0, t_max] along origin + t direction.
-using ObjectQuery =
-    std::function<std::optional<ObjectHit>(const glm::dvec3& origin, const glm::dvec3& dir, double t_max)>;
+using ObjectQuery = std::function<std::optional<ObjectHit>(const glm::dvec3& origin,
+                                                           const glm::dvec3& dir, double t_max)>;
 
 struct Trace3dOutcome {
-    bool ground = false;       // hit the ground inside the scene box
+    bool ground = false;          // hit the ground inside the scene box
     glm::dvec3 scene_point{0.0};  // ground hit, or where it leaves the scene box
     glm::dvec3 scene_dir{0.0};    // direction there
-    bool sky = false;          // leaves the layers for good going up
+    bool sky = false;             // leaves the layers for good going up
     glm::dvec3 final_dir{0.0};    // its direction then
-    int crossings = 0;         // boundary events inside the layers
-    double last_event = 0.0;   // horizontal distance from the origin of the last event
+    int crossings = 0;            // boundary events inside the layers
+    double last_event = 0.0;      // horizontal distance from the origin of the last event
     bool cut_off = false;
     std::optional<ObjectHit> object;  // the object that stopped the ray, if any
     glm::dvec3 object_point{0.0};     // where

@@ -41,7 +41,8 @@ double snap_above(double eta0, double u_cam, double u) {
     if (!g_float_grid) return std::nextafter(u, std::numeric_limits<double>::infinity());
     const double n_cam = std::sqrt(eta0 * eta0 + u_cam);
     float f = static_cast<float>(std::sqrt(eta0 * eta0 + u) / n_cam);
-    double v = snap_excess(eta0, u_cam, eta0 * eta0 * (double(f) * f - 1.0) + u_cam * double(f) * f);
+    double v =
+        snap_excess(eta0, u_cam, eta0 * eta0 * (double(f) * f - 1.0) + u_cam * double(f) * f);
     while (!(v > u)) {
         f = std::nextafter(f, 2.0f);
         const double fd = f;
@@ -100,25 +101,31 @@ struct FitRay {
     int id = 0;
     double B = 0.0, beta = 1.0, R = 0.0, px = 0.0;
     double theta_exact = 0.0;
-    double t_turn = kInf;           // exact turning point's distance into the turning side
-    std::vector<double> climb_z;    // one-way side: z from the return point to each boundary
-    double climb_ground_z = kInf;   // one-way side: z from the return point to the ground
-    double z_in = 0.0;              // z where the ray reaches the current layer's near boundary
-    std::vector<double> zd;         // z at each turning-side boundary passed (zd[0] = 0, the eye)
+    double t_turn = kInf;          // exact turning point's distance into the turning side
+    std::vector<double> climb_z;   // one-way side: z from the return point to each boundary
+    double climb_ground_z = kInf;  // one-way side: z from the return point to the ground
+    double z_in = 0.0;             // z where the ray reaches the current layer's near boundary
+    std::vector<double> zd;        // z at each turning-side boundary passed (zd[0] = 0, the eye)
     // Rays that do not turn inside the atmosphere (they leave it, or reach the ground, still
     // heading into the turning side): nothing downstream compensates their errors, so each
     // boundary must be crossed close to where the exact path crosses its height.
     bool one_way = false;
     ExactRay exact;
-    double z_tol = kInf;            // allowed error of the crossing distance, m
+    double z_tol = kInf;  // allowed error of the crossing distance, m
 };
 
 class SequentialFit {
-public:
+  public:
     SequentialFit(const Profile& p, double y0, int sgn_turn, double u_eye, double u_far,
                   const OneWay& ow, double tol_px)
-        : profile_(p), y0_(y0), turn_{y0, sgn_turn}, one_{y0, -sgn_turn}, u_eye_(u_eye),
-          u_far_(u_far), ow_(ow), tol_(tol_px) {}
+        : profile_(p),
+          y0_(y0),
+          turn_{y0, sgn_turn},
+          one_{y0, -sgn_turn},
+          u_eye_(u_eye),
+          u_far_(u_far),
+          ow_(ow),
+          tol_(tol_px) {}
 
     void add_ray(FitRay r) { rays_.push_back(std::move(r)); }
     /// A ray that crosses every layer of the turning side and ends on the ground there.
@@ -203,7 +210,7 @@ public:
         gap_hi_ = hi;
     }
 
-private:
+  private:
     struct Choice {
         double u = 0.0;
         size_t m = 0;
@@ -288,7 +295,10 @@ private:
             for (int it = 0; it < 60; ++it) {
                 const double m = 0.5 * (a + b);
                 const double gm = g(r, u, t_cur, std::exp(m));
-                if (gm > target) a = m; else b = m;
+                if (gm > target)
+                    a = m;
+                else
+                    b = m;
             }
             return above ? std::exp(b) : std::exp(a);
         };
@@ -298,7 +308,8 @@ private:
     }
 
     double d_max_for(double t_cur, double t_limit) const {
-        if (std::isfinite(t_limit)) return std::max(min_thickness_, (t_limit - t_cur) * (1.0 - 1e-9) - min_thickness_);
+        if (std::isfinite(t_limit))
+            return std::max(min_thickness_, (t_limit - t_cur) * (1.0 - 1e-9) - min_thickness_);
         return std::max(1e3 * y0_, 1e4);
     }
 
@@ -472,14 +483,17 @@ private:
         } else {
             for (int it = 0; it < 60; ++it) {
                 const double mid = 0.5 * (a + b);
-                if (h(std::exp(mid)) > 0.0) a = mid; else b = mid;
+                if (h(std::exp(mid)) > 0.0)
+                    a = mid;
+                else
+                    b = mid;
             }
             c.D = std::exp(0.5 * (a + b));
         }
         return c;
     }
 
-private:
+  private:
     Profile profile_;
     double y0_;
     Side turn_, one_;
@@ -505,11 +519,16 @@ double exact_run(const Profile& p, double beta, double a, double b) {
     MIRAGE_CHECK(ray.ok());
     // Bisection on the distance at which the path reaches b.
     double lo = 0.0, hi = std::fabs(b - a) / std::max(std::fabs(std::tan(e)), 1e-300);
-    auto reached = [&](double dz) { return b > a ? height_at(*ray, dz) >= b : height_at(*ray, dz) <= b; };
+    auto reached = [&](double dz) {
+        return b > a ? height_at(*ray, dz) >= b : height_at(*ray, dz) <= b;
+    };
     for (int i = 0; i < 200 && !reached(hi); ++i) hi *= 2.0;
     for (int i = 0; i < 100; ++i) {
         const double m = 0.5 * (lo + hi);
-        if (reached(m)) hi = m; else lo = m;
+        if (reached(m))
+            hi = m;
+        else
+            lo = m;
     }
     return 0.5 * (lo + hi);
 }
@@ -517,8 +536,8 @@ double exact_run(const Profile& p, double beta, double a, double b) {
 // One-way layers geometric in w = |eta^2(y) - eta^2(y0)|: w_1 = c1 s1, ratio q, up to
 // W (1 - flat); each index such that the most grazing ray (invariant B*) crosses its layer
 // in the exact horizontal distance.
-OneWay geometric_oneway(const Profile& p, double y0, int sgn_one, double u_eye, double s1,
-                        double q, double flat) {
+OneWay geometric_oneway(const Profile& p, double y0, int sgn_one, double u_eye, double s1, double q,
+                        double flat) {
     OneWay ow;
     const double u_lim = sgn_one < 0 ? eta_sq_excess(p, std::numeric_limits<double>::infinity())
                                      : 0.0;  // sky side: eta(inf); ground side: eta0
@@ -568,8 +587,8 @@ LayerStack assemble(const Profile& p, double y0, int sgn_turn, double u_eye,
     // Each boundary with the excess of the layer above it.
     for (size_t i = 1; i < T.size(); ++i) {
         const double y = y0 - sgn_turn * T[i];
-        const double u_near = U[i - 1];                                // eye side of it
-        const double u_beyond = i < U.size() ? U[i] : u_far;           // far side of it
+        const double u_near = U[i - 1];                       // eye side of it
+        const double u_beyond = i < U.size() ? U[i] : u_far;  // far side of it
         bs.push_back({y, sgn_turn > 0 ? u_near : u_beyond});
     }
     for (size_t j = 0; j < ow.t.size(); ++j) {
@@ -661,7 +680,8 @@ FitQuality measure_fit(const LayerStack& stack, double y0, const std::vector<Des
                        double layers_factor) {
     FitQuality q;
     for (const auto& r : rays) {
-        const BandOutcome b = trace_band(stack, y0, r.elevation, r.exit_dz, layers_factor * r.exit_dz);
+        const BandOutcome b =
+            trace_band(stack, y0, r.elevation, r.exit_dz, layers_factor * r.exit_dz);
         const BandOutcome e = exact_outcome(stack.profile, y0, r.elevation, r.exit_dz);
         q.max_error_px = std::max(q.max_error_px, outcome_error_rad(y0, e, b) / r.pixel_rad);
         q.max_crossings = std::max(q.max_crossings, b.crossings);
@@ -711,12 +731,18 @@ FitResult fit_layers(const Profile& profile, double y0, const std::vector<Design
     }
     for (double aim = 1.2; within == 0.0 && aim < 1e4; aim *= 1.5) {
         if (attempt(aim, kept)) return best.quality = best_q, best;
-        if (kept) within = aim; else over = aim;
+        if (kept)
+            within = aim;
+        else
+            over = aim;
     }
     for (int i = 0; i < 6 && within > 0.0 && over > 0.0; ++i) {
         const double mid = std::sqrt(over * within);
         if (attempt(mid, kept)) break;
-        if (kept) within = mid; else over = mid;
+        if (kept)
+            within = mid;
+        else
+            over = mid;
     }
     best.quality = best_q;
     return best;
@@ -767,7 +793,8 @@ FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRa
         }
         const bool ok = worst <= settings.tolerance_px;
         const bool best_ok = best_err <= settings.tolerance_px;
-        if ((ok && (!best_ok || ow.t.size() < best_count)) || (!ok && !best_ok && worst < best_err)) {
+        if ((ok && (!best_ok || ow.t.size() < best_count)) ||
+            (!ok && !best_ok && worst < best_err)) {
             best_ow = ow;
             best_err = worst;
             best_count = ow.t.size();
@@ -797,8 +824,8 @@ FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRa
                                   !(ray->hits_ground && ray->dz_ground < ray->dz_turn);
         // Where the floor of its group should lie: at its turning point if it turns inside
         // the scene, else as deep as it gets there.
-        f.t_turn = turns_inside ? std::fabs(ray->y_turn - y0)
-                                : (e.ground ? kInf : std::fabs(e.y - y0));
+        f.t_turn =
+            turns_inside ? std::fabs(ray->y_turn - y0) : (e.ground ? kInf : std::fabs(e.y - y0));
         // A shift dz of where the ray is moves its end by about |slope| dz, which must stay
         // within the tolerance seen from the eye (a little margin for what follows).
         const double tol_rad = settings.oneway_margin * settings.tolerance_px * r.pixel_rad;
@@ -821,7 +848,8 @@ FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRa
     const auto& T = fit.boundaries_t();
     const auto& U = fit.layer_excess();
     result.stack = assemble(profile, y0, sgn_turn, u_eye, T, U, u_far_turn, best_ow);
-    if (sgn_turn > 0 && result.stack.boundaries() > 0) optimize_ground_layer(result.stack, y0, rays, layers_dz);
+    if (sgn_turn > 0 && result.stack.boundaries() > 0)
+        optimize_ground_layer(result.stack, y0, rays, layers_dz);
     result.turning_boundaries = static_cast<int>(T.size()) - 1;
     result.oneway_boundaries = static_cast<int>(best_ow.t.size());
     result.turning_excess.assign(U.begin() + (U.empty() ? 0 : 1), U.end());

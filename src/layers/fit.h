@@ -32,15 +32,15 @@ struct DesignRay {
 };
 
 struct FitSettings {
-    double tolerance_px = 0.5;   // largest allowed error of a fitted ray, pixels
-    int max_crossings = 255;     // trace-level budget of a camera ray
-    double flat_fraction = 1e-2; // one-way layers stop where eta^2 is within this of its limit
+    double tolerance_px = 0.5;    // largest allowed error of a fitted ray, pixels
+    int max_crossings = 255;      // trace-level budget of a camera ray
+    double flat_fraction = 1e-2;  // one-way layers stop where eta^2 is within this of its limit
     double layers_extent_factor = 1000.0;  // layers reach this many times the scene's extent
-    double oneway_margin = 0.97; // share of the tolerance one-way rays may use per boundary
-    double min_thickness = 0.0;  // thinnest layer (and lowest floor above the ground), m
-    bool pov_float_grid = true;  // indices only where POV-Ray's float iors can hold them
-    double gap_lo = 0.1;         // a new index lies at least this fraction into its gap
-    double gap_hi = 0.9;         // and at most this fraction
+    double oneway_margin = 0.97;  // share of the tolerance one-way rays may use per boundary
+    double min_thickness = 0.0;   // thinnest layer (and lowest floor above the ground), m
+    bool pov_float_grid = true;   // indices only where POV-Ray's float iors can hold them
+    double gap_lo = 0.1;          // a new index lies at least this fraction into its gap
+    double gap_hi = 0.9;          // and at most this fraction
 };
 
 /// How well a stack serves a set of rays (measured with the band trace against the exact
@@ -52,13 +52,13 @@ struct FitQuality {
 
 /// A fitted design and what it left out.
 struct FitResult {
-    FitQuality quality;          // over the rays it was fitted to
+    FitQuality quality;  // over the rays it was fitted to
     LayerStack stack;
-    int turning_boundaries = 0;  // boundaries on the turning side
-    int oneway_boundaries = 0;   // boundaries on the one-way side
+    int turning_boundaries = 0;          // boundaries on the turning side
+    int oneway_boundaries = 0;           // boundaries on the one-way side
     std::vector<double> turning_excess;  // indices of the turning side's layers, outward
-    int violations = 0;          // layers where no ray could be brought within tolerance
-    std::vector<std::string> notes;  // what was left out, and why
+    int violations = 0;                  // layers where no ray could be brought within tolerance
+    std::vector<std::string> notes;      // what was left out, and why
 };
 
 /// The sequential design for the rays (typically one column of the image), eye at y0: every

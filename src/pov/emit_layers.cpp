@@ -30,7 +30,8 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
     if (st.layout == LayerLayout::Gaps) {
         out << "// Gap layout: each layer a slab of its own, gaps of " << g17(st.gap)
             << " units between them hold the camera's index\n"
-               "// (POV-Ray's atmosphere), so that every refraction is computed in double precision.\n\n";
+               "// (POV-Ray's atmosphere), so that every refraction is computed in double "
+               "precision.\n\n";
     } else {
         out << "// Planes split at the camera's layer: below it plane { y, h } (inside is below),\n"
                "// above it plane { -y, -h } (inside is above); each clipped to a thin slab.\n\n";
@@ -64,10 +65,12 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
             const double top = k == N ? 0.0 : h[k] - (k == k_cam - 1 ? 0.0 : 0.5 * g);
             if (k == 0) {
                 out << "plane { y, " << g17(top) << "\n    clipped_by { "
-                    << box(-1.0 - std::fabs(top), top + 0.5 * g) << " }\n" << tail(k);
+                    << box(-1.0 - std::fabs(top), top + 0.5 * g) << " }\n"
+                    << tail(k);
             } else if (k == N) {
                 out << "plane { -y, " << g17(-bottom) << "\n    clipped_by { "
-                    << box(bottom - 0.5 * g, bottom + 1e6) << " }\n" << tail(k);
+                    << box(bottom - 0.5 * g, bottom + 1e6) << " }\n"
+                    << tail(k);
             } else {
                 out << "box { " << corners(bottom, top) << "\n" << tail(k);
             }
@@ -87,7 +90,8 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
         // or just above it.
         const int layer = under ? j : j + 1;
         out << "plane { " << (under ? "y, " : "-y, ") << (under ? g17(h[j]) : g17(-h[j]))
-            << "\n    clipped_by { " << box(h[j] - half, h[j] + half) << " }\n" << tail(layer);
+            << "\n    clipped_by { " << box(h[j] - half, h[j] + half) << " }\n"
+            << tail(layer);
     }
     return out.str();
 }
@@ -106,9 +110,11 @@ std::string layers_csv(const LayerStack& s, double camera_y) {
         if (k == k_cam) {
             out << "1,camera layer (no object)\n";
         } else if (k < k_cam) {
-            out << sig(pov_ior(s, k_cam, k), 9) << ",\"plane { y, " << g17(s.heights[k]) << " }\"\n";
+            out << sig(pov_ior(s, k_cam, k), 9) << ",\"plane { y, " << g17(s.heights[k])
+                << " }\"\n";
         } else {
-            out << sig(pov_ior(s, k_cam, k), 9) << ",\"plane { -y, " << g17(-s.heights[k - 1]) << " }\"\n";
+            out << sig(pov_ior(s, k_cam, k), 9) << ",\"plane { -y, " << g17(-s.heights[k - 1])
+                << " }\"\n";
         }
     }
     return out.str();

@@ -33,11 +33,11 @@ enum class LayerLayout {
 // each refraction is float over double and nothing accumulates; it costs twice the levels.
 
 struct LayerEmitSettings {
-    double camera_y = 0.0;           // height of the camera, scene units
-    HorizontalBox extent;            // horizontal extent of the layers, scene units
+    double camera_y = 0.0;  // height of the camera, scene units
+    HorizontalBox extent;   // horizontal extent of the layers, scene units
     LayerLayout layout = LayerLayout::Nested;
-    double gap = 0.0;                // thickness of the gaps (Gaps layout), scene units
-    std::vector<std::string> header; // comment lines at the top of the include
+    double gap = 0.0;                 // thickness of the gaps (Gaps layout), scene units
+    std::vector<std::string> header;  // comment lines at the top of the include
 };
 
 /// The text of mirage_layers.inc.
@@ -48,8 +48,8 @@ std::string layers_include(const LayerStack& stack, const LayerEmitSettings& set
 std::string layers_csv(const LayerStack& stack, double camera_y);
 
 struct IniSettings {
-    std::string scene;                       // the template, absolute
-    std::string output_image;                // absolute
+    std::string scene;         // the template, absolute
+    std::string output_image;  // absolute
     int width = 320, height = 240;
     std::vector<std::string> library_paths;  // absolute, searched in order
     bool antialias = false;

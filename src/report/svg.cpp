@@ -25,11 +25,20 @@ std::string svg_escape(const std::string& text) {
     std::string out;
     for (char ch : text) {
         switch (ch) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += ch;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += ch;
         }
     }
     return out;
@@ -47,8 +56,8 @@ std::string PlotFrame::axes(const std::string& x_label, const std::string& y_lab
     for (double t : nice_ticks(x0, x1)) {
         s << "<line x1=\"" << px(t) << "\" y1=\"" << top << "\" x2=\"" << px(t) << "\" y2=\""
           << top + height << "\" stroke=\"#e4e4e4\"/>\n";
-        s << "<text x=\"" << px(t) << "\" y=\"" << top + height + 16
-          << "\" text-anchor=\"middle\">" << tick_label(t) << "</text>\n";
+        s << "<text x=\"" << px(t) << "\" y=\"" << top + height + 16 << "\" text-anchor=\"middle\">"
+          << tick_label(t) << "</text>\n";
     }
     for (double t : nice_ticks(y0, y1)) {
         s << "<line x1=\"" << left << "\" y1=\"" << py(t) << "\" x2=\"" << left + width

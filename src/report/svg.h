@@ -15,7 +15,7 @@ std::string svg_escape(const std::string& text);
 
 /// A rectangular plot: data coordinates (x right, y up) mapped onto a pixel box.
 struct PlotFrame {
-    double x0, x1, y0, y1;          // data range
+    double x0, x1, y0, y1;            // data range
     double left, top, width, height;  // pixel box of the plotting area
 
     double px(double x) const { return left + (x - x0) / (x1 - x0) * width; }

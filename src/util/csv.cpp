@@ -68,7 +68,8 @@ Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
             row_has_content = true;
         }
     }
-    if (in_quotes) return make_error(source + ":" + std::to_string(row.line) + ": unterminated quoted field");
+    if (in_quotes)
+        return make_error(source + ":" + std::to_string(row.line) + ": unterminated quoted field");
     if (row_has_content || !field.empty()) end_row();
     if (rows.empty()) return make_error(source + ": empty CSV (no header row)");
     table.header = std::move(rows.front().fields);

@@ -16,8 +16,8 @@ struct Error {
 /// Either a T or an Error, in the manner of std::expected (which clang-tidy 14 cannot parse).
 template <class T>
 class [[nodiscard]] Result {
-public:
-    Result(T value) : data_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  public:
+    Result(T value) : data_(std::move(value)) {}      // NOLINT(google-explicit-constructor)
     Result(Error error) : data_(std::move(error)) {}  // NOLINT(google-explicit-constructor)
 
     bool ok() const { return data_.index() == 0; }
@@ -34,7 +34,7 @@ public:
     const Error& error() const { return std::get<1>(data_); }
     const std::string& message() const { return error().message; }
 
-private:
+  private:
     std::variant<T, Error> data_;
 };
 

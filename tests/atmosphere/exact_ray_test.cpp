@@ -88,7 +88,8 @@ void check_reference_file(const std::string& name, size_t expected_cases) {
             expect_close("dz_ground", ray->dz_ground, c.dz_ground, c.dz_ground, c.tol, c.id);
         for (int j = 0; j < 3; ++j) {
             expect_close("y_d", height_at(*ray, c.d[j]), c.y_d[j],
-                         std::max(c.y0, std::fabs(c.y_d[j])), c.tol, c.id + " d" + std::to_string(j + 1));
+                         std::max(c.y0, std::fabs(c.y_d[j])), c.tol,
+                         c.id + " d" + std::to_string(j + 1));
             expect_close("dydz_d", slope_at(*ray, c.d[j]), c.dydz_d[j], std::fabs(c.dydz_d[j]),
                          c.tol, c.id + " d" + std::to_string(j + 1));
         }
@@ -120,10 +121,10 @@ struct Case {
 // A ray started at a point of another ray's path, in the direction of that path, is the same
 // ray: the invariant and the closed forms agree wherever the second ray starts.
 TEST(ExactRay, RayStartedOnAnotherRaysPathContinuesIt) {
-    const Case cases[] = {{"paper", 1.5, -0.2},        {"paper", 1.5, 0.1},
-                          {"hot-road", 1.5, -2e-3},    {"hot-road", 0.3, -1e-4},
+    const Case cases[] = {{"paper", 1.5, -0.2},          {"paper", 1.5, 0.1},
+                          {"hot-road", 1.5, -2e-3},      {"hot-road", 0.3, -1e-4},
                           {"paper-superior", 1.0, 0.05}, {"paper-superior", 1.0, -0.3},
-                          {"cold-sea", 2.0, 1e-3},     {"cold-sea", 2.0, -5e-3}};
+                          {"cold-sea", 2.0, 1e-3},       {"cold-sea", 2.0, -5e-3}};
     for (const auto& c : cases) {
         auto a = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
         ASSERT_TRUE(a.ok());
@@ -150,8 +151,10 @@ TEST(ExactRay, RayStartedOnAnotherRaysPathContinuesIt) {
 }
 
 TEST(ExactRay, PathIsSymmetricAboutItsTurningPoint) {
-    const Case cases[] = {{"paper", 1.5, -0.2}, {"hot-road", 1.5, -3e-3},
-                          {"paper-superior", 1.0, 0.05}, {"cold-sea", 2.0, 2e-3}};
+    const Case cases[] = {{"paper", 1.5, -0.2},
+                          {"hot-road", 1.5, -3e-3},
+                          {"paper-superior", 1.0, 0.05},
+                          {"cold-sea", 2.0, 2e-3}};
     for (const auto& c : cases) {
         auto r = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
         ASSERT_TRUE(r.ok());
@@ -206,11 +209,11 @@ TEST(ExactRay, DistanceToHeightInvertsTheHeight) {
         const char* preset;
         double y0, elev;
     };
-    const C cases[] = {{"paper", 1.5, -0.2},         {"paper", 1.5, 0.2},
-                       {"hot-road", 1.5, -0.003},    {"hot-road", 0.3, -0.2},
+    const C cases[] = {{"paper", 1.5, -0.2},          {"paper", 1.5, 0.2},
+                       {"hot-road", 1.5, -0.003},     {"hot-road", 0.3, -0.2},
                        {"paper-superior", 1.5, 0.02}, {"paper-superior", 1.5, -0.05},
-                       {"paper-superior", 1.5, 0.3}, {"cold-sea", 2.0, 0.001},
-                       {"cold-sea", 2.0, -0.001},    {"cold-sea", 2.0, -0.01}};
+                       {"paper-superior", 1.5, 0.3},  {"cold-sea", 2.0, 0.001},
+                       {"cold-sea", 2.0, -0.001},     {"cold-sea", 2.0, -0.01}};
     for (const auto& c : cases) {
         auto r = make_exact_ray(*preset_profile(c.preset), c.y0, M_PI / 2 - c.elev);
         ASSERT_TRUE(r.ok());

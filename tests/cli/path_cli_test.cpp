@@ -16,8 +16,9 @@ TEST(PathCli, PrintsClassTurningPointAndSamples) {
     auto r = run_tool("path --preset paper --eye-height 1.5 --elevation-deg -10");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("class       inf_turn"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("turning     lowest point y = 0.6894575529 m at dz = 7.179101315 m (ahead)"),
-              std::string::npos)
+    EXPECT_NE(
+        r.out.find("turning     lowest point y = 0.6894575529 m at dz = 7.179101315 m (ahead)"),
+        std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("ground      not reached"), std::string::npos);
 }
@@ -41,9 +42,9 @@ TEST(PathCli, BatchReproducesTheReferenceFile) {
     auto ref = read_csv_file(std::string(MIRAGE_REFERENCE_DIR) + "/path_public.csv");
     ASSERT_TRUE(ref.ok());
     ASSERT_EQ(got->rows.size(), ref->rows.size());
-    const std::vector<std::string> cols = {"case_id", "k2", "k", "y_turn", "dz_turn",
-        "turn_kind", "ray_class", "y_d1", "y_d2", "y_d3", "dydz_d1", "dydz_d2", "dydz_d3",
-        "hits_ground", "dz_ground"};
+    const std::vector<std::string> cols = {
+        "case_id", "k2",   "k",       "y_turn",  "dz_turn", "turn_kind",   "ray_class", "y_d1",
+        "y_d2",    "y_d3", "dydz_d1", "dydz_d2", "dydz_d3", "hits_ground", "dz_ground"};
     ASSERT_EQ(got->header, cols);
     for (size_t i = 0; i < ref->rows.size(); ++i) {
         const auto& g = got->rows[i];
@@ -121,18 +122,21 @@ TEST(PathCli, BadFlagsAndValuesAreNamed) {
               "mirage path: --preset: unknown preset 'sahara' (known: paper, paper-superior, "
               "hot-road, cold-sea)\n");
 
-    r = run_tool("path --profile inferior --eta0 1.0003 --eta1 0.01 --alpha -2 --eye-height 1 "
-                 "--elevation-deg 1");
+    r = run_tool(
+        "path --profile inferior --eta0 1.0003 --eta1 0.01 --alpha -2 --eye-height 1 "
+        "--elevation-deg 1");
     EXPECT_EQ(r.err, "mirage path: alpha = -2 must be finite and > 0 (1/m)\n");
 
     r = run_tool("path --preset paper --eye-height 1");
-    EXPECT_EQ(r.err, "mirage path: give the ray's direction with --elevation-deg DEG (or --i-rad RAD)\n");
+    EXPECT_EQ(r.err,
+              "mirage path: give the ray's direction with --elevation-deg DEG (or --i-rad RAD)\n");
 }
 
 TEST(PathCli, SvgDiagramIsWrittenWithTheFan) {
     const std::string svg = std::string(::testing::TempDir()) + "fan.svg";
     std::remove(svg.c_str());
-    auto r = run_tool("path --preset paper --eye-height 1.5 --elevation-deg -10 --fan-count 7 --svg " + svg);
+    auto r = run_tool(
+        "path --preset paper --eye-height 1.5 --elevation-deg -10 --fan-count 7 --svg " + svg);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::ifstream in(svg);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -147,7 +147,8 @@ TEST(Fit, EyeTopAndGroundLayersHaveTheExactIndices) {
     const int k_cam = s.layer_at(1.5);
     EXPECT_EQ(s.excess[k_cam], eta_sq_excess(p, 1.5));
     const double n_cam = s.index(k_cam);
-    EXPECT_NEAR(s.index(s.boundaries()) / n_cam, static_cast<float>(eta_infinity(p) / n_cam), 1e-15);
+    EXPECT_NEAR(s.index(s.boundaries()) / n_cam, static_cast<float>(eta_infinity(p) / n_cam),
+                1e-15);
     EXPECT_NEAR(s.index(0) / n_cam, static_cast<float>(p.eta0 / n_cam), 1e-15);
     for (double h : s.heights) EXPECT_NE(h, 1.5);  // the eye is not on a boundary
 }

@@ -41,7 +41,7 @@ TEST(BandTrace, RefractsBySnellsLawAtABoundary) {
 
 TEST(BandTrace, ReflectsTotallyBelowTheCriticalAngle) {
     const LayerStack s = two_layers(1.0, 1.1, 1.0);  // ground layer has the lower index
-    const double e = -0.2;                            // from 2 m, downward
+    const double e = -0.2;                           // from 2 m, downward
     const double crit = std::acos(1.0 / 1.1);
     ASSERT_LT(std::fabs(e), crit);
     const BandOutcome b = trace_band(s, 2.0, e, 50.0, 50.0);
@@ -76,8 +76,8 @@ TEST(BandTrace, InvariantTraceAgreesWithTheVectorTrace) {
         const double e = u(rng);
         const BandOutcome b = trace_band(f.stack, 1.5, e, 60.0, 6000.0);
         const Trace3dOutcome t = trace_layers_3d(f.stack, glm::dvec3(0.0, 1.5, 0.0),
-                                                 glm::dvec3(0.0, std::sin(e), std::cos(e)),
-                                                 scene, layers, exact_indices());
+                                                 glm::dvec3(0.0, std::sin(e), std::cos(e)), scene,
+                                                 layers, exact_indices());
         ASSERT_EQ(b.ground, t.ground) << e;
         EXPECT_EQ(b.crossings, t.crossings) << e;
         EXPECT_NEAR(b.y, t.scene_point.y, 1e-9) << e;

@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../layers/camera_column.h"
 #include "image/image_io.h"
 #include "layers/band_tracer3d.h"
 #include "layers/fit.h"
 #include "pov/emit_layers.h"
 #include "scene/camera.h"
-#include "../layers/camera_column.h"
 
 namespace mirage {
 namespace {
@@ -34,7 +34,8 @@ struct Layout {
 class PovRayBandTest : public ::testing::TestWithParam<Layout> {};
 
 TEST_P(PovRayBandTest, TracerPredictsPovRaysRays) {
-    if (std::system("povray --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "povray not installed";
+    if (std::system("povray --version >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "povray not installed";
     const Profile p = *preset_profile("hot-road");
     FitSettings fs;
     fs.tolerance_px = 1.0;
@@ -44,7 +45,8 @@ TEST_P(PovRayBandTest, TracerPredictsPovRaysRays) {
     const bool gaps = GetParam().layout == LayerLayout::Gaps;
     const LayerStack rendered = gaps ? with_gaps(f.stack, kEye, gap) : f.stack;
 
-    const fs::path dir = fs::path(::testing::TempDir()) / (std::string("mirage_band_") + GetParam().name);
+    const fs::path dir =
+        fs::path(::testing::TempDir()) / (std::string("mirage_band_") + GetParam().name);
     fs::remove_all(dir);
     fs::create_directories(dir);
     const HorizontalBox extent{-5e5, 5e5, -5e5, 5e5};
@@ -59,10 +61,12 @@ TEST_P(PovRayBandTest, TracerPredictsPovRaysRays) {
            "global_settings { assumed_gamma 1.0 }\n"
            "camera { location <0, 1.5, 0> look_at <0, 1.5, 100> right x * 4/3 angle 1.3334 }\n"
            "background { color rgb 0 }\n"
-           "box { <-100, 0, 300>, <100, 4, 300.01> pigment { gradient y color_map { [0 color rgb 0] "
+           "box { <-100, 0, 300>, <100, 4, 300.01> pigment { gradient y color_map { [0 color rgb "
+           "0] "
            "[1 color rgb <1, 0, 0>] } scale 4 } finish { ambient 1 diffuse 0 } }\n";
-    const std::string cmd = "cd " + dir.string() + " && povray -D -A +FN16 +W" + std::to_string(kW) +
-                            " +H" + std::to_string(kH) + " +Oscreen.png screen.pov >povray.log 2>&1";
+    const std::string cmd = "cd " + dir.string() + " && povray -D -A +FN16 +W" +
+                            std::to_string(kW) + " +H" + std::to_string(kH) +
+                            " +Oscreen.png screen.pov >povray.log 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << (dir / "povray.log");
     auto image = read_image((dir / "screen.png").string());
     ASSERT_TRUE(image.ok()) << image.message();
@@ -89,9 +93,12 @@ TEST_P(PovRayBandTest, TracerPredictsPovRaysRays) {
             pov.camera_y = kEye;
             Trace3dOptions exact = pov;
             exact.pov_precision = false;
-            const auto a = trace_layers_3d(rendered, ray.origin, ray.direction, extent, extent, pov);
-            const auto b = trace_layers_3d(rendered, ray.origin, ray.direction, extent, extent, exact);
-            if (!a.object || a.object_point.y < 0.05 || a.object_point.y > kScreenTop - 0.05) continue;
+            const auto a =
+                trace_layers_3d(rendered, ray.origin, ray.direction, extent, extent, pov);
+            const auto b =
+                trace_layers_3d(rendered, ray.origin, ray.direction, extent, extent, exact);
+            if (!a.object || a.object_point.y < 0.05 || a.object_point.y > kScreenTop - 0.05)
+                continue;
             const double y_pov = kScreenTop * srgb_to_linear(image->at(col, row).x);
             worst_pov = std::max(worst_pov, std::fabs(a.object_point.y - y_pov));
             if (b.object) worst_exact = std::max(worst_exact, std::fabs(b.object_point.y - y_pov));
