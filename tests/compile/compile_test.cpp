@@ -36,6 +36,15 @@ sphere { <-2.5, 1.6, 14>, 1 pigment { color rgb <0.8, 0.15, 0.1> } finish { refl
 sphere { < 2.5, 1.6, 14>, 1 pigment { color rgb <0.15, 0.35, 0.8> } }
 )";
 
+CompileOptions options(const std::string& scene, const std::string& dir, int width, int height) {
+    CompileOptions o;
+    o.scene = scene;
+    o.width = width;
+    o.height = height;
+    o.out_dir = dir + "/out";
+    return o;
+}
+
 std::string write_scene(const std::string& dir, const std::string& name, const std::string& text) {
     const std::string path = dir + "/" + name;
     std::ofstream(path) << text;
@@ -45,11 +54,7 @@ std::string write_scene(const std::string& dir, const std::string& name, const s
 TEST(Compile, WritesTheIncludeIniTableAndReport) {
     const std::string dir = temp_dir("outputs");
     const std::string scene = write_scene(dir, "small.pov", kDesert);
-    CompileOptions o;
-    o.scene = scene;
-    o.width = 64;
-    o.height = 48;
-    o.out_dir = dir + "/out";
+    CompileOptions o = options(scene, dir, 64, 48);
     auto r = compile_scene(o);
     ASSERT_TRUE(r.ok()) << r.message();
     EXPECT_GT(r->layers, 10);
@@ -84,11 +89,7 @@ TEST(Compile, NoAtmosphereMeansNoLayers) {
     std::string text = kDesert;
     text.replace(text.find("#declare Mirage_Preset = \"paper\";"), 34, "");
     const std::string scene = write_scene(dir, "plain.pov", text);
-    CompileOptions o;
-    o.scene = scene;
-    o.width = 32;
-    o.height = 24;
-    o.out_dir = dir + "/out";
+    CompileOptions o = options(scene, dir, 32, 24);
     auto r = compile_scene(o);
     ASSERT_TRUE(r.ok()) << r.message();
     EXPECT_EQ(r->layers, 0);
@@ -104,11 +105,7 @@ TEST(Compile, ATinyIndexChangeNeedsNoLayers) {
                  "#declare Mirage_Profile = \"inferior\"; #declare Mirage_Eta0 = 1.0003; "
                  "#declare Mirage_Eta1 = 1e-9; #declare Mirage_Alpha = 2.3;");
     const std::string scene = write_scene(dir, "flat.pov", text);
-    CompileOptions o;
-    o.scene = scene;
-    o.width = 32;
-    o.height = 24;
-    o.out_dir = dir + "/out";
+    CompileOptions o = options(scene, dir, 32, 24);
     auto r = compile_scene(o);
     ASSERT_TRUE(r.ok()) << r.message();
     EXPECT_EQ(r->layers, 0);
@@ -119,11 +116,7 @@ TEST(Compile, ATinyIndexChangeNeedsNoLayers) {
 TEST(Compile, UniformModeGivesEqualLayers) {
     const std::string dir = temp_dir("uniform");
     const std::string scene = write_scene(dir, "u.pov", kDesert);
-    CompileOptions o;
-    o.scene = scene;
-    o.width = 32;
-    o.height = 24;
-    o.out_dir = dir + "/out";
+    CompileOptions o = options(scene, dir, 32, 24);
     o.layers = LayerMode::Uniform;
     o.layer_count = 20;
     auto r = compile_scene(o);
@@ -141,11 +134,7 @@ TEST(Compile, ErrorsNameTheDeclaration) {
     std::string text = kDesert;
     text.replace(text.find("#declare Mirage_Tolerance = 0.5;"), 32, "#declare Mirage_Tolerence = 0.5;");
     const std::string scene = write_scene(dir, "typo.pov", text);
-    CompileOptions o;
-    o.scene = scene;
-    o.width = 32;
-    o.height = 24;
-    o.out_dir = dir + "/out";
+    CompileOptions o = options(scene, dir, 32, 24);
     auto r = compile_scene(o);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.message(), scene + ":3:10: unknown setting Mirage_Tolerence (did you mean Mirage_Tolerance?)");
@@ -177,11 +166,7 @@ TEST(Compile, PovRayRendersTheCompiledSceneWithinTheTraceLevelCeiling) {
     if (std::system("povray --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "povray not installed";
     const std::string dir = temp_dir("render");
     const std::string scene = write_scene(dir, "small.pov", kDesert);
-    CompileOptions o;
-    o.scene = scene;
-    o.width = 80;
-    o.height = 60;
-    o.out_dir = dir + "/out";
+    CompileOptions o = options(scene, dir, 80, 60);
     auto r = compile_scene(o);
     ASSERT_TRUE(r.ok()) << r.message();
     const std::string log = dir + "/povray.log";

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "layers/band_tracer3d.h"
 #include "layers/fit.h"
 
 namespace mirage::testing {
@@ -25,6 +26,14 @@ inline std::vector<DesignRay> level_column(double vfov_deg, int rows, double exi
         out.push_back(r);
     }
     return out;
+}
+
+/// Options for the 3D band trace that keep the design's own indices (no POV-Ray rounding):
+/// the geometry of the band model.
+inline Trace3dOptions exact_indices() {
+    Trace3dOptions o;
+    o.pov_precision = false;
+    return o;
 }
 
 }  // namespace mirage::testing

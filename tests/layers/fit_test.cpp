@@ -11,12 +11,7 @@
 namespace mirage {
 namespace {
 
-// The geometry of the band model with the design's own indices (no POV-Ray rounding).
-Trace3dOptions exact_indices() {
-    Trace3dOptions o;
-    o.pov_precision = false;
-    return o;
-}
+using testing::exact_indices;
 
 using testing::level_column;
 

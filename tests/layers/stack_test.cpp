@@ -7,16 +7,12 @@
 
 #include "layers/band_tracer3d.h"
 #include "layers/fit.h"
+#include "camera_column.h"
 
 namespace mirage {
 namespace {
 
-// The geometry of the band model with the design's own indices (no POV-Ray rounding).
-Trace3dOptions exact_indices() {
-    Trace3dOptions o;
-    o.pov_precision = false;
-    return o;
-}
+using testing::exact_indices;
 
 LayerStack two_layers(double n_below, double n_above, double h) {
     LayerStack s;
