@@ -124,8 +124,7 @@ PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& sta
     return march_curved_path(accel, start.origin, *cp);
 }
 
-ScanlinePropagator::ScanlinePropagator(const CurvedSettings& settings,
-                                       std::vector<CurvedPath> rows)
+ScanlinePropagator::ScanlinePropagator(const CurvedSettings& settings, std::vector<Row> rows)
     : per_ray_(settings), rows_(std::move(rows)) {}
 
 Result<ScanlinePropagator> ScanlinePropagator::make(const CurvedSettings& settings,
@@ -150,26 +149,32 @@ Result<ScanlinePropagator> ScanlinePropagator::make(const CurvedSettings& settin
                           "rotated about the vertical): " +
                           why);
     }
-    std::vector<CurvedPath> rows;
-    if (settings.profile.kind != ProfileKind::None && camera.location.y >= 0.0) {
-        rows.reserve(height);
-        for (int row = 0; row < height; ++row) {
-            const CameraRay r = camera_ray(camera, 0.5 * width, row + 0.5, width, height);
-            rows.push_back(sample_curved_path(settings, r.origin, r.direction, 0.0));
-        }
+    std::vector<Row> rows(height);
+    for (int row = 0; row < height; ++row) {
+        // The central column: the same ray a per-ray render traces there (for an odd width,
+        // the centre of a pixel), so that column is the same in both modes.
+        const CameraRay r = camera_ray(camera, 0.5 * width, row + 0.5, width, height);
+        rows[row].path = curved_path(settings, r.origin, r.direction, 0.0);
+        rows[row].slope = r.direction.y / std::hypot(r.direction.x, r.direction.z);
     }
     return ScanlinePropagator(settings, std::move(rows));
 }
 
 PathHit ScanlinePropagator::propagate(const SceneAccel& accel, const RayStart& start) const {
-    if (!start.image_position || rows_.empty()) return per_ray_.propagate(accel, start);
-    const double hl = std::hypot(start.direction.x, start.direction.z);
-    if (!(hl > 0.0)) return per_ray_.propagate(accel, start);
+    if (!start.image_position) return per_ray_.propagate(accel, start);
+    const glm::dvec3& d = start.direction;
+    const double hl = std::hypot(d.x, d.z);
+    MIRAGE_CHECK(hl > 0.0);  // a level camera sees no vertical ray
     const int row = std::clamp(static_cast<int>(std::floor(start.image_position->y)), 0,
                                static_cast<int>(rows_.size()) - 1);
+    const Row& r = rows_[row];
     // The row's path turned into this ray's azimuth.
-    return march(accel, start.origin, glm::dvec2(start.direction.x / hl, start.direction.z / hl),
-                 rows_[row]);
+    const glm::dvec2 heading(d.x / hl, d.z / hl);
+    if (r.path) return march(accel, start.origin, heading, *r.path);
+    if (d.y / hl == r.slope) return straight_.propagate(accel, start);
+    RayStart turned = start;
+    turned.direction = glm::normalize(glm::dvec3(heading.x, r.slope, heading.y));
+    return straight_.propagate(accel, turned);
 }
 
 double pixel_angle_rad(const Camera& camera, int width, int height) {

@@ -64,8 +64,10 @@ class CurvedPropagator final : public Propagator {
 /// The paper's scheme: one sampled path per image row, that of the row's central column
 /// (x = width / 2), rotated about the vertical into each camera ray's azimuth; every pixel of
 /// a row thus gets the row's elevation, which is exact only for a cylindrical projection.
-/// Needs a level camera (up vertical, direction and right horizontal).  Reflected rays, and
-/// camera rays without an image position, follow their own paths as with CurvedPropagator.
+/// Where the central ray goes straight (curved_path), the row's rays go straight at its
+/// elevation.  Needs a level camera (up vertical, direction and right horizontal).  Reflected
+/// rays, and camera rays without an image position, follow their own paths as with
+/// CurvedPropagator.
 class ScanlinePropagator final : public Propagator {
   public:
     /// Samples the rows' paths; fails for a camera that is not level (the message names the
@@ -75,10 +77,15 @@ class ScanlinePropagator final : public Propagator {
     PathHit propagate(const SceneAccel& accel, const RayStart& start) const override;
 
   private:
-    ScanlinePropagator(const CurvedSettings& settings, std::vector<CurvedPath> rows);
+    struct Row {
+        std::optional<CurvedPath> path;  // empty where the central ray goes straight
+        double slope = 0.0;              // the central ray's initial dy / (horizontal distance)
+    };
+    ScanlinePropagator(const CurvedSettings& settings, std::vector<Row> rows);
 
     CurvedPropagator per_ray_;
-    std::vector<CurvedPath> rows_;  // index: image row, top first
+    StraightPropagator straight_;
+    std::vector<Row> rows_;  // index: image row, top first
 };
 
 /// The angle one pixel subtends at the image's centre, between the camera rays through the
