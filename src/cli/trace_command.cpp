@@ -24,7 +24,8 @@ void setup_trace_command(CLI::App& app) {
     auto* sub = app.add_subcommand(
         "trace", "Render a scene with the built-in tracer along the atmosphere's curved rays");
     sub->add_option("scene", o->trace.scene, "the .pov scene")->required();
-    sub->add_option("-o,--output", o->trace.output, "the image: .png (as POV-Ray writes it) or .exr (linear)")
+    sub->add_option("-o,--output", o->trace.output,
+                    "the image: .png (as POV-Ray writes it) or .exr (linear)")
         ->required();
     sub->add_option("-W,--width", o->trace.width, "image width, pixels")->capture_default_str();
     sub->add_option("-H,--height", o->trace.height, "image height, pixels")->capture_default_str();
@@ -36,7 +37,8 @@ void setup_trace_command(CLI::App& app) {
     sub->add_flag("--scanline-paths", o->trace.scanline_paths,
                   "one path per image row rotated about the vertical, as Khote & Howard "
                   "(level camera only)");
-    sub->add_flag("--no-atmosphere", o->no_atmosphere, "straight rays, whatever the scene declares");
+    sub->add_flag("--no-atmosphere", o->no_atmosphere,
+                  "straight rays, whatever the scene declares");
     sub->add_option("-L,--library-path", o->trace.library_paths,
                     "extra include directory (searched first)");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");

@@ -73,7 +73,7 @@ CurvedPath sample_curved_path(const CurvedSettings& settings, const glm::dvec3& 
 }
 
 PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec2& heading,
-             const CurvedPath& cp) {
+              const CurvedPath& cp) {
     PolylineMarch march(accel, origin);
     const auto& points = cp.path.points;
     auto world = [&](const glm::dvec2& p) {
@@ -83,8 +83,8 @@ PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec
     for (std::size_t k = 1; k < points.size(); ++k) {
         if (march.segment_to(world(points[k]))) return march.result();
     }
-    const double slope = cp.path.end == PathEnd::Ground ? slope_at(cp.ray, cp.ray.dz_ground)
-                                                        : cp.path.end_slope;
+    const double slope =
+        cp.path.end == PathEnd::Ground ? slope_at(cp.ray, cp.ray.dz_ground) : cp.path.end_slope;
     MIRAGE_CHECK(std::isfinite(slope));
     march.ray(glm::normalize(glm::dvec3(heading.x, slope, heading.y)));
     return march.result();
@@ -109,8 +109,7 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm:
     return sample_curved_path(settings, origin, direction, travelled);
 }
 
-PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin,
-                          const CurvedPath& cp) {
+PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin, const CurvedPath& cp) {
     return march(accel, origin, cp.heading, cp);
 }
 
@@ -128,17 +127,15 @@ ScanlinePropagator::ScanlinePropagator(const CurvedSettings& settings, std::vect
     : per_ray_(settings), rows_(std::move(rows)) {}
 
 Result<ScanlinePropagator> ScanlinePropagator::make(const CurvedSettings& settings,
-                                                    const Camera& camera, int width,
-                                                    int height) {
+                                                    const Camera& camera, int width, int height) {
     MIRAGE_CHECK(width > 0 && height > 0);
     if (!camera_is_level(camera)) {
         std::string why;
-        const double pitch =
-            std::asin(std::clamp(glm::normalize(camera.direction).y, -1.0, 1.0));
+        const double pitch = std::asin(std::clamp(glm::normalize(camera.direction).y, -1.0, 1.0));
         const double roll = std::asin(std::clamp(glm::normalize(camera.right).y, -1.0, 1.0));
         if (std::abs(pitch) > 1e-9) {
-            why = "the camera looks " + degrees(pitch) + " degrees " +
-                  (pitch < 0.0 ? "down" : "up");
+            why =
+                "the camera looks " + degrees(pitch) + " degrees " + (pitch < 0.0 ? "down" : "up");
         } else if (std::abs(roll) > 1e-9) {
             why = "the camera is rolled " + degrees(roll) + " degrees";
         } else {
@@ -178,8 +175,10 @@ PathHit ScanlinePropagator::propagate(const SceneAccel& accel, const RayStart& s
 }
 
 double pixel_angle_rad(const Camera& camera, int width, int height) {
-    const glm::dvec3 a = camera_ray(camera, 0.5 * width, 0.5 * height - 0.5, width, height).direction;
-    const glm::dvec3 b = camera_ray(camera, 0.5 * width, 0.5 * height + 0.5, width, height).direction;
+    const glm::dvec3 a =
+        camera_ray(camera, 0.5 * width, 0.5 * height - 0.5, width, height).direction;
+    const glm::dvec3 b =
+        camera_ray(camera, 0.5 * width, 0.5 * height + 0.5, width, height).direction;
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 

@@ -55,8 +55,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     if (!opt.output.empty()) {
         const std::string ext = lower_extension(opt.output);
         if (ext != ".png" && ext != ".exr") {
-            return make_error(opt.output + ": unknown image type '" + ext +
-                              "' (use .png or .exr)");
+            return make_error(opt.output + ": unknown image type '" + ext + "' (use .png or .exr)");
         }
     }
 
@@ -129,8 +128,8 @@ std::string trace_summary(const TraceReport& r) {
     std::ostringstream out;
     out << r.scene << ": atmosphere " << r.atmosphere << ", " << path_mode_name(r.mode);
     if (r.mode != PathMode::Straight) {
-        out << " within " << sig(r.tolerance_px, 3) << " px (" << sig(r.tolerance_px * r.pixel_rad, 3)
-            << " rad)";
+        out << " within " << sig(r.tolerance_px, 3) << " px ("
+            << sig(r.tolerance_px * r.pixel_rad, 3) << " rad)";
     }
     out << "\n" << format_stats(r.render.stats, r.width, r.height) << "\n";
     if (!r.output.empty()) out << "wrote " << r.output << "\n";

@@ -36,12 +36,12 @@ struct TraceOptions {
 struct TraceReport {
     std::string scene;
     int width = 0, height = 0;
-    std::string atmosphere;      // what the scene declares, or why there is none
+    std::string atmosphere;  // what the scene declares, or why there is none
     PathMode mode = PathMode::Straight;
-    double tolerance_px = 0.0;   // the paths' largest error, pixels
-    double pixel_rad = 0.0;      // one pixel's angle at the image centre, rad
-    RenderResult render;         // the image (linear) and the render's statistics
-    std::string output;          // the file written, if any
+    double tolerance_px = 0.0;  // the paths' largest error, pixels
+    double pixel_rad = 0.0;     // one pixel's angle at the image centre, rad
+    RenderResult render;        // the image (linear) and the render's statistics
+    std::string output;         // the file written, if any
 };
 
 /// Traces the scene.  On failure nothing was written and the message names the place at

@@ -32,8 +32,8 @@ void write_text(const fs::path& path, const std::string& text) {
 TEST(TraceCli, TracesAScene) {
     const auto dir = test_dir("trace_cli", "traces");
     const auto out = dir / "desert.png";
-    auto r = run_tool("trace " + std::string(MIRAGE_SOURCE_DIR) +
-                      "/scenes/desert.pov -o " + quoted(out) + " -W 64 -H 48 --threads 2");
+    auto r = run_tool("trace " + std::string(MIRAGE_SOURCE_DIR) + "/scenes/desert.pov -o " +
+                      quoted(out) + " -W 64 -H 48 --threads 2");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err, "");  // no progress bar when stderr is not a terminal
     EXPECT_NE(r.out.find("desert.pov: atmosphere paper (inferior), per-ray paths within 0.5 px"),
@@ -118,8 +118,8 @@ TEST(TraceCli, ScanlinePathsRefuseATiltedCamera) {
     EXPECT_EQ(r.err, "mirage trace: " + scene.string() +
                          ":4:1: scanline paths need a level camera (one path per image row is "
                          "rotated about the vertical): the camera looks 5.71 degrees up\n");
-    auto per_ray = run_tool("trace " + quoted(scene) + " -o " + quoted(dir / "out.png") +
-                            " -W 32 -H 24 -q");
+    auto per_ray =
+        run_tool("trace " + quoted(scene) + " -o " + quoted(dir / "out.png") + " -W 32 -H 24 -q");
     EXPECT_EQ(per_ray.exit_code, 0) << per_ray.err;
 }
 
@@ -132,10 +132,10 @@ TEST(TraceCli, EveryShippedSceneWithoutTheAtmosphereMatchesPovRay) {
         const std::string name = entry.path().stem().string();
         const auto dir = test_dir("trace_cli", "parity_" + name);
         // POV-Ray renders the scene as written: mirage.inc without compiled layers adds none.
-        const std::string command =
-            "cd " + quoted(dir) + " && povray -D -A +FN8 +W" + std::to_string(w) + " +H" +
-            std::to_string(h) + " +L" + quoted(fs::path(MIRAGE_SOURCE_DIR) / "pov_includes") +
-            " +I" + quoted(entry.path()) + " +Opovray.png > povray.log 2>&1";
+        const std::string command = "cd " + quoted(dir) + " && povray -D -A +FN8 +W" +
+                                    std::to_string(w) + " +H" + std::to_string(h) + " +L" +
+                                    quoted(fs::path(MIRAGE_SOURCE_DIR) / "pov_includes") + " +I" +
+                                    quoted(entry.path()) + " +Opovray.png > povray.log 2>&1";
         ASSERT_EQ(std::system(command.c_str()), 0) << command;
         auto r = run_tool("trace " + quoted(entry.path()) + " --no-atmosphere -q -W " +
                           std::to_string(w) + " -H " + std::to_string(h) + " -o " +
@@ -146,10 +146,11 @@ TEST(TraceCli, EveryShippedSceneWithoutTheAtmosphereMatchesPovRay) {
         ASSERT_TRUE(pov.ok() && ours.ok());
         auto cmp = compare_images(*pov, *ours, 2.5 / 255.0);
         ASSERT_TRUE(cmp.ok());
-        std::printf("%s %dx%d, no atmosphere: POV-Ray vs mirage trace PSNR %.2f dB, max %.3f, "
-                    "%lld pixels over 2.5/255\n",
-                    name.c_str(), w, h, cmp->psnr_db, cmp->max_error,
-                    static_cast<long long>(cmp->pixels_over));
+        std::printf(
+            "%s %dx%d, no atmosphere: POV-Ray vs mirage trace PSNR %.2f dB, max %.3f, "
+            "%lld pixels over 2.5/255\n",
+            name.c_str(), w, h, cmp->psnr_db, cmp->max_error,
+            static_cast<long long>(cmp->pixels_over));
         EXPECT_GE(cmp->psnr_db, 40.0) << name;
         ++scenes;
     }

@@ -108,9 +108,10 @@ TEST(CurvedPropagator, HitsOnAVerticalScreenMatchTheExactPathWithinTheTolerance)
             EXPECT_GT(checked, 200);
             // The paths do bend, by far more than the tolerance: a straight ray would fail.
             EXPECT_GT(most_bent, 10.0) << tolerance << " " << screen_z;
-            std::printf("tolerance %g rad, screen at %g: largest error %.3f of the allowance, "
-                        "straight rays %.0f\n",
-                        tolerance, screen_z, worst, most_bent);
+            std::printf(
+                "tolerance %g rad, screen at %g: largest error %.3f of the allowance, "
+                "straight rays %.0f\n",
+                tolerance, screen_z, worst, most_bent);
         }
     }
 }
@@ -258,7 +259,8 @@ TEST(CurvedPropagator, TheShaderStartsAReflectedRayWhereTheCameraRayEndsWithItsL
     mirror.ambient = glm::dvec3(0.0);
     mirror.diffuse = 0.0;
     mirror.reflection = glm::dvec3(1.0);
-    s.primitives.push_back(primitive(Plane{{0.0, 0.0, 1.0}, 15.0}, texture(solid(rgb(1, 1, 1)), mirror)));
+    s.primitives.push_back(
+        primitive(Plane{{0.0, 0.0, 1.0}, 15.0}, texture(solid(rgb(1, 1, 1)), mirror)));
     s.primitives.push_back(primitive(Plane{{0.0, 0.0, 1.0}, -20.0}, Texture{}));
     const SceneAccel accel = build(s);
     const Shader shader(s, accel, recording);
@@ -310,7 +312,7 @@ TEST(CurvedPropagator, StraightWhereNothingBends) {
     };
     same({{0.0, 1.0, 0.0}, {0.0, 1.0, 0.0}});  // vertical: hits the sphere's bottom
     same({{0.0, 1.0, 0.0}, {0.0, -1.0, 0.0}});
-    same({{0.0, -2.0, 0.0}, {0.0, 0.0, 1.0}});  // below the ground
+    same({{0.0, -2.0, 0.0}, {0.0, 0.0, 1.0}});                            // below the ground
     same({{0.0, 0.0, 0.0}, glm::normalize(glm::dvec3(0.0, -1.0, 1.0))});  // into the ground
     // Steep enough that the direction turns by less than half the tolerance anywhere.
     same({{0.0, 1.0, 0.0}, glm::normalize(glm::dvec3(1e-4, 1.0, 0.0))});
@@ -368,7 +370,8 @@ TEST(ScanlinePropagator, EveryPixelOfARowGetsTheRowsElevation) {
                 EXPECT_EQ(a.surface.point, b.surface.point);  // the central column is exact
             } else if (row != 31) {
                 // Off the centre the pixel's own elevation is flatter than the row's.
-                EXPECT_GT(std::abs(a.surface.point.y - b.surface.point.y), 1e-3) << row << " " << col;
+                EXPECT_GT(std::abs(a.surface.point.y - b.surface.point.y), 1e-3)
+                    << row << " " << col;
             }
         }
     }

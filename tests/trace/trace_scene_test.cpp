@@ -153,13 +153,13 @@ TEST(TraceScene, ScanlinePathsAgainstPerRayPaths) {
         ASSERT_TRUE(cmp.ok());
         const RenderStats& sp = per_ray->render.stats;
         const RenderStats& ss = scanline->render.stats;
-        std::printf("%s %dx%d: scanline vs per-ray PSNR %.2f dB, RMSE %.5f, max %.3f, %lld of "
-                    "%lld pixels over 2.5/255; per ray %.3f s (%.2f segments/ray), scanline "
-                    "%.3f s (%.2f segments/ray)\n",
-                    name.c_str(), w, h, cmp->psnr_db, cmp->rmse, cmp->max_error,
-                    static_cast<long long>(cmp->pixels_over),
-                    static_cast<long long>(cmp->pixel_count), sp.seconds, sp.segments_per_ray(),
-                    ss.seconds, ss.segments_per_ray());
+        std::printf(
+            "%s %dx%d: scanline vs per-ray PSNR %.2f dB, RMSE %.5f, max %.3f, %lld of "
+            "%lld pixels over 2.5/255; per ray %.3f s (%.2f segments/ray), scanline "
+            "%.3f s (%.2f segments/ray)\n",
+            name.c_str(), w, h, cmp->psnr_db, cmp->rmse, cmp->max_error,
+            static_cast<long long>(cmp->pixels_over), static_cast<long long>(cmp->pixel_count),
+            sp.seconds, sp.segments_per_ray(), ss.seconds, ss.segments_per_ray());
         if (name == "desert") {
             // A wide field: the rows' error shows.
             EXPECT_GT(cmp->rmse, 0.005);
@@ -227,8 +227,9 @@ camera { location <0, 0, 0> look_at <0, 0, 1> }
 background { rgb <0, 1, 0> }
 )";
     const std::string red = "pigment { rgb <1, 0, 0> }";
-    const std::string blue = "pigment { gradient y color_map { [0 rgbt <0, 0, 1, 0.5>] "
-                             "[1 rgbt <0, 0, 1, 0.9>] } }";
+    const std::string blue =
+        "pigment { gradient y color_map { [0 rgbt <0, 0, 1, 0.5>] "
+        "[1 rgbt <0, 0, 1, 0.9>] } }";
     struct Case {
         std::string name, sky;
         glm::vec3 centre;  // the centre's code values, POV-Ray's
