@@ -5,6 +5,8 @@
 #   make                 install what is missing, build build/mirage
 #   make render          compile scenes/desert.pov to a banded medium and render it with POV-Ray
 #                        (SCENE=scenes/road.pov W=640 H=480 TOL=0.5 to choose)
+#   make trace           render the scene with the built-in tracer along the curved rays
+#                        (build/render/NAME-trace.png; same SCENE, W, H, TOL)
 #   make test            build and run every test through CTest
 #   make bench           Google Benchmark for the path kernels
 #   make compare         band models against the continuous tracer: error against run time
@@ -22,7 +24,7 @@ NAME    := $(basename $(notdir $(SCENE)))
 PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev openimageio-tools \
             libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox
 
-.PHONY: all deps configure build test render bench compare clean
+.PHONY: all deps configure build test render trace bench compare clean
 
 all: build
 
@@ -48,6 +50,11 @@ render: build
 	    { tail -20 $(BUILD)/render/$(NAME)/povray.log; exit 1; }
 	@grep -E "Max Level|Trace Time" $(BUILD)/render/$(NAME)/povray.log | sed "s/^ */  /"
 	@echo "image: $(BUILD)/render/$(NAME).png"
+
+trace: build
+	@mkdir -p $(BUILD)/render
+	$(BUILD)/mirage trace $(SCENE) --width $(W) --height $(H) $(if $(TOL),--tolerance $(TOL)) \
+	    -o $(BUILD)/render/$(NAME)-trace.png
 
 bench: build
 	$(BUILD)/mirage_bench

@@ -1,6 +1,7 @@
 // Speed of the built-in tracer: Mrays/s rendering a parity scene (checker plane, shiny and
-// reflecting spheres, box, cylinder, disc, gradient sky, two lights), and the cost of the
-// scene queries alone.  Run: build/mirage_bench --benchmark_filter=Trace
+// reflecting spheres, box, cylinder, disc, gradient sky, two lights), the cost of the scene
+// queries alone, and `mirage trace` on scenes/desert.pov with straight rays, per-ray paths
+// and per-scanline paths.  Run: build/mirage_bench --benchmark_filter=Trace
 #include <benchmark/benchmark.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,6 +10,7 @@
 
 #include "trace/render.h"
 #include "trace/scene_accel.h"
+#include "trace/trace_scene.h"
 
 namespace mirage {
 namespace {
@@ -123,6 +125,49 @@ void BM_TraceClosestHit(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_TraceClosestHit);
+
+/// `mirage trace scenes/desert.pov -W W -H H` with straight rays (--no-atmosphere), per-ray
+/// paths or per-scanline paths (--scanline-paths), on all cores; reports Mrays/s of the
+/// render (camera, reflected and shadow rays over the tracing's wall-clock time, parsing
+/// excluded) and the segments per propagated ray.
+void BM_TraceDesert(benchmark::State& state) {
+    TraceOptions o;
+    o.scene = std::string(MIRAGE_SOURCE_DIR) + "/scenes/desert.pov";
+    o.width = static_cast<int>(state.range(1));
+    o.height = o.width * 3 / 4;
+    o.progress = false;
+    const int mode = static_cast<int>(state.range(0));
+    o.atmosphere = mode != 0;
+    o.scanline_paths = mode == 2;
+    std::uint64_t rays = 0;
+    double seconds = 0.0;
+    double segments = 0.0;
+    for (auto _ : state) {
+        auto traced = trace_scene(o);
+        if (!traced.ok()) {
+            state.SkipWithError(traced.message().c_str());
+            return;
+        }
+        const RenderStats& st = traced->render.stats;
+        rays += st.all_rays();
+        seconds += st.seconds;
+        segments = st.segments_per_ray();
+        state.SetIterationTime(st.seconds);
+    }
+    state.SetLabel(mode == 0 ? "straight" : mode == 1 ? "per-ray paths" : "scanline paths");
+    state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays) / seconds * 1e-6);
+    state.counters["rays/frame"] =
+        benchmark::Counter(static_cast<double>(rays) / static_cast<double>(state.iterations()));
+    state.counters["segments/ray"] = segments;
+}
+BENCHMARK(BM_TraceDesert)
+    ->ArgNames({"mode", "width"})
+    ->Args({0, 640})
+    ->Args({1, 640})
+    ->Args({2, 640})
+    ->Args({1, 320})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime();
 
 }  // namespace
 }  // namespace mirage

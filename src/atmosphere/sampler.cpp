@@ -59,17 +59,60 @@ bool chord_within(double m, double p, double q, double allow_p, const SampleSett
 }
 
 // Chooses the next step from `a` (at most to `limit`) so that every dz image of [a, a+step]
-// that `within(lo, hi)` checks keeps the tolerance.
+// that `within(lo, hi)` checks keeps the tolerance.  `previous` is the step before (0 for
+// none): where the search starts.
 template <class Within>
-double next_step(double a, double limit, Within within) {
+double next_step(double a, double limit, Within within, double previous) {
     const double room = limit - a;
     MIRAGE_CHECK(std::isfinite(room) && room > 0.0);
-    // The whole room if it passes; else halve until a step passes, then try to grow it back:
-    // steps are within a factor 2 of the largest that passes.
+    // The whole room if it passes; else the room halved k times for the smallest k that
+    // passes, then grown back while it passes: steps are within a factor 2 of the largest
+    // that passes.  A step passes whenever a longer one does (the chord error and the
+    // curvature bound grow with the step), so k is found by galloping from the previous
+    // step's k and bisecting, in a handful of tests instead of one per halving (the room is
+    // up to 1e9 m).  ldexp(room, -k) is the room halved k times, exactly.
     double step = room;
     if (within(a, a + step)) return step;
-    for (int iter = 0; iter < 2000 && !within(a, a + step); ++iter) step *= 0.5;
-    MIRAGE_CHECK(within(a, a + step) && a + step > a);
+    constexpr int kMaxHalvings = 1074;  // below, room * 2^-k is no longer a positive double
+    auto passes = [&](int k) { return within(a, a + std::ldexp(room, -k)); };
+    int fail = 0;  // the room fails
+    int pass = 0;
+    int k = 1;
+    if (previous > 0.0) {
+        k = std::clamp(static_cast<int>(std::lround(std::log2(room / previous))), 1,
+                       kMaxHalvings);
+    }
+    if (passes(k)) {
+        pass = k;
+        for (int d = 1; pass - d > fail; d *= 2) {
+            if (!passes(pass - d)) {
+                fail = pass - d;
+                break;
+            }
+            pass -= d;
+        }
+    } else {
+        fail = k;
+        for (int d = 1; pass == 0; d *= 2) {
+            const int t = std::min(fail + d, kMaxHalvings);
+            if (passes(t)) {
+                pass = t;
+            } else {
+                MIRAGE_CHECK(t < kMaxHalvings);
+                fail = t;
+            }
+        }
+    }
+    while (pass - fail > 1) {
+        const int mid = fail + (pass - fail) / 2;
+        if (passes(mid)) {
+            pass = mid;
+        } else {
+            fail = mid;
+        }
+    }
+    step = std::ldexp(room, -pass);
+    MIRAGE_CHECK(a + step > a);
     for (int iter = 0; iter < 60; ++iter) {
         const double grown = 1.5 * step;
         if (grown >= room || !within(a, a + grown)) break;
@@ -129,13 +172,19 @@ SampledPath sample_path(const ExactRay& ray, const SampleSettings& st) {
     if (!vertex_ahead) {
         // One monotone piece from the start.
         double a = 0.0;
+        double previous = 0.0;
         const bool rising = ray.sg > 0;  // inferior up / escaping up; else descending
         while (a < dz_end && !straight_from(a)) {
-            const double step = next_step(a, dz_end, [&](double lo, double hi) {
-                hi = std::min(hi, dz_end);
-                const double y_low = rising ? height_at(ray, lo) : height_at(ray, hi);
-                return chord_within(curvature_bound(ray, y_low), lo, hi, allowance_at(lo), st);
-            });
+            const double step = next_step(
+                a, dz_end,
+                [&](double lo, double hi) {
+                    hi = std::min(hi, dz_end);
+                    const double y_low = rising ? height_at(ray, lo) : height_at(ray, hi);
+                    return chord_within(curvature_bound(ray, y_low), lo, hi, allowance_at(lo),
+                                        st);
+                },
+                previous);
+            previous = step;
             a = std::min(dz_end, a + step);
             point(a);
         }
@@ -166,6 +215,7 @@ SampledPath sample_path(const ExactRay& ray, const SampleSettings& st) {
     bool straight_after = false;
     double u_after_end = u_after_max;
     double u = 0.0;
+    double previous = 0.0;
     while (true) {
         const bool need_before = u < u_before;
         const bool need_after = !straight_after && u < u_after_max;
@@ -183,7 +233,8 @@ SampledPath sample_path(const ExactRay& ray, const SampleSettings& st) {
                 ok = ok && chord_within(m, zt + lo, q, allowance_at(zt + lo), st);
             }
             return ok;
-        });
+        }, previous);
+        previous = step;
         u = std::min(limit, u + step);
         us.push_back(u);
         ys.push_back(branch_height(u));

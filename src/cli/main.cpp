@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     mirage::setup_path_command(app);
     mirage::setup_compile_command(app);
+    mirage::setup_trace_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "atmosphere/exact_ray.h"
+#include "compile/library_paths.h"
 #include "layers/band_tracer3d.h"
 #include "layers/fit.h"
 #include "layers/outcome.h"
@@ -35,17 +36,6 @@ constexpr int kMaxLevel = 255;
 constexpr double kLayersExtentFactor = 1000.0;
 
 std::string scene_name(const std::string& path) { return fs::path(path).stem().string(); }
-
-// The directory mirage.inc lives in: pov_includes beside the executable's project.
-std::vector<std::string> default_library_paths(const std::string& scene) {
-    std::vector<std::string> paths;
-    paths.push_back(fs::absolute(fs::path(scene)).parent_path().string());
-#ifdef MIRAGE_POV_INCLUDES
-    paths.push_back(MIRAGE_POV_INCLUDES);
-#endif
-    paths.push_back("/usr/share/povray-3.7/include");
-    return paths;
-}
 
 struct PixelRay {
     glm::dvec3 direction{0.0};

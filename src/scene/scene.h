@@ -128,8 +128,8 @@ struct Camera {
 };
 
 struct SkySphere {
-    std::vector<Pigment> pigments;  // layered, the first on top, as POV-Ray
-    // (in file order; note POV-Ray 3.7's trace.cpp composites the LAST pigment on top)
+    std::vector<Pigment> pigments;  // in file order; POV-Ray 3.7 layers the LAST on top (a
+                                    // transparent later pigment shows the earlier ones through)
     Transform transform;
     FileLoc loc;
     glm::dvec3 emission{1.0};  // POV-Ray 3.7's sky_sphere `emission`: scales the sky colour

@@ -8,14 +8,15 @@
 
 namespace mirage {
 
-PathHit StraightPropagator::propagate(const SceneAccel& accel, const glm::dvec3& origin,
-                                      const glm::dvec3& direction) const {
+PathHit StraightPropagator::propagate(const SceneAccel& accel, const RayStart& start) const {
     PathHit path;
-    path.direction = direction;
+    path.direction = start.direction;
     path.segments = 1;
-    if (auto hit = accel.closest_hit(origin, direction, kMinIsectDepth, kPovBoundHuge)) {
+    if (auto hit =
+            accel.closest_hit(start.origin, start.direction, kMinIsectDepth, kPovBoundHuge)) {
         path.hit = true;
         path.surface = *hit;
+        path.length = hit->t;
     }
     return path;
 }
@@ -47,6 +48,7 @@ bool PolylineMarch::query(const glm::dvec3& direction, double length) {
             result_.hit = true;
             result_.surface = *hit;
             result_.direction = direction;
+            result_.length = length_ + hit->t;
             done_ = true;
             return true;
         }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
 
 #include "trace/scene_accel.h"
 
@@ -14,31 +15,41 @@ namespace mirage {
 /// to its origin, which keeps reflected rays off the surface they leave.
 inline constexpr double kMinIsectDepth = 1.0e-4;
 
+/// Where a ray starts and what it has behind it.
+struct RayStart {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, 1.0};  // unit, the direction of travel at the origin
+    double travelled = 0.0;  // path length from the eye to the origin: 0 for a camera ray, the
+                             // camera ray's path (and earlier bounces') for a reflected ray
+    // Camera rays: the image position the ray goes through, in pixels from the top-left
+    // corner (a pixel's centre is (col + 0.5, row + 0.5)); empty for other rays.
+    std::optional<glm::dvec2> image_position = std::nullopt;
+};
+
 /// The end of a ray's path.
 struct PathHit {
     bool hit = false;
     SurfaceHit surface;         // valid when hit; surface.t is along the last segment
     glm::dvec3 direction{0.0};  // unit direction of travel at the hit point, or the final
                                 // direction when the ray escapes (sky lookup)
+    double length = 0.0;        // path length from the start to the hit (when hit)
     int segments = 0;           // straight segments followed (statistics)
 };
 
-/// Follows a ray from `origin` along unit `direction` through the scene, possibly bending,
-/// to the first surface it meets or out of the scene.  Implementations must be thread-safe
-/// (propagate is called concurrently) and ignore surfaces within kMinIsectDepth of the
-/// origin along the path, as POV-Ray does.
+/// Follows a ray from `start.origin` along unit `start.direction` through the scene, possibly
+/// bending, to the first surface it meets or out of the scene.  Implementations must be
+/// thread-safe (propagate is called concurrently) and ignore surfaces within kMinIsectDepth
+/// of the origin along the path, as POV-Ray does.
 class Propagator {
   public:
     virtual ~Propagator() = default;
-    virtual PathHit propagate(const SceneAccel& accel, const glm::dvec3& origin,
-                              const glm::dvec3& direction) const = 0;
+    virtual PathHit propagate(const SceneAccel& accel, const RayStart& start) const = 0;
 };
 
 /// Straight rays: one segment to infinity (POV-Ray's BOUND_HUGE).
 class StraightPropagator final : public Propagator {
   public:
-    PathHit propagate(const SceneAccel& accel, const glm::dvec3& origin,
-                      const glm::dvec3& direction) const override;
+    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override;
 };
 
 /// Marches a path along a polyline, one straight segment at a time, stopping at the first

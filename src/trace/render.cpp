@@ -116,7 +116,11 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                 for (int x = x0; x < x1; ++x) {
                     const PixelRay ray =
                         pixel_ray(scene.camera, x + 0.5, y + 0.5, settings.width, settings.height);
-                    const glm::dvec3 c = shader.trace_camera_ray(ray.origin, ray.direction, mine);
+                    RayStart start;
+                    start.origin = ray.origin;
+                    start.direction = ray.direction;
+                    start.image_position = glm::dvec2(x + 0.5, y + 0.5);
+                    const glm::dvec3 c = shader.trace_camera_ray(start, mine);
                     MIRAGE_CHECK(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
                     result.image.set(x, y, glm::vec3(c));
                 }

@@ -102,25 +102,33 @@ Shader::Shader(const Scene& scene, const SceneAccel& accel, const Propagator& pr
 
 glm::dvec3 Shader::trace_camera_ray(const glm::dvec3& origin, const glm::dvec3& direction,
                                     TraceCounters& counters) const {
-    ++counters.camera_rays;
-    return trace_ray(origin, direction, 1.0, 0, counters);
+    RayStart start;
+    start.origin = origin;
+    start.direction = direction;
+    return trace_camera_ray(start, counters);
 }
 
-glm::dvec3 Shader::trace_ray(const glm::dvec3& origin, const glm::dvec3& direction, double weight,
-                             int level, TraceCounters& counters) const {
+glm::dvec3 Shader::trace_camera_ray(const RayStart& start, TraceCounters& counters) const {
+    MIRAGE_CHECK(start.travelled == 0.0);
+    ++counters.camera_rays;
+    return trace_ray(start, 1.0, 0, counters);
+}
+
+glm::dvec3 Shader::trace_ray(const RayStart& start, double weight, int level,
+                             TraceCounters& counters) const {
     // TraceRay: out of trace levels, or too faint to matter, is black (not the sky).
     if (level >= max_trace_level_ || weight < kAdcBailout) {
         if (level >= max_trace_level_) ++counters.trace_level_cutoffs;
         return glm::dvec3(0.0);
     }
     if (level > 0) ++counters.reflected_rays;
-    const PathHit path = propagator_->propagate(*accel_, origin, direction);
+    const PathHit path = propagator_->propagate(*accel_, start);
     counters.segments += static_cast<std::uint64_t>(path.segments);
-    return shade(path, weight, level + 1, counters);
+    return shade(path, weight, level + 1, counters, start.travelled + path.length);
 }
 
-glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
-                         TraceCounters& counters) const {
+glm::dvec3 Shader::shade(const PathHit& path, double weight, int level, TraceCounters& counters,
+                         double travelled) const {
     if (!path.hit) return sky_colour(*scene_, path.direction);
 
     const SurfaceHit& hit = path.surface;
@@ -202,9 +210,12 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level,
     const glm::dvec3 reflectivity = to_single(finish.reflection);
     if (reflectivity != glm::dvec3(0.0)) {
         glm::dvec3 reflected = ray_dir + (-2.0 * glm::dot(ray_dir, normal)) * normal;
-        reflected = glm::normalize(reflected);
-        const glm::dvec3 seen =
-            trace_ray(point, reflected, weight * max3(reflectivity), level, counters);
+        RayStart bounce;
+        bounce.origin = point;
+        bounce.direction = glm::normalize(reflected);
+        // A curved propagator keeps the reflected ray's error an angle seen from the eye.
+        bounce.travelled = travelled;
+        const glm::dvec3 seen = trace_ray(bounce, weight * max3(reflectivity), level, counters);
         colour += reflectivity * seen;
     }
     return colour;

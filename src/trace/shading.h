@@ -49,16 +49,21 @@ class Shader {
     glm::dvec3 trace_camera_ray(const glm::dvec3& origin, const glm::dvec3& direction,
                                 TraceCounters& counters) const;
 
+    /// The same for a camera ray that names its image position (start.travelled is 0).
+    glm::dvec3 trace_camera_ray(const RayStart& start, TraceCounters& counters) const;
+
     /// The colour at the end of a path: its surface lit by the scene's lights, plus
     /// reflection, or the sky when it escaped.  `weight` is the path's contribution to the
-    /// pixel and `level` the trace level reached (1 for a camera ray's hit).
-    glm::dvec3 shade(const PathHit& path, double weight, int level, TraceCounters& counters) const;
+    /// pixel, `level` the trace level reached (1 for a camera ray's hit) and `travelled` the
+    /// path length from the eye to the hit (where a reflected ray starts).
+    glm::dvec3 shade(const PathHit& path, double weight, int level, TraceCounters& counters,
+                     double travelled = 0.0) const;
 
     int max_trace_level() const { return max_trace_level_; }
 
   private:
-    glm::dvec3 trace_ray(const glm::dvec3& origin, const glm::dvec3& direction, double weight,
-                         int level, TraceCounters& counters) const;
+    glm::dvec3 trace_ray(const RayStart& start, double weight, int level,
+                         TraceCounters& counters) const;
 
     const Scene* scene_;
     const SceneAccel* accel_;

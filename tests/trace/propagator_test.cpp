@@ -29,18 +29,19 @@ TEST(StraightPropagator, OneSegmentAndPovRaysMinimumDepth) {
     const Scene s = ground_and_ball();
     const SceneAccel accel = build(s);
     const StraightPropagator straight;
-    PathHit p = straight.propagate(accel, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0});
+    PathHit p = straight.propagate(accel, {{0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}});
     EXPECT_TRUE(p.hit);
     EXPECT_EQ(p.segments, 1);
     EXPECT_EQ(p.surface.primitive, 1);
     EXPECT_DOUBLE_EQ(p.surface.t, 5.0);
+    EXPECT_DOUBLE_EQ(p.length, 5.0);
     EXPECT_EQ(p.direction, glm::dvec3(0.0, 0.0, 1.0));
     // A surface closer than 1e-4 is ignored (POV-Ray's MIN_ISECT_DEPTH): here the ground
     // 5e-5 below the origin; the ray goes on to the sky.
-    p = straight.propagate(accel, {0.0, 5e-5, 0.0}, {0.0, -1.0, 0.0});
+    p = straight.propagate(accel, {{0.0, 5e-5, 0.0}, {0.0, -1.0, 0.0}});
     EXPECT_FALSE(p.hit);
     EXPECT_EQ(p.direction, glm::dvec3(0.0, -1.0, 0.0));
-    p = straight.propagate(accel, {0.0, 2e-4, 0.0}, {0.0, -1.0, 0.0});
+    p = straight.propagate(accel, {{0.0, 2e-4, 0.0}, {0.0, -1.0, 0.0}});
     EXPECT_TRUE(p.hit);
 }
 
@@ -53,7 +54,7 @@ TEST(PolylineMarch, SplitStraightLinesFindWhatOneRayFinds) {
     for (int i = 0; i < 5000; ++i) {
         const glm::dvec3 o(2.0 * u(rng), 1.0 + u(rng), -2.0 + u(rng));
         const glm::dvec3 d = glm::normalize(glm::dvec3(0.3 * u(rng), 0.4 * u(rng) - 0.1, 1.0));
-        const PathHit one = straight.propagate(accel, o, d);
+        const PathHit one = straight.propagate(accel, {o, d});
         PolylineMarch march(accel, o);
         double s_done = 0.0;
         for (int k = 0; k < 12 && !march.done(); ++k) {
@@ -65,6 +66,7 @@ TEST(PolylineMarch, SplitStraightLinesFindWhatOneRayFinds) {
         ASSERT_EQ(many.hit, one.hit) << i;
         if (one.hit) {
             EXPECT_EQ(many.surface.primitive, one.surface.primitive);
+            EXPECT_NEAR(many.length, one.length, 1e-9);
             EXPECT_NEAR(glm::length(many.surface.point - one.surface.point), 0.0, 1e-9);
         }
     }

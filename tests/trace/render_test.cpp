@@ -82,10 +82,9 @@ TEST(Render, CountsRaysAndSegments) {
 /// A propagator that records how many rays it followed and delegates to straight rays.
 class CountingPropagator final : public Propagator {
   public:
-    PathHit propagate(const SceneAccel& accel, const glm::dvec3& origin,
-                      const glm::dvec3& direction) const override {
+    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override {
         ++calls;
-        PathHit p = straight_.propagate(accel, origin, direction);
+        PathHit p = straight_.propagate(accel, start);
         p.segments = 3;  // pretend to bend
         return p;
     }

@@ -1,0 +1,99 @@
+// The continuous model in the tracer: rays follow the exact curved paths of a horizontally
+// stratified atmosphere (exact_ray.h), sampled to a tolerance seen from the eye (sampler.h)
+// and marched one straight segment at a time through the scene (PolylineMarch).  Per ray, or
+// per image row as Khote & Howard do (ScanlinePropagator).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <optional>
+#include <vector>
+
+#include "atmosphere/exact_ray.h"
+#include "atmosphere/sampler.h"
+#include "scene/scene.h"
+#include "trace/propagator.h"
+#include "util/result.h"
+
+namespace mirage {
+
+struct CurvedSettings {
+    Profile profile;             // heights in scene units, ground at y = 0 (see
+                                 // profile_in_scene_units); ProfileKind::None: straight rays
+    double tolerance_rad = 0.0;  // largest path error, as an angle seen from the eye, rad
+};
+
+/// One ray's path in its vertical plane: the exact ray and its sampled polyline, and the
+/// plane's horizontal direction.
+struct CurvedPath {
+    ExactRay ray;
+    SampledPath path;
+    glm::dvec2 heading{0.0, 1.0};  // unit (x, z) direction of the vertical plane
+};
+
+/// The sampled path of a ray that starts at `origin` along unit `direction`, `travelled`
+/// path length from the eye (the sampler's start_distance: the allowance stays an angle seen
+/// from the eye for reflected rays).  Nothing when the ray goes straight: no index gradient,
+/// a start below the ground (y < 0, or on it heading down), a (nearly) vertical ray, or any
+/// ray whose direction cannot turn by more than half the tolerance anywhere in the
+/// atmosphere (its straight line then keeps the tolerance everywhere).
+std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm::dvec3& origin,
+                                      const glm::dvec3& direction, double travelled);
+
+/// Marches `path` from `origin` through the scene, its vertical plane along path.heading.
+/// After the last sample the ray goes on straight: with the path's asymptotic (or cut) slope
+/// for a path that ends in the air, and along the exact path's tangent where it reaches the
+/// ground at y = 0 when no surface is there (a scene without a ground object: the ray goes
+/// on below it as through the band model's bottom layer).  An escaping ray's direction is
+/// the path's final direction, for the sky.
+PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin,
+                          const CurvedPath& path);
+
+/// Every ray (camera and reflected, each from its own start and direction) along its own
+/// exact path.
+class CurvedPropagator final : public Propagator {
+  public:
+    explicit CurvedPropagator(const CurvedSettings& settings);
+    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override;
+    const CurvedSettings& settings() const { return settings_; }
+
+  private:
+    CurvedSettings settings_;
+    StraightPropagator straight_;
+};
+
+/// The paper's scheme: one sampled path per image row, that of the row's central column
+/// (x = width / 2), rotated about the vertical into each camera ray's azimuth; every pixel of
+/// a row thus gets the row's elevation, which is exact only for a cylindrical projection.
+/// Where the central ray goes straight (curved_path), the row's rays go straight at its
+/// elevation.  Needs a level camera (up vertical, direction and right horizontal).  Reflected
+/// rays, and camera rays without an image position, follow their own paths as with
+/// CurvedPropagator.
+class ScanlinePropagator final : public Propagator {
+  public:
+    /// Samples the rows' paths; fails for a camera that is not level (the message names the
+    /// camera's place in the scene file).
+    static Result<ScanlinePropagator> make(const CurvedSettings& settings, const Camera& camera,
+                                           int width, int height);
+    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override;
+
+  private:
+    struct Row {
+        std::optional<CurvedPath> path;  // empty where the central ray goes straight
+        double slope = 0.0;              // the central ray's initial dy / (horizontal distance)
+    };
+    ScanlinePropagator(const CurvedSettings& settings, std::vector<Row> rows);
+
+    CurvedPropagator per_ray_;
+    StraightPropagator straight_;
+    std::vector<Row> rows_;  // index: image row, top first
+};
+
+/// The angle one pixel subtends at the image's centre, between the camera rays through the
+/// centre column half a pixel above and below the centre: the unit of tolerances in pixels.
+double pixel_angle_rad(const Camera& camera, int width, int height);
+
+/// Whether the camera is level: up along +y, direction and right horizontal (within 1e-9
+/// relative).
+bool camera_is_level(const Camera& camera);
+
+}  // namespace mirage

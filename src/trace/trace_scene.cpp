@@ -1,0 +1,139 @@
+#include "trace/trace_scene.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "compile/atmosphere_settings.h"
+#include "compile/library_paths.h"
+#include "image/image_io.h"
+#include "scene/camera.h"
+#include "scene/parser.h"
+#include "trace/curved_propagator.h"
+#include "util/format.h"
+
+namespace mirage {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+}  // namespace
+
+std::string path_mode_name(PathMode mode) {
+    switch (mode) {
+        case PathMode::Straight:
+            return "straight rays";
+        case PathMode::PerRay:
+            return "per-ray paths";
+        case PathMode::Scanline:
+            return "per-scanline paths";
+    }
+    return "";
+}
+
+Result<TraceReport> trace_scene(const TraceOptions& opt) {
+    if (opt.width < 1 || opt.height < 1 || opt.width > 20000 || opt.height > 20000) {
+        return make_error("image size " + std::to_string(opt.width) + "x" +
+                          std::to_string(opt.height) + " must be 1 to 20000 pixels each way");
+    }
+    if (opt.threads < 0) {
+        return make_error("--threads " + std::to_string(opt.threads) +
+                          ": must be 0 (all cores) or more");
+    }
+    if (opt.tolerance_px && !(*opt.tolerance_px > 0.0 && std::isfinite(*opt.tolerance_px))) {
+        return make_error("--tolerance " + shortest(*opt.tolerance_px) +
+                          ": must be a positive number of pixels");
+    }
+    if (!opt.output.empty()) {
+        const std::string ext = lower_extension(opt.output);
+        if (ext != ".png" && ext != ".exr") {
+            return make_error(opt.output + ": unknown image type '" + ext + "' (use .png or .exr)");
+        }
+    }
+
+    ParseOptions po;
+    po.library_paths = opt.library_paths;
+    for (const auto& p : default_library_paths(opt.scene)) po.library_paths.push_back(p);
+    po.image_width = opt.width;
+    po.image_height = opt.height;
+    po.strict = true;  // the tracer renders every object: none may be left out silently
+    auto parsed = parse_scene_file(opt.scene, po);
+    if (!parsed) return parsed.error();
+    const Scene& scene = *parsed;
+    auto settings = read_atmosphere_settings(scene);
+    if (!settings) return settings.error();
+
+    TraceReport report;
+    report.scene = opt.scene;
+    report.width = opt.width;
+    report.height = opt.height;
+    report.tolerance_px = opt.tolerance_px.value_or(settings->tolerance_px);
+    report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
+    const Profile profile = profile_in_scene_units(*settings);
+    const bool bends = settings->declared && profile.kind != ProfileKind::None;
+    if (!opt.atmosphere) {
+        report.atmosphere = "off (--no-atmosphere)";
+    } else if (!settings->declared) {
+        report.atmosphere = "none declared";
+    } else {
+        report.atmosphere = settings->profile_label;
+    }
+
+    CurvedSettings curved;
+    curved.profile = profile;
+    curved.tolerance_rad = report.tolerance_px * report.pixel_rad;
+    std::unique_ptr<Propagator> propagator;
+    if (opt.scanline_paths) {
+        // Refused for a tilted camera even without an atmosphere: the option asks for it.
+        auto scanline = ScanlinePropagator::make(curved, scene.camera, opt.width, opt.height);
+        if (!scanline) return scanline.error();
+        if (opt.atmosphere && bends) {
+            propagator = std::make_unique<ScanlinePropagator>(std::move(*scanline));
+            report.mode = PathMode::Scanline;
+        }
+    } else if (opt.atmosphere && bends) {
+        propagator = std::make_unique<CurvedPropagator>(curved);
+        report.mode = PathMode::PerRay;
+    }
+    if (!propagator) propagator = std::make_unique<StraightPropagator>();
+
+    RenderSettings rs;
+    rs.width = opt.width;
+    rs.height = opt.height;
+    rs.threads = opt.threads;
+    rs.progress = opt.progress;
+    const PixelRayFunction pixel_ray = [](const Camera& c, double x, double y, int w, int h) {
+        const CameraRay r = camera_ray(c, x, y, w, h);
+        return PixelRay{r.origin, r.direction};
+    };
+    auto rendered = render(scene, rs, *propagator, pixel_ray);
+    if (!rendered) return rendered.error();
+    report.render = std::move(*rendered);
+    if (!opt.output.empty()) {
+        if (auto s = write_image(report.render.image, opt.output); !s) return s.error();
+        report.output = opt.output;
+    }
+    return report;
+}
+
+std::string trace_summary(const TraceReport& r) {
+    std::ostringstream out;
+    out << r.scene << ": atmosphere " << r.atmosphere << ", " << path_mode_name(r.mode);
+    if (r.mode != PathMode::Straight) {
+        out << " within " << sig(r.tolerance_px, 3) << " px ("
+            << sig(r.tolerance_px * r.pixel_rad, 3) << " rad)";
+    }
+    out << "\n" << format_stats(r.render.stats, r.width, r.height) << "\n";
+    if (!r.output.empty()) out << "wrote " << r.output << "\n";
+    return out.str();
+}
+
+}  // namespace mirage

@@ -1,0 +1,57 @@
+// `mirage trace`: a scene file rendered by the built-in tracer along the curved light paths
+// of the atmosphere it declares, the continuous model every POV-Ray band render is checked
+// against.  Parses the scene strictly, reads its Mirage_ declarations, chooses the
+// propagator (straight, per-ray paths or the paper's per-scanline paths), renders on all
+// cores and writes the image through a temporary name.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "trace/render.h"
+#include "util/result.h"
+
+namespace mirage {
+
+/// How the rays of a trace travel.
+enum class PathMode {
+    Straight,  // no atmosphere (none declared, or switched off)
+    PerRay,    // every ray along its own exact path
+    Scanline,  // camera rays along their row's path (Khote & Howard); reflections per ray
+};
+
+struct TraceOptions {
+    std::string scene;                       // the .pov file
+    std::string output;                      // .png or .exr; empty: nothing written
+    int width = 320, height = 240;           // image size, pixels
+    std::optional<double> tolerance_px;      // overrides Mirage_Tolerance (default 0.5), pixels
+    int threads = 0;                         // worker threads; 0 = all cores
+    bool scanline_paths = false;             // one path per image row (level camera only)
+    bool atmosphere = true;                  // false: straight rays whatever the scene declares
+    std::vector<std::string> library_paths;  // extra include directories, searched first
+    bool progress = true;                    // progress bar on stderr when it is a terminal
+};
+
+struct TraceReport {
+    std::string scene;
+    int width = 0, height = 0;
+    std::string atmosphere;  // what the scene declares, or why there is none
+    PathMode mode = PathMode::Straight;
+    double tolerance_px = 0.0;  // the paths' largest error, pixels
+    double pixel_rad = 0.0;     // one pixel's angle at the image centre, rad
+    RenderResult render;        // the image (linear) and the render's statistics
+    std::string output;         // the file written, if any
+};
+
+/// Traces the scene.  On failure nothing was written and the message names the place at
+/// fault (file:line:column for the scene, the option for a bad value).
+Result<TraceReport> trace_scene(const TraceOptions& options);
+
+/// Two lines for people: what was traced and how, then the statistics (rays, segments per
+/// ray, seconds, Mrays/s).
+std::string trace_summary(const TraceReport& report);
+
+std::string path_mode_name(PathMode mode);
+
+}  // namespace mirage
