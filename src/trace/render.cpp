@@ -72,7 +72,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                                std::pair{0.0, 1.0 * settings.height},
                                std::pair{1.0 * settings.width, 1.0 * settings.height},
                                std::pair{0.5 * settings.width, 0.5 * settings.height}}) {
-        const PixelRay r = pixel_ray(scene.camera, x, y, settings.width, settings.height);
+        const CameraRay r = pixel_ray(scene.camera, x, y, settings.width, settings.height);
         const bool finite = std::isfinite(r.origin.x) && std::isfinite(r.origin.y) &&
                             std::isfinite(r.origin.z) && std::isfinite(r.direction.x) &&
                             std::isfinite(r.direction.y) && std::isfinite(r.direction.z);
@@ -114,7 +114,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
             const int y1 = std::min(y0 + settings.tile_size, settings.height);
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
-                    const PixelRay ray =
+                    const CameraRay ray =
                         pixel_ray(scene.camera, x + 0.5, y + 0.5, settings.width, settings.height);
                     RayStart start;
                     start.origin = ray.origin;
@@ -143,7 +143,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
 
 Result<RenderResult> render(const Scene& scene, const RenderSettings& settings) {
     const StraightPropagator straight;
-    return render(scene, settings, straight, pov_pixel_ray);
+    return render(scene, settings, straight, camera_ray);
 }
 
 std::string format_stats(const RenderStats& stats, int width, int height) {

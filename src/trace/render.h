@@ -7,8 +7,8 @@
 #include <string>
 
 #include "image/image.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
-#include "trace/pixel_ray.h"
 #include "trace/propagator.h"
 #include "trace/shading.h"
 #include "util/result.h"
@@ -44,16 +44,16 @@ struct RenderResult {
 };
 
 /// The camera ray through an image position, in pixels from the image's top-left corner
-/// (pixel centres at +0.5): pov_pixel_ray, or the scene module's camera_ray once merged.
+/// (pixel centres at +0.5): the scene module's camera_ray unless a test needs another.
 using PixelRayFunction =
-    std::function<PixelRay(const Camera& camera, double x, double y, int width, int height)>;
+    std::function<CameraRay(const Camera& camera, double x, double y, int width, int height)>;
 
 /// Renders the scene as POV-Ray renders it without antialiasing: one ray through each
 /// pixel's centre, shaded by Shader.  Fails (with the message of check_supported or of the
 /// geometry) for scenes outside the supported subset, and for non-positive sizes.
 Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                             const Propagator& propagator,
-                            const PixelRayFunction& pixel_ray = pov_pixel_ray);
+                            const PixelRayFunction& pixel_ray = camera_ray);
 
 /// Renders with straight rays.
 Result<RenderResult> render(const Scene& scene, const RenderSettings& settings);

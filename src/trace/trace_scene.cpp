@@ -110,11 +110,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     rs.height = opt.height;
     rs.threads = opt.threads;
     rs.progress = opt.progress;
-    const PixelRayFunction pixel_ray = [](const Camera& c, double x, double y, int w, int h) {
-        const CameraRay r = camera_ray(c, x, y, w, h);
-        return PixelRay{r.origin, r.direction};
-    };
-    auto rendered = render(scene, rs, *propagator, pixel_ray);
+    auto rendered = render(scene, rs, *propagator);
     if (!rendered) return rendered.error();
     report.render = std::move(*rendered);
     if (!opt.output.empty()) {

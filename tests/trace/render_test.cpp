@@ -112,7 +112,7 @@ TEST(Render, UsesThePixelRayFunctionGiven) {
     const Scene s = small_scene();
     const StraightPropagator straight;
     auto r = render(s, settings(1, 32), straight, [](const Camera&, double, double, int, int) {
-        return PixelRay{glm::dvec3(0.0, 5.0, 0.0), glm::dvec3(0.0, 1.0, 0.0)};
+        return CameraRay{glm::dvec3(0.0, 5.0, 0.0), glm::dvec3(0.0, 1.0, 0.0)};
     });
     ASSERT_TRUE(r.ok());
     const glm::vec3 zenith = r->image.at(0, 0);
