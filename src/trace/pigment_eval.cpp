@@ -102,7 +102,7 @@ glm::dvec3 sky_colour(const Scene& scene, const glm::dvec3& direction) {
         for (auto it = sky.pigments.rbegin(); it != sky.pigments.rend(); ++it) {
             const PigmentColour c = evaluate_pigment(*it, p);
             const double opacity = 1.0 - c.filter - c.transmit;
-            colour += c.rgb * opacity * filter;  // times the sky's emission, 1
+            colour += c.rgb * opacity * filter * to_single(sky.emission);
             filter *= c.rgb * c.filter + glm::dvec3(c.transmit);
         }
     }

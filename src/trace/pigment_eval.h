@@ -28,8 +28,8 @@ PigmentColour evaluate_pigment(const Pigment& pigment, const glm::dvec3& world_p
 
 /// The colour seen along an escaping ray of unit `direction`: the sky_sphere's pigments,
 /// the last declared on top, evaluated at the direction taken as a point in the sky
-/// sphere's space, with the background behind them (precomposed over black as POV-Ray's
-/// parser does without an alpha channel: rgb * (1 - transmit), filter ignored).
+/// sphere's space and scaled by its emission, with the background behind them (precomposed over
+/// black as POV-Ray's parser does without an alpha channel: rgb * (1 - transmit), filter ignored).
 glm::dvec3 sky_colour(const Scene& scene, const glm::dvec3& direction);
 
 }  // namespace mirage

@@ -80,6 +80,17 @@ TEST(Sky, TheLastPigmentIsOnTopAndTransmitShowsWhatIsBelow) {
     EXPECT_NEAR(glm::length(sky_colour(s, {0, 0, 1}) - glm::dvec3(0.0, 0.5, 0.0)), 0.0, 1e-12);
 }
 
+TEST(Sky, EmissionScalesTheSkyPigmentsNotTheBackground) {
+    Scene s;
+    SkySphere sky;
+    sky.pigments.push_back(solid(Colour{glm::dvec3(0.5, 0.5, 0.5), 0.0, 0.5}));
+    sky.emission = glm::dvec3(2.0, 1.0, 0.0);
+    s.sky_sphere = sky;
+    s.background = rgb(0.2, 0.2, 0.2);
+    // 0.5 opaque share of 0.5 grey times the emission, plus half the background.
+    EXPECT_NEAR(glm::length(sky_colour(s, {0, 0, 1}) - glm::dvec3(0.6, 0.35, 0.1)), 0.0, 1e-7);
+}
+
 TEST(Sky, EvaluatesTheDirectionInTheSkysSpace) {
     Scene s;
     SkySphere sky;

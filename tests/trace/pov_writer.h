@@ -96,6 +96,7 @@ inline std::string scene_to_pov(const Scene& s) {
     if (s.sky_sphere) {
         out << "sky_sphere {\n";
         for (const auto& p : s.sky_sphere->pigments) out << "  " << pigment_text(p) << "\n";
+        out << "  emission rgb " << vec(s.sky_sphere->emission) << "\n";
         out << "  " << transform_text(s.sky_sphere->transform.matrix) << "\n}\n";
     }
     for (const auto& l : s.lights) {
