@@ -16,10 +16,11 @@ constexpr double kPi = 3.14159265358979323846;
 
 CameraRay camera_ray(const Camera& camera, double x, double y, int width, int height) {
     // POV-Ray is called with the pixel's integer coordinates, moves them by half a pixel
-    // (x + 0.5, y - 0.5) and takes x0 = x / width - 0.5, y0 = ((height - 1) - y) / height - 0.5;
-    // for the centre (col + 0.5, row + 0.5) both reduce to the forms below.
-    double x0 = x / width - 0.5;
-    double y0 = 0.5 - y / height;
+    // (x + 0.5, y - 0.5) and takes x0 = x / width - 0.5, y0 = ((height - 1) - y) / height - 0.5.
+    // In image coordinates (the centre of pixel (col, row) at (col + 0.5, row + 0.5)) its
+    // shifted y is ours minus 1; the same expression keeps its rounding, bit for bit.
+    const double x0 = x / width - 0.5;
+    const double y0 = ((height - 1.0) - (y - 1.0)) / height - 0.5;
     glm::dvec3 d = camera.direction + x0 * camera.right + y0 * camera.up;
     return CameraRay{camera.location, glm::normalize(d)};
 }
