@@ -381,6 +381,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                                " units from the camera: every camera ray has left them by then");
     }
     rep.pixels = static_cast<int>(err.size());
+    rep.pixel_error_px.assign(err.begin(), err.end());
     rep.p50_error_px = percentile(err, 0.50);
     rep.p95_error_px = percentile(err, 0.95);
     rep.p99_error_px = percentile(err, 0.99);

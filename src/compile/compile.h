@@ -47,6 +47,9 @@ struct CompileReport {
     int below_camera = 0, above_camera = 0;
     double p50_error_px = 0.0, p95_error_px = 0.0, p99_error_px = 0.0, max_error_px = 0.0;
     double max_error_px_fitted = 0.0;  // over the column the design was fitted to
+    std::vector<float> pixel_error_px;  // every pixel centre's error, row-major from the top
+                                        // row (width * height; +inf for a ray cut off); not
+                                        // in the JSON
     int pixels = 0, pixels_over = 0;
     int max_crossings = 0;       // boundary events of a camera ray in the layers
     int max_trace_level = 0;     // with its reflections, as POV-Ray counts levels

@@ -3,6 +3,8 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -59,6 +61,44 @@ Result<Image> difference_image(const Image& a, const Image& b) {
         return make_error("difference image failed: " + D.geterror());
     }
     return out;
+}
+
+namespace {
+
+/// Whether pixel (x, y) of `a` has a pixel of `b` within `radius` rows in its column whose
+/// channels are all within `threshold` of its own.
+bool matched_in_column(const Image& a, const Image& b, int x, int y, int radius,
+                       float threshold) {
+    const glm::vec3 c = a.at(x, y);
+    const int y0 = std::max(0, y - radius), y1 = std::min(b.height - 1, y + radius);
+    for (int yy = y0; yy <= y1; ++yy) {
+        const glm::vec3 d = glm::abs(b.at(x, yy) - c);
+        if (std::max({d.x, d.y, d.z}) <= threshold) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+Result<RowShiftComparison> compare_within_rows(const Image& a, const Image& b, int radius_rows,
+                                               double threshold) {
+    if (auto s = check_same_size(a, b); !s) return s.error();
+    if (radius_rows < 0) return make_error("row radius " + std::to_string(radius_rows) + " < 0");
+    if (!(threshold >= 0.0)) return make_error("threshold must be >= 0");
+    RowShiftComparison c;
+    c.pixel_count = static_cast<std::int64_t>(a.width) * a.height;
+    c.mask = Image(a.width, a.height);
+    const float t = static_cast<float>(threshold);
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            if (matched_in_column(a, b, x, y, radius_rows, t) &&
+                matched_in_column(b, a, x, y, radius_rows, t))
+                continue;
+            ++c.pixels_differing;
+            c.mask.set(x, y, glm::vec3(1.0f));
+        }
+    }
+    return c;
 }
 
 }  // namespace mirage

@@ -28,4 +28,26 @@ Result<ImageComparison> compare_images(const Image& a, const Image& b, double th
 /// |a - b| per channel (same size required).
 Result<Image> difference_image(const Image& a, const Image& b);
 
+/// Pixels that differ beyond a vertical shift of up to `radius_rows` rows.  A pixel of one
+/// image is matched when some pixel of the other image in the same column, at most
+/// `radius_rows` rows above or below, has every channel within `threshold` of it; a pixel
+/// differs when it is unmatched in either direction (a against b, or b against a).
+///
+/// Why vertical: the atmosphere depends on height only, so a ray stays in the vertical plane
+/// of its first direction, and a level camera images every vertical plane through the eye as
+/// one column.  A model whose rays end a pixel or two away from the exact ones moves the
+/// picture along the columns; plain per-pixel differences count every such edge as an
+/// error, this comparison only what a shift of `radius_rows` cannot explain.
+struct RowShiftComparison {
+    std::int64_t pixels_differing = 0;
+    std::int64_t pixel_count = 0;
+    Image mask;  // 1 where a pixel differs, 0 elsewhere (grey)
+    double share() const {
+        return pixel_count > 0 ? static_cast<double>(pixels_differing) / pixel_count : 0.0;
+    }
+};
+
+Result<RowShiftComparison> compare_within_rows(const Image& a, const Image& b, int radius_rows,
+                                               double threshold);
+
 }  // namespace mirage

@@ -54,5 +54,54 @@ TEST(ImageCompare, RefusesDifferentSizes) {
     EXPECT_FALSE(difference_image(Image(1, 1), Image(2, 1)).ok());
 }
 
+// A vertical edge pattern: rows above `edge` dark, from `edge` down bright.
+Image edge_image(int width, int height, int edge) {
+    Image im(width, height);
+    for (int y = edge; y < height; ++y)
+        for (int x = 0; x < width; ++x) im.set(x, y, glm::vec3(0.8f));
+    return im;
+}
+
+TEST(ImageCompare, RowShiftToleratesShiftsWithinTheRadius) {
+    const Image a = edge_image(5, 10, 4);
+    const Image b = edge_image(5, 10, 6);  // the edge two rows lower
+    auto plain = compare_images(a, b, 0.05);
+    ASSERT_TRUE(plain.ok());
+    EXPECT_EQ(plain->pixels_over, 10);  // two rows of five
+    auto r1 = compare_within_rows(a, b, 1, 0.05);
+    ASSERT_TRUE(r1.ok()) << r1.message();
+    // Row 4 of a is bright and b's nearest bright row is 6, two rows away; row 5 of b is
+    // dark and a's rows 4 to 6 are all bright.  Rows 4 and 5 differ, one from each side.
+    EXPECT_EQ(r1->pixels_differing, 10);
+    EXPECT_EQ(r1->pixel_count, 50);
+    EXPECT_DOUBLE_EQ(r1->share(), 0.2);
+    EXPECT_EQ(r1->mask.at(2, 3), glm::vec3(0.0f));
+    EXPECT_EQ(r1->mask.at(2, 4), glm::vec3(1.0f));
+    EXPECT_EQ(r1->mask.at(2, 5), glm::vec3(1.0f));
+    EXPECT_EQ(r1->mask.at(2, 6), glm::vec3(0.0f));
+    auto r2 = compare_within_rows(a, b, 2, 0.05);
+    ASSERT_TRUE(r2.ok());
+    EXPECT_EQ(r2->pixels_differing, 0);
+}
+
+TEST(ImageCompare, RowShiftIsSymmetricAndColumnwise) {
+    Image a(3, 6), b(3, 6);
+    a.set(1, 2, {1.0f, 0.0f, 0.0f});  // a red pixel that b has in another column only
+    b.set(2, 2, {1.0f, 0.0f, 0.0f});
+    auto ab = compare_within_rows(a, b, 3, 0.1);
+    auto ba = compare_within_rows(b, a, 3, 0.1);
+    ASSERT_TRUE(ab.ok() && ba.ok());
+    EXPECT_EQ(ab->pixels_differing, 2);  // (1, 2) unmatched in a, (2, 2) unmatched in b
+    EXPECT_EQ(ba->pixels_differing, 2);
+    // Within the threshold counts as matched.
+    Image c(3, 6);
+    c.set(1, 2, {0.97f, 0.04f, 0.0f});
+    auto ac = compare_within_rows(a, c, 0, 0.05);
+    ASSERT_TRUE(ac.ok());
+    EXPECT_EQ(ac->pixels_differing, 0);
+    EXPECT_FALSE(compare_within_rows(a, Image(3, 5), 1, 0.1).ok());
+    EXPECT_FALSE(compare_within_rows(a, b, -1, 0.1).ok());
+}
+
 }  // namespace
 }  // namespace mirage
