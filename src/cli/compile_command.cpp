@@ -23,19 +23,25 @@ struct CompileCliOptions {
 void setup_compile_command(CLI::App& app) {
     auto o = std::make_shared<CompileCliOptions>();
     auto* sub = app.add_subcommand(
-        "compile", "Fit horizontal refractive layers to a scene's camera rays and write them for POV-Ray");
+        "compile",
+        "Fit horizontal refractive layers to a scene's camera rays and write them for POV-Ray");
     sub->add_option("scene", o->compile.scene, "the .pov template")->required();
     sub->add_option("-W,--width", o->compile.width, "image width, pixels")->capture_default_str();
-    sub->add_option("-H,--height", o->compile.height, "image height, pixels")->capture_default_str();
+    sub->add_option("-H,--height", o->compile.height, "image height, pixels")
+        ->capture_default_str();
     sub->add_option("-o,--output", o->compile.out_dir,
                     "directory for mirage_layers.inc, SCENE.ini, layers.csv, report.json "
                     "(default build/render/SCENE)");
-    sub->add_option("--image", o->compile.image, "the image the .ini renders (default next to the directory)");
-    auto* tol = sub->add_option("--tolerance", o->tolerance, "largest path error, pixels (default: Mirage_Tolerance, else 0.5)");
-    auto* layers = sub->add_option("--layers", o->layers, "adaptive (default) or uniform (Berger's equal layers)")
+    sub->add_option("--image", o->compile.image,
+                    "the image the .ini renders (default next to the directory)");
+    auto* tol = sub->add_option("--tolerance", o->tolerance,
+                                "largest path error, pixels (default: Mirage_Tolerance, else 0.5)");
+    auto* layers = sub->add_option("--layers", o->layers,
+                                   "adaptive (default) or uniform (Berger's equal layers)")
                        ->check(CLI::IsMember({"adaptive", "uniform"}));
     auto* count = sub->add_option("--count", o->count, "number of uniform layers");
-    sub->add_option("-L,--library-path", o->compile.library_paths, "extra include directory (searched first)");
+    sub->add_option("-L,--library-path", o->compile.library_paths,
+                    "extra include directory (searched first)");
     sub->add_flag("--antialias", o->compile.antialias, "antialias the render (+A0.3)");
     sub->add_option("--fit-columns", o->compile.fit_columns,
                     "image columns to fit the layers to, spread from the centre to the edge")
@@ -46,6 +52,8 @@ void setup_compile_command(CLI::App& app) {
                     "real air) or auto")
         ->check(CLI::IsMember({"auto", "nested", "gaps"}))
         ->capture_default_str();
+    sub->add_option("--error-map", o->compile.error_map,
+                    "also write every pixel centre's path error, pixels, as a float image (.exr)");
     sub->add_flag("--json", o->json, "print the report as JSON");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     sub->callback([o, tol, layers, count] {

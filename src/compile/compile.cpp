@@ -9,6 +9,7 @@
 
 #include "atmosphere/exact_ray.h"
 #include "compile/library_paths.h"
+#include "image/image_io.h"
 #include "layers/band_tracer3d.h"
 #include "layers/fit.h"
 #include "layers/outcome.h"
@@ -63,9 +64,8 @@ int trace_levels(const LayerStack& stack, const Scene& scene, const ObjectQuery&
                  const HorizontalBox& scene_box, const HorizontalBox& layers_box, int level,
                  double weight) {
     // Followed past the ceiling (to 4 times it) so that a design over it knows by how much.
-    const Trace3dOutcome t =
-        trace_layers_3d(stack, origin, dir, scene_box, layers_box,
-                        Trace3dOptions{4 * kMaxLevel, &objects, camera_y});
+    const Trace3dOutcome t = trace_layers_3d(stack, origin, dir, scene_box, layers_box,
+                                             Trace3dOptions{4 * kMaxLevel, &objects, camera_y});
     level += t.crossings;
     if (t.cut_off) return std::max(level, 4 * kMaxLevel);
     int deepest = level;
@@ -114,6 +114,19 @@ ObjectQuery object_query(const SceneAccel& accel) {
 
 }  // namespace
 
+namespace {
+
+/// Every pixel centre's path error in pixels as a grey image (+inf where a ray was cut off).
+Image error_map_image(const CompileReport& r) {
+    Image im(r.width, r.height);
+    for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x)
+            im.set(x, y, glm::vec3(r.pixel_error_px[static_cast<size_t>(y) * r.width + x]));
+    return im;
+}
+
+}  // namespace
+
 Result<CompileReport> compile_scene(const CompileOptions& opt) {
     const auto t0 = std::chrono::steady_clock::now();
     if (opt.width < 1 || opt.height < 1 || opt.width > 20000 || opt.height > 20000)
@@ -139,9 +152,18 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     AtmosphereSettings settings = *settings_r;
     if (opt.tolerance_px) {
         if (!(*opt.tolerance_px > 0.0))
-            return make_error("--tolerance " + shortest(*opt.tolerance_px) + ": must be > 0 pixels");
+            return make_error("--tolerance " + shortest(*opt.tolerance_px) +
+                              ": must be > 0 pixels");
         settings.tolerance_px = *opt.tolerance_px;
     }
+    if (opt.profile) {
+        settings.profile = *opt.profile;
+        settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
+        settings.declared = true;
+    }
+    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
+        return make_error("--error-map " + opt.error_map +
+                          ": the error map is written as OpenEXR, name it .exr");
     if (opt.layers) settings.layers = *opt.layers;
     if (opt.layer_count) settings.layer_count = *opt.layer_count;
     rep.tolerance_px = settings.tolerance_px;
@@ -187,7 +209,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             }
             extent *= 1.25;
             if (!scene.skipped.empty())
-                rep.warnings.push_back("objects mirage does not know (" + scene.skipped.front().what +
+                rep.warnings.push_back("objects mirage does not know (" +
+                                       scene.skipped.front().what +
                                        ", ...) were left out of the extent; declare Mirage_Extent "
                                        "if they lie farther away");
         }
@@ -254,8 +277,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             BandOutcome b;
             b.ground = t.ground;
             const double hl = std::hypot(r.direction.x, r.direction.z);
-            b.dz = glm::length(glm::dvec2(t.scene_point.x - cam.location.x,
-                                          t.scene_point.z - cam.location.z));
+            b.dz = glm::length(
+                glm::dvec2(t.scene_point.x - cam.location.x, t.scene_point.z - cam.location.z));
             if (!t.ground && hl > 0.0) b.dz = r.exit_dz;
             b.y = t.scene_point.y;
             const double sh = std::hypot(t.scene_dir.x, t.scene_dir.z);
@@ -279,21 +302,26 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                                    sig(straight_max, 3) + " px)");
         } else if (settings.layers == LayerMode::Uniform) {
             if (settings.layer_count < 1)
-                return make_error(scene.file + ": uniform layers need a count: --count N or "
-                                               "Mirage_Layer_Count");
+                return make_error(scene.file +
+                                  ": uniform layers need a count: --count N or "
+                                  "Mirage_Layer_Count");
             // Over the heights the camera's rays reach inside the scene.
             double top = eye_y;
             for (const auto& r : rays) {
                 auto ex = make_exact_ray(profile, eye_y, M_PI / 2 - r.elevation);
                 if (!ex) continue;
-                top = std::max(top, height_at(*ex, std::min(r.exit_dz, ex->hits_ground ? ex->dz_ground : kInf)));
+                top = std::max(
+                    top,
+                    height_at(*ex, std::min(r.exit_dz, ex->hits_ground ? ex->dz_ground : kInf)));
             }
-            top = std::min(top, std::max(eye_y * 1.001, height_of_excess(profile,
-                                  eta_sq_excess(profile, kInf) * 0.99)));
+            top = std::min(
+                top, std::max(eye_y * 1.001,
+                              height_of_excess(profile, eta_sq_excess(profile, kInf) * 0.99)));
             stack = uniform_layers(profile, eye_y, settings.layer_count, top);
             // Berger's layers do not care where the camera is; POV-Ray needs it off a boundary.
             for (double& h : stack.heights)
-                if (std::fabs(h - eye_y) < 1e-9 * std::max(1.0, eye_y)) h += 1e-6 * std::max(1.0, eye_y);
+                if (std::fabs(h - eye_y) < 1e-9 * std::max(1.0, eye_y))
+                    h += 1e-6 * std::max(1.0, eye_y);
             rep.left_out.push_back("layers above y = " + sig(top, 4) +
                                    ": no camera ray reaches higher inside the scene");
         } else {
@@ -325,16 +353,18 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                 int level = 0;
                 const LayerStack rendered = as_rendered(f.stack);
                 for (size_t i = 0; i < rays.size(); ++i)
-                    level = std::max(level, trace_levels(rendered, scene, objects, eye_y,
-                                                         cam.location, rays[i].direction,
-                                                         scene_box, layers_box, 1, 1.0));
+                    level = std::max(
+                        level, trace_levels(rendered, scene, objects, eye_y, cam.location,
+                                            rays[i].direction, scene_box, layers_box, 1, 1.0));
                 stack = f.stack;
                 rep.max_trace_level = level;
                 if (level <= kMaxLevel) break;
                 // Over the ceiling: fewer crossings per pass, in proportion.
-                const int per_pass = std::min(f.quality.max_crossings, fs.max_crossings) * (gaps ? 2 : 1);
+                const int per_pass =
+                    std::min(f.quality.max_crossings, fs.max_crossings) * (gaps ? 2 : 1);
                 fs.max_crossings = std::max(
-                    4, std::min(per_pass - 1, static_cast<int>(per_pass * double(kMaxLevel - 1) / level)) /
+                    4, std::min(per_pass - 1,
+                                static_cast<int>(per_pass * double(kMaxLevel - 1) / level)) /
                            (gaps ? 2 : 1));
                 rep.warnings.push_back("a camera ray with its reflections reached trace level " +
                                        std::to_string(level) + "; refitted within " +
@@ -356,8 +386,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         Trace3dOptions to;
         to.camera_y = eye_y;
         for (const auto& r : rays) {
-            const Trace3dOutcome t = trace_layers_3d(rendered, cam.location, r.direction,
-                                                     scene_box, layers_box, to);
+            const Trace3dOutcome t =
+                trace_layers_3d(rendered, cam.location, r.direction, scene_box, layers_box, to);
             if (!t.cut_off) emitted_reach = std::max(emitted_reach, 1.1 * t.last_event);
         }
         emitted_reach = std::min(emitted_reach, layers_reach);
@@ -403,16 +433,19 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         const ObjectQuery objects = object_query(accel);
         const LayerStack rendered = as_rendered(stack);
         for (size_t i = 0; i < rays.size(); ++i)
-            rep.max_trace_level = std::max(
-                rep.max_trace_level, trace_levels(rendered, scene, objects, eye_y, cam.location,
-                                                  rays[i].direction, scene_box, layers_box, 1, 1.0));
+            rep.max_trace_level =
+                std::max(rep.max_trace_level,
+                         trace_levels(rendered, scene, objects, eye_y, cam.location,
+                                      rays[i].direction, scene_box, layers_box, 1, 1.0));
         if (rep.max_trace_level > kMaxLevel)
-            rep.warnings.push_back("some camera rays reach POV-Ray's trace-level ceiling with these "
-                                   "layers: they will render black");
+            rep.warnings.push_back(
+                "some camera rays reach POV-Ray's trace-level ceiling with these "
+                "layers: they will render black");
     }
 
     // Outputs, each to a temporary name first.
-    const fs::path dir = opt.out_dir.empty() ? fs::path("build/render") / rep.name : fs::path(opt.out_dir);
+    const fs::path dir =
+        opt.out_dir.empty() ? fs::path("build/render") / rep.name : fs::path(opt.out_dir);
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) return make_error(dir.string() + ": cannot create: " + ec.message());
@@ -424,7 +457,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.image_path = opt.image.empty() ? (abs_dir.parent_path() / (rep.name + ".png")).string()
                                        : fs::absolute(opt.image).string();
     const std::string scene_abs = fs::absolute(opt.scene).string();
-    if (fs::equivalent(scene_abs, rep.include_path, ec) || fs::equivalent(scene_abs, rep.ini_path, ec))
+    if (fs::equivalent(scene_abs, rep.include_path, ec) ||
+        fs::equivalent(scene_abs, rep.ini_path, ec))
         return make_error(opt.scene + ": the outputs would overwrite the template");
 
     LayerEmitSettings es;
@@ -457,6 +491,9 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     };
     for (const auto& [path, text] : files)
         if (auto s = write_file_atomic(path, text); !s) return s.error();
+    if (!opt.error_map.empty()) {
+        if (auto s = write_exr(error_map_image(rep), opt.error_map); !s) return s.error();
+    }
     return rep;
 }
 
@@ -476,7 +513,8 @@ std::string report_json(const CompileReport& r) {
     j["p50_error_px"] = r.p50_error_px;
     j["p95_error_px"] = r.p95_error_px;
     j["p99_error_px"] = r.p99_error_px;
-    j["max_error_px"] = std::isfinite(r.max_error_px) ? nlohmann::json(r.max_error_px) : nlohmann::json("inf");
+    j["max_error_px"] =
+        std::isfinite(r.max_error_px) ? nlohmann::json(r.max_error_px) : nlohmann::json("inf");
     j["max_error_px_fitted_column"] = r.max_error_px_fitted;
     j["pixels"] = r.pixels;
     j["pixels_over_tolerance"] = r.pixels_over;
@@ -485,10 +523,11 @@ std::string report_json(const CompileReport& r) {
     j["max_trace_level"] = r.max_trace_level;
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& row : r.rows_over)
-        rows.push_back({{"row", row.row},
-                        {"max_error_px", std::isfinite(row.max_error_px) ? nlohmann::json(row.max_error_px)
-                                                                         : nlohmann::json("inf")},
-                        {"pixels_over", row.pixels_over}});
+        rows.push_back(
+            {{"row", row.row},
+             {"max_error_px", std::isfinite(row.max_error_px) ? nlohmann::json(row.max_error_px)
+                                                              : nlohmann::json("inf")},
+             {"pixels_over", row.pixels_over}});
     j["rows_over_tolerance"] = rows;
     j["left_out"] = r.left_out;
     j["warnings"] = r.warnings;
@@ -519,11 +558,13 @@ std::string report_text(const CompileReport& r) {
         s << "  over        " << r.pixels_over << " pixels in " << r.rows_over.size()
           << " rows exceed the tolerance; worst rows:";
         auto rows = r.rows_over;
-        std::sort(rows.begin(), rows.end(),
-                  [](const RowExcess& a, const RowExcess& b) { return a.max_error_px > b.max_error_px; });
+        std::sort(rows.begin(), rows.end(), [](const RowExcess& a, const RowExcess& b) {
+            return a.max_error_px > b.max_error_px;
+        });
         for (size_t i = 0; i < std::min<size_t>(5, rows.size()); ++i)
             s << " row " << rows[i].row << " (" << sig(rows[i].max_error_px, 3) << " px, "
-              << rows[i].pixels_over << " px over)" << (i + 1 < std::min<size_t>(5, rows.size()) ? "," : "");
+              << rows[i].pixels_over << " px over)"
+              << (i + 1 < std::min<size_t>(5, rows.size()) ? "," : "");
         s << "\n";
     }
     s << "  budget      " << r.max_crossings << " boundary crossings per camera ray, trace level "

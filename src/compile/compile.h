@@ -9,23 +9,27 @@
 #include <string>
 #include <vector>
 
+#include "atmosphere/profile.h"
 #include "compile/atmosphere_settings.h"
 #include "util/result.h"
 
 namespace mirage {
 
 struct CompileOptions {
-    std::string scene;                      // the template
-    int width = 320, height = 240;          // the render's size
-    std::string out_dir;                    // where the include, .ini and CSV go
-    std::string image;                      // the image the .ini renders to (default: out_dir/<scene>.png)
-    std::optional<double> tolerance_px;     // overrides Mirage_Tolerance
-    std::optional<LayerMode> layers;        // overrides Mirage_Layers
-    std::optional<int> layer_count;         // overrides Mirage_Layer_Count
+    std::string scene;              // the template
+    int width = 320, height = 240;  // the render's size
+    std::string out_dir;            // where the include, .ini and CSV go
+    std::string image;              // the image the .ini renders to (default: out_dir/<scene>.png)
+    std::optional<double> tolerance_px;  // overrides Mirage_Tolerance
+    std::optional<LayerMode> layers;     // overrides Mirage_Layers
+    std::optional<int> layer_count;      // overrides Mirage_Layer_Count
     bool antialias = false;
     std::vector<std::string> library_paths;  // extra include directories, searched first
-    std::string layout = "auto";            // "nested", "gaps" or "auto" (by index contrast)
-    int fit_columns = 1;                    // image columns the layers are fitted to
+    std::string layout = "auto";             // "nested", "gaps" or "auto" (by index contrast)
+    int fit_columns = 1;                     // image columns the layers are fitted to
+    std::string error_map;                   // also write every pixel centre's error here (.exr)
+    std::optional<Profile> profile;  // replaces the scene's atmosphere (what-if runs, tests)
+    std::string profile_label;       // names the replacement in the report
 };
 
 /// A camera row whose worst pixel exceeds the tolerance.
@@ -38,27 +42,27 @@ struct RowExcess {
 struct CompileReport {
     std::string scene, name;
     int width = 0, height = 0;
-    std::string atmosphere;      // what the scene declares
-    std::string mode;            // "adaptive", "uniform" or "none"
-    std::string layout;          // "nested" or "gaps"
-    double gap = 0.0;            // gap thickness of the gap layout
+    std::string atmosphere;  // what the scene declares
+    std::string mode;        // "adaptive", "uniform" or "none"
+    std::string layout;      // "nested" or "gaps"
+    double gap = 0.0;        // gap thickness of the gap layout
     double tolerance_px = 0.0;
-    int layers = 0;              // boundaries emitted
+    int layers = 0;  // boundaries emitted
     int below_camera = 0, above_camera = 0;
     double p50_error_px = 0.0, p95_error_px = 0.0, p99_error_px = 0.0, max_error_px = 0.0;
-    double max_error_px_fitted = 0.0;  // over the column the design was fitted to
+    double max_error_px_fitted = 0.0;   // over the column the design was fitted to
     std::vector<float> pixel_error_px;  // every pixel centre's error, row-major from the top
                                         // row (width * height; +inf for a ray cut off); not
                                         // in the JSON
     int pixels = 0, pixels_over = 0;
-    int max_crossings = 0;       // boundary events of a camera ray in the layers
-    int max_trace_level = 0;     // with its reflections, as POV-Ray counts levels
+    int max_crossings = 0;    // boundary events of a camera ray in the layers
+    int max_trace_level = 0;  // with its reflections, as POV-Ray counts levels
     bool within_tolerance = false;
     std::vector<RowExcess> rows_over;
     std::vector<std::string> left_out;  // what the design leaves out, and why
     std::vector<std::string> warnings;
-    double extent = 0.0;         // horizontal reach of the scene from the camera
-    double layers_extent = 0.0;  // horizontal reach of the layers
+    double extent = 0.0;                 // horizontal reach of the scene from the camera
+    double layers_extent = 0.0;          // horizontal reach of the layers
     double lowest = 0.0, highest = 0.0;  // of the boundaries
     double seconds = 0.0;
     std::string include_path, ini_path, csv_path, image_path, report_path;

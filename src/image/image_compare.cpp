@@ -67,8 +67,7 @@ namespace {
 
 /// Whether pixel (x, y) of `a` has a pixel of `b` within `radius` rows in its column whose
 /// channels are all within `threshold` of its own.
-bool matched_in_column(const Image& a, const Image& b, int x, int y, int radius,
-                       float threshold) {
+bool matched_in_column(const Image& a, const Image& b, int x, int y, int radius, float threshold) {
     const glm::vec3 c = a.at(x, y);
     const int y0 = std::max(0, y - radius), y1 = std::min(b.height - 1, y + radius);
     for (int yy = y0; yy <= y1; ++yy) {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../cli/run_tool.h"
+#include "image/image_io.h"
 #include "util/atomic_file.h"
 #include "util/csv.h"
 
@@ -113,6 +114,47 @@ TEST(Compile, ATinyIndexChangeNeedsNoLayers) {
     EXPECT_NE(r->left_out.front().find("no camera ray bends"), std::string::npos);
 }
 
+TEST(Compile, ErrorMapHoldsEveryPixelCentresError) {
+    const std::string dir = temp_dir("error_map");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    CompileOptions o = options(scene, dir, 32, 24);
+    o.error_map = dir + "/errors.exr";
+    auto r = compile_scene(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    ASSERT_EQ(r->pixel_error_px.size(), 32u * 24u);
+    auto map = read_image(o.error_map);
+    ASSERT_TRUE(map.ok()) << map.message();
+    ASSERT_EQ(map->width, 32);
+    ASSERT_EQ(map->height, 24);
+    float worst = 0.0f;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x) {
+            EXPECT_EQ(map->at(x, y).x, r->pixel_error_px[y * 32 + x]);
+            worst = std::max(worst, map->at(x, y).x);
+        }
+    EXPECT_FLOAT_EQ(worst, static_cast<float>(r->max_error_px));
+    o.error_map = dir + "/errors.png";
+    auto refused = compile_scene(o);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.message(),
+              "--error-map " + o.error_map + ": the error map is written as OpenEXR, name it .exr");
+}
+
+TEST(Compile, AReplacedAtmosphereIsTheOneFitted) {
+    // The same scene fitted to another profile: other layers, and the report names it.
+    const std::string dir = temp_dir("replaced");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    CompileOptions o = options(scene, dir, 32, 24);
+    auto own = compile_scene(o);
+    ASSERT_TRUE(own.ok()) << own.message();
+    o.profile = Profile{ProfileKind::Inferior, 1.000233, 0.4584, 2.0 * 2.303};
+    o.profile_label = "paper, alpha doubled";
+    auto other = compile_scene(o);
+    ASSERT_TRUE(other.ok()) << other.message();
+    EXPECT_EQ(other->atmosphere, "paper, alpha doubled");
+    EXPECT_LT(other->highest, 0.75 * own->highest);  // the index levels off twice as low
+}
+
 TEST(Compile, UniformModeGivesEqualLayers) {
     const std::string dir = temp_dir("uniform");
     const std::string scene = write_scene(dir, "u.pov", kDesert);
@@ -132,12 +174,14 @@ TEST(Compile, UniformModeGivesEqualLayers) {
 TEST(Compile, ErrorsNameTheDeclaration) {
     const std::string dir = temp_dir("errors");
     std::string text = kDesert;
-    text.replace(text.find("#declare Mirage_Tolerance = 0.5;"), 32, "#declare Mirage_Tolerence = 0.5;");
+    text.replace(text.find("#declare Mirage_Tolerance = 0.5;"), 32,
+                 "#declare Mirage_Tolerence = 0.5;");
     const std::string scene = write_scene(dir, "typo.pov", text);
     CompileOptions o = options(scene, dir, 32, 24);
     auto r = compile_scene(o);
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.message(), scene + ":3:10: unknown setting Mirage_Tolerence (did you mean Mirage_Tolerance?)");
+    EXPECT_EQ(r.message(),
+              scene + ":3:10: unknown setting Mirage_Tolerence (did you mean Mirage_Tolerance?)");
     EXPECT_FALSE(fs::exists(dir + "/out/mirage_layers.inc"));
 
     text = kDesert;
@@ -156,14 +200,16 @@ TEST(Compile, ErrorsNameTheDeclaration) {
     o.scene = dir + "/preset.pov";
     r = compile_scene(o);
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.message(), dir + "/preset.pov:2:10: Mirage_Preset: unknown preset 'sahara' (known: "
-                                 "paper, paper-superior, hot-road, cold-sea)");
+    EXPECT_EQ(r.message(), dir +
+                               "/preset.pov:2:10: Mirage_Preset: unknown preset 'sahara' (known: "
+                               "paper, paper-superior, hot-road, cold-sea)");
 }
 
 // The compiled scene renders in stock POV-Ray with no ray cut off: its statistics show a
 // largest trace level under 256, the one the compile report predicts.
 TEST(Compile, PovRayRendersTheCompiledSceneWithinTheTraceLevelCeiling) {
-    if (std::system("povray --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "povray not installed";
+    if (std::system("povray --version >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "povray not installed";
     const std::string dir = temp_dir("render");
     const std::string scene = write_scene(dir, "small.pov", kDesert);
     CompileOptions o = options(scene, dir, 80, 60);
