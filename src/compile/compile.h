@@ -50,10 +50,13 @@ struct CompileReport {
     int layers = 0;  // boundaries emitted
     int below_camera = 0, above_camera = 0;
     double p50_error_px = 0.0, p95_error_px = 0.0, p99_error_px = 0.0, max_error_px = 0.0;
-    double max_error_px_fitted = 0.0;   // over the column the design was fitted to
-    std::vector<float> pixel_error_px;  // every pixel centre's error, row-major from the top
-                                        // row (width * height; +inf for a ray cut off); not
-                                        // in the JSON
+    double max_error_px_fitted = 0.0;  // over the column the design was fitted to
+    // What the pixels show: every pixel centre's ray through the layers as POV-Ray follows
+    // it against the exact ray, to the surfaces they meet and through the reflections both
+    // make, as an angle seen from the eye in pixels (row-major from the top row, +inf for a
+    // ray cut off; not in the JSON).  The errors above are the design's, at the scene's edge.
+    std::vector<float> pixel_error_px;
+    double p95_seen_error_px = 0.0, max_seen_error_px = 0.0;
     int pixels = 0, pixels_over = 0;
     int max_crossings = 0;    // boundary events of a camera ray in the layers
     int max_trace_level = 0;  // with its reflections, as POV-Ray counts levels

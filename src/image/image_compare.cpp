@@ -79,25 +79,39 @@ bool matched_in_column(const Image& a, const Image& b, int x, int y, int radius,
 
 }  // namespace
 
-Result<RowShiftComparison> compare_within_rows(const Image& a, const Image& b, int radius_rows,
+Result<RowShiftComparison> compare_within_rows(const Image& a, const Image& b,
+                                               const std::vector<int>& radius_rows,
                                                double threshold) {
     if (auto s = check_same_size(a, b); !s) return s.error();
-    if (radius_rows < 0) return make_error("row radius " + std::to_string(radius_rows) + " < 0");
+    const std::size_t n = static_cast<std::size_t>(a.width) * a.height;
+    if (radius_rows.size() != n)
+        return make_error("row radii: " + std::to_string(radius_rows.size()) + " for " +
+                          std::to_string(n) + " pixels");
     if (!(threshold >= 0.0)) return make_error("threshold must be >= 0");
     RowShiftComparison c;
-    c.pixel_count = static_cast<std::int64_t>(a.width) * a.height;
+    c.pixel_count = static_cast<std::int64_t>(n);
     c.mask = Image(a.width, a.height);
     const float t = static_cast<float>(threshold);
     for (int y = 0; y < a.height; ++y) {
         for (int x = 0; x < a.width; ++x) {
-            if (matched_in_column(a, b, x, y, radius_rows, t) &&
-                matched_in_column(b, a, x, y, radius_rows, t))
+            const int r = radius_rows[static_cast<std::size_t>(y) * a.width + x];
+            if (r < 0) return make_error("row radius " + std::to_string(r) + " < 0");
+            if (matched_in_column(a, b, x, y, r, t) && matched_in_column(b, a, x, y, r, t))
                 continue;
             ++c.pixels_differing;
             c.mask.set(x, y, glm::vec3(1.0f));
         }
     }
     return c;
+}
+
+Result<RowShiftComparison> compare_within_rows(const Image& a, const Image& b, int radius_rows,
+                                               double threshold) {
+    if (radius_rows < 0) return make_error("row radius " + std::to_string(radius_rows) + " < 0");
+    if (auto s = check_same_size(a, b); !s) return s.error();
+    return compare_within_rows(
+        a, b, std::vector<int>(static_cast<std::size_t>(a.width) * a.height, radius_rows),
+        threshold);
 }
 
 }  // namespace mirage

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "image/image.h"
 #include "util/result.h"
@@ -48,6 +49,13 @@ struct RowShiftComparison {
 };
 
 Result<RowShiftComparison> compare_within_rows(const Image& a, const Image& b, int radius_rows,
+                                               double threshold);
+
+/// The same with a radius for every pixel (row-major, width * height): pixel (x, y) of
+/// either image looks `radius_rows[y * width + x]` rows up and down, as far as the path
+/// error at that pixel can move the picture.
+Result<RowShiftComparison> compare_within_rows(const Image& a, const Image& b,
+                                               const std::vector<int>& radius_rows,
                                                double threshold);
 
 }  // namespace mirage

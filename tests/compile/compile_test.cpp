@@ -132,7 +132,7 @@ TEST(Compile, ErrorMapHoldsEveryPixelCentresError) {
             EXPECT_EQ(map->at(x, y).x, r->pixel_error_px[y * 32 + x]);
             worst = std::max(worst, map->at(x, y).x);
         }
-    EXPECT_FLOAT_EQ(worst, static_cast<float>(r->max_error_px));
+    EXPECT_FLOAT_EQ(worst, static_cast<float>(r->max_seen_error_px));
     o.error_map = dir + "/errors.png";
     auto refused = compile_scene(o);
     ASSERT_FALSE(refused.ok());

@@ -103,5 +103,28 @@ TEST(ImageCompare, RowShiftIsSymmetricAndColumnwise) {
     EXPECT_FALSE(compare_within_rows(a, b, -1, 0.1).ok());
 }
 
+TEST(ImageCompare, RowShiftRadiusPerPixel) {
+    // The edge moves two rows in columns 0 to 2 and not at all in columns 3 and 4: a radius
+    // of 2 where it moved and 0 elsewhere accepts it, a radius of 1 in column 1 does not.
+    Image a = edge_image(5, 10, 4), b = edge_image(5, 10, 4);
+    for (int x = 0; x < 3; ++x)
+        for (int y = 4; y < 6; ++y) b.set(x, y, glm::vec3(0.0f));
+    std::vector<int> radius(50, 0);
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 3; ++x) radius[y * 5 + x] = 2;
+    auto ok = compare_within_rows(a, b, radius, 0.05);
+    ASSERT_TRUE(ok.ok()) << ok.message();
+    EXPECT_EQ(ok->pixels_differing, 0);
+    for (int y = 0; y < 10; ++y) radius[y * 5 + 1] = 1;
+    auto short_radius = compare_within_rows(a, b, radius, 0.05);
+    ASSERT_TRUE(short_radius.ok());
+    EXPECT_EQ(short_radius->pixels_differing, 2);  // rows 4 and 5 of column 1
+    EXPECT_EQ(short_radius->mask.at(1, 4), glm::vec3(1.0f));
+    EXPECT_EQ(short_radius->mask.at(1, 5), glm::vec3(1.0f));
+    EXPECT_FALSE(compare_within_rows(a, b, std::vector<int>(49, 0), 0.05).ok());
+    radius[7] = -1;
+    EXPECT_FALSE(compare_within_rows(a, b, radius, 0.05).ok());
+}
+
 }  // namespace
 }  // namespace mirage
