@@ -11,16 +11,29 @@ namespace mirage {
 namespace {
 
 const char* const kKnown[] = {
-    "Mirage_Preset", "Mirage_Profile", "Mirage_Eta0", "Mirage_Eta1", "Mirage_Alpha",
-    "Mirage_Air_Temperature", "Mirage_Ground_Temperature", "Mirage_Scale_Height",
-    "Mirage_Pressure", "Mirage_Tolerance", "Mirage_Extent", "Mirage_Unit", "Mirage_Layers",
+    "Mirage_Preset",
+    "Mirage_Profile",
+    "Mirage_Eta0",
+    "Mirage_Eta1",
+    "Mirage_Alpha",
+    "Mirage_Air_Temperature",
+    "Mirage_Ground_Temperature",
+    "Mirage_Scale_Height",
+    "Mirage_Pressure",
+    "Mirage_Tolerance",
+    "Mirage_Extent",
+    "Mirage_Unit",
+    "Mirage_Layers",
     "Mirage_Layer_Count",
     // mirage.inc's own and the compiled layers' names
-    "Mirage_Inc_Temp", "Mirage_Compiled", "Mirage_Layer_Texture",
+    "Mirage_Inc_Temp",
+    "Mirage_Compiled",
+    "Mirage_Layer_Texture",
 };
 
 std::string where(const Declared& d) {
-    return d.loc.file + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + ": ";
+    return d.loc.file + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
+           ": ";
 }
 
 // Edit distance, for "did you mean".
@@ -37,7 +50,7 @@ size_t distance(const std::string& a, const std::string& b) {
 }
 
 class Reader {
-public:
+  public:
     explicit Reader(const Scene& scene) : scene_(scene) {}
 
     const Declared* find(const char* name) const {
@@ -71,12 +84,12 @@ public:
         return d ? where(*d) : scene_.file + ": ";
     }
 
-private:
+  private:
     const Scene& scene_;
 };
 
-#define MIRAGE_TRY(var, expr)               \
-    auto var##_result = (expr);             \
+#define MIRAGE_TRY(var, expr)                       \
+    auto var##_result = (expr);                     \
     if (!var##_result) return var##_result.error(); \
     auto var = *var##_result
 
@@ -133,8 +146,9 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
             if (!k) return make_error(r.at("Mirage_Profile") + "Mirage_Profile: " + k.message());
             kind = *k;
         } else {
-            return make_error(r.at("Mirage_Eta0") +
-                              "an explicit profile needs Mirage_Profile (\"inferior\" or \"superior\")");
+            return make_error(
+                r.at("Mirage_Eta0") +
+                "an explicit profile needs Mirage_Profile (\"inferior\" or \"superior\")");
         }
         if (kind != ProfileKind::None && !(eta0 && eta1 && alpha))
             return make_error(r.at("Mirage_Profile") + "Mirage_Profile \"" + *kind_name +

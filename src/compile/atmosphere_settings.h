@@ -13,14 +13,14 @@ namespace mirage {
 enum class LayerMode { Adaptive, Uniform };
 
 struct AtmosphereSettings {
-    Profile profile;                 // in metres; ProfileKind::None when the scene declares none
-    std::string profile_label;       // "paper (inferior)", "explicit inferior", ...
-    bool declared = false;           // the scene declares an atmosphere at all
-    double tolerance_px = 0.5;       // largest path error, pixels
-    std::optional<double> extent;    // horizontal reach from the camera, scene units
-    double unit_m = 1.0;             // metres per scene unit
+    Profile profile;               // in metres; ProfileKind::None when the scene declares none
+    std::string profile_label;     // "paper (inferior)", "explicit inferior", ...
+    bool declared = false;         // the scene declares an atmosphere at all
+    double tolerance_px = 0.5;     // largest path error, pixels
+    std::optional<double> extent;  // horizontal reach from the camera, scene units
+    double unit_m = 1.0;           // metres per scene unit
     LayerMode layers = LayerMode::Adaptive;
-    int layer_count = 0;             // uniform mode
+    int layer_count = 0;  // uniform mode
 };
 
 /// Reads the Mirage_... declarations of a parsed scene.  An error names the declaration's

@@ -1,14 +1,17 @@
 #include "compile/compile.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "atmosphere/exact_ray.h"
 #include "compile/library_paths.h"
+#include "compile/pixel_check.h"
 #include "image/image_io.h"
 #include "layers/band_tracer3d.h"
 #include "layers/fit.h"
@@ -16,7 +19,6 @@
 #include "pov/emit_layers.h"
 #include "scene/camera.h"
 #include "scene/parser.h"
-#include "trace/curved_propagator.h"
 #include "trace/scene_accel.h"
 #include "util/atomic_file.h"
 #include "util/check.h"
@@ -113,113 +115,20 @@ ObjectQuery object_query(const SceneAccel& accel) {
     };
 }
 
-// Where a ray ends: the surface it meets, or the direction it leaves in.
-struct RayEnd {
-    bool hit = false;
-    glm::dvec3 point{0.0};      // on the surface
-    glm::dvec3 direction{0.0};  // unit, of travel there (or when leaving)
-    glm::dvec3 normal{0.0};     // of the surface, facing the ray
-    int primitive = -1;
-    double length = 0.0;  // path length from the ray's start to the hit
-};
-
-/// The angle between where two rays from `from` end, as seen from a point `distance` behind
-/// `from` along the path (the eye, for a reflected ray): between the end points when both
-/// meet a surface, between the directions when both leave, and from the point to the
-/// direction when one of each.  Seen from farther back, the angle at `from` shrinks in
-/// proportion to the distances.
-double end_error_rad(const glm::dvec3& from, double distance, const RayEnd& a, const RayEnd& b) {
-    if (a.hit && b.hit) {
-        const double reach = std::max(a.length, b.length);
-        const double scale = reach > 0.0 ? reach / (distance + reach) : 1.0;
-        return scale * angle_between(a.point - from, b.point - from);
-    }
-    const glm::dvec3 da = a.hit ? a.point - from : a.direction;
-    const glm::dvec3 db = b.hit ? b.point - from : b.direction;
-    return angle_between(da, db);
-}
-
-RayEnd exact_end(const CurvedPropagator& exact, const SceneAccel& accel, const glm::dvec3& origin,
-                 const glm::dvec3& dir, double travelled) {
-    RayStart start;
-    start.origin = origin;
-    start.direction = dir;
-    start.travelled = travelled;
-    const PathHit h = exact.propagate(accel, start);
-    RayEnd e;
-    e.hit = h.hit;
-    e.direction = h.direction;
-    if (h.hit) {
-        e.point = h.surface.point;
-        e.normal =
-            glm::dot(h.surface.normal, h.direction) > 0.0 ? -h.surface.normal : h.surface.normal;
-        e.primitive = h.surface.primitive;
-        e.length = h.length;
-    }
-    return e;
-}
-
-RayEnd band_end(const LayerStack& stack, const ObjectQuery& objects, double camera_y,
-                const glm::dvec3& origin, const glm::dvec3& dir, const HorizontalBox& box) {
-    const Trace3dOutcome t =
-        trace_layers_3d(stack, origin, dir, box, box, Trace3dOptions{100000, &objects, camera_y});
-    RayEnd e;
-    if (t.object) {
-        e.hit = true;
-        e.point = t.object_point;
-        e.direction = t.object_dir;
-        e.normal =
-            glm::dot(t.object->normal, t.object_dir) > 0.0 ? -t.object->normal : t.object->normal;
-        e.primitive = t.object->id;
-        e.length = glm::length(t.object_point - origin);  // the chord: close enough for scale
-    } else {
-        e.direction = t.sky ? t.final_dir : t.scene_dir;
-    }
-    return e;
-}
-
-double reflection_weight(const Scene& scene, int primitive) {
-    const glm::dvec3 r = scene.primitives[primitive].texture.finish.reflection;
-    return std::max({r.x, r.y, r.z});
-}
-
-/// The error of what one pixel shows, rad seen from the eye: the band ray (as POV-Ray
-/// follows it through the rendered layers) against the exact ray, each to the first surface
-/// it meets, and on through the reflections both meet while their weight stays visible.
-double seen_error_rad(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
-                      const ObjectQuery& objects, const CurvedPropagator& exact, double camera_y,
-                      const glm::dvec3& eye, const glm::dvec3& dir, const HorizontalBox& box) {
-    RayEnd b = band_end(rendered, objects, camera_y, eye, dir, box);
-    RayEnd e = exact_end(exact, accel, eye, dir, 0.0);
-    double worst = end_error_rad(eye, 0.0, b, e);
-    double travelled = 0.0, weight = 1.0;
-    for (int bounce = 0; bounce < 4 && b.hit && e.hit && b.primitive == e.primitive; ++bounce) {
-        weight *= reflection_weight(scene, e.primitive);
-        if (weight < 1.0 / 255.0) break;
-        travelled += e.length;
-        glm::dvec3 bo = b.point + 1e-6 * b.normal, eo = e.point;
-        bo.y = std::max(bo.y, 0.0);
-        const RayEnd b2 =
-            band_end(rendered, objects, camera_y, bo, glm::reflect(b.direction, b.normal), box);
-        const RayEnd e2 =
-            exact_end(exact, accel, eo, glm::reflect(e.direction, e.normal), travelled);
-        worst = std::max(worst, end_error_rad(eo, travelled, b2, e2));
-        b = b2;
-        e = e2;
-    }
-    return worst;
-}
-
 }  // namespace
 
 namespace {
 
-/// Every pixel centre's path error in pixels as a grey image (+inf where a ray was cut off).
+/// The pixels' errors as an image: seen error (px), shift (rows), reflections' error (px).
 Image error_map_image(const CompileReport& r) {
     Image im(r.width, r.height);
     for (int y = 0; y < r.height; ++y)
-        for (int x = 0; x < r.width; ++x)
-            im.set(x, y, glm::vec3(r.pixel_error_px[static_cast<size_t>(y) * r.width + x]));
+        for (int x = 0; x < r.width; ++x) {
+            const size_t i = static_cast<size_t>(y) * r.width + x;
+            im.set(x, y,
+                   glm::vec3(r.pixel_error_px[i], r.pixel_shift_rows[i],
+                             r.pixel_reflection_error_px[i]));
+        }
     return im;
 }
 
@@ -512,26 +421,43 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     // What every pixel shows: its ray through the rendered layers against the exact ray, to
     // the surfaces they meet (the design's errors above are taken at the scene's edge).
     rep.pixel_error_px.assign(err.size(), 0.0f);
+    rep.pixel_shift_rows.assign(err.size(), 0.0f);
+    rep.pixel_reflection_error_px.assign(err.size(), 0.0f);
     if (stack.boundaries() > 0) {
-        CurvedSettings cs;
-        cs.profile = profile;
+        std::vector<glm::dvec3> directions(rays.size());
+        std::vector<double> pixel_rad(rays.size());
+        std::vector<bool> cut_off(rays.size());
         double finest = kInf;
-        for (const auto& r : rays) finest = std::min(finest, r.pixel_rad);
-        cs.tolerance_rad = 0.02 * finest;
-        const CurvedPropagator exact(cs);
-        const ObjectQuery objects = object_query(accel);
-        const LayerStack rendered = as_rendered(stack);
-        std::vector<double> seen(rays.size());
         for (size_t i = 0; i < rays.size(); ++i) {
-            seen[i] = err[i] == kInf
-                          ? kInf
-                          : seen_error_rad(rendered, scene, accel, objects, exact, eye_y,
-                                           cam.location, rays[i].direction, emitted_box) /
-                                rays[i].pixel_rad;
-            rep.pixel_error_px[i] = static_cast<float>(seen[i]);
+            directions[i] = rays[i].direction;
+            pixel_rad[i] = rays[i].pixel_rad;
+            cut_off[i] = err[i] == kInf;
+            finest = std::min(finest, rays[i].pixel_rad);
+        }
+        PixelCheckSettings ps;
+        ps.width = W;
+        ps.height = H;
+        ps.eye = cam.location;
+        ps.camera_y = eye_y;
+        ps.layers = emitted_box;
+        ps.exact_tolerance_rad = 0.02 * finest;
+        PixelCheck pc = check_pixels(as_rendered(stack), profile, scene, accel, object_query(accel),
+                                     directions, pixel_rad, cut_off, ps);
+        rep.pixel_error_px = std::move(pc.seen_error_px);
+        rep.pixel_shift_rows = std::move(pc.shift_rows);
+        rep.pixel_reflection_error_px = std::move(pc.reflection_error_px);
+        std::vector<double> seen(rep.pixel_error_px.begin(), rep.pixel_error_px.end());
+        std::vector<double> shift;
+        for (float v : rep.pixel_shift_rows) {
+            if (std::isfinite(v))
+                shift.push_back(v);
+            else
+                ++rep.pixels_not_shown;
         }
         rep.p95_seen_error_px = percentile(seen, 0.95);
         rep.max_seen_error_px = *std::max_element(seen.begin(), seen.end());
+        rep.p95_shift_rows = percentile(shift, 0.95);
+        rep.max_shift_rows = shift.empty() ? 0.0 : *std::max_element(shift.begin(), shift.end());
     }
     rep.p50_error_px = percentile(err, 0.50);
     rep.p95_error_px = percentile(err, 0.95);
@@ -635,6 +561,9 @@ std::string report_json(const CompileReport& r) {
     j["p95_error_px"] = r.p95_error_px;
     j["p95_seen_error_px"] = r.p95_seen_error_px;
     j["max_seen_error_px"] = r.max_seen_error_px;
+    j["p95_shift_rows"] = r.p95_shift_rows;
+    j["max_shift_rows"] = r.max_shift_rows;
+    j["pixels_not_shown"] = r.pixels_not_shown;
     j["p99_error_px"] = r.p99_error_px;
     j["max_error_px"] =
         std::isfinite(r.max_error_px) ? nlohmann::json(r.max_error_px) : nlohmann::json("inf");
@@ -677,10 +606,14 @@ std::string report_text(const CompileReport& r) {
     s << "  error       p50 " << sig(r.p50_error_px, 3) << " px, p95 " << sig(r.p95_error_px, 3)
       << " px, max " << sig(r.max_error_px, 3) << " px over " << r.pixels
       << " pixel centres (tolerance " << sig(r.tolerance_px, 3) << " px)\n";
-    if (r.layers > 0)
+    if (r.layers > 0) {
         s << "  seen        p95 " << sig(r.p95_seen_error_px, 3) << " px, max "
           << sig(r.max_seen_error_px, 3)
           << " px: where the pixels' rays meet the objects, reflections included\n";
+        s << "  shift       p95 " << sig(r.p95_shift_rows, 3) << " rows, max "
+          << sig(r.max_shift_rows, 3) << " rows to where the exact image shows the same; "
+          << r.pixels_not_shown << " pixels show what no row of their column shows\n";
+    }
     if (!r.rows_over.empty()) {
         s << "  over        " << r.pixels_over << " pixels in " << r.rows_over.size()
           << " rows exceed the tolerance; worst rows:";

@@ -27,7 +27,9 @@ struct CompileOptions {
     std::vector<std::string> library_paths;  // extra include directories, searched first
     std::string layout = "auto";             // "nested", "gaps" or "auto" (by index contrast)
     int fit_columns = 1;                     // image columns the layers are fitted to
-    std::string error_map;                   // also write every pixel centre's error here (.exr)
+    // Also write the pixels' errors here (.exr; R the seen error in pixels, G the shift in
+    // rows, B the reflections' error in pixels).
+    std::string error_map;
     std::optional<Profile> profile;  // replaces the scene's atmosphere (what-if runs, tests)
     std::string profile_label;       // names the replacement in the report
 };
@@ -51,12 +53,15 @@ struct CompileReport {
     int below_camera = 0, above_camera = 0;
     double p50_error_px = 0.0, p95_error_px = 0.0, p99_error_px = 0.0, max_error_px = 0.0;
     double max_error_px_fitted = 0.0;  // over the column the design was fitted to
-    // What the pixels show: every pixel centre's ray through the layers as POV-Ray follows
-    // it against the exact ray, to the surfaces they meet and through the reflections both
-    // make, as an angle seen from the eye in pixels (row-major from the top row, +inf for a
-    // ray cut off; not in the JSON).  The errors above are the design's, at the scene's edge.
-    std::vector<float> pixel_error_px;
+    // What the pixels show (compile/pixel_check.h), row-major from the top row, not in the
+    // JSON: the angle between the band ray's end and the exact ray's seen from the eye,
+    // reflections included, pixels (+inf for a ray cut off); the rows to the nearest pixel
+    // of the column where the exact image shows the same (+inf: none does); the reflections'
+    // part of the angle.  The errors above are the design's, at the scene's edge.
+    std::vector<float> pixel_error_px, pixel_shift_rows, pixel_reflection_error_px;
     double p95_seen_error_px = 0.0, max_seen_error_px = 0.0;
+    double p95_shift_rows = 0.0, max_shift_rows = 0.0;  // over the pixels shown somewhere
+    int pixels_not_shown = 0;  // pixels showing what no row of their column shows
     int pixels = 0, pixels_over = 0;
     int max_crossings = 0;    // boundary events of a camera ray in the layers
     int max_trace_level = 0;  // with its reflections, as POV-Ray counts levels

@@ -130,6 +130,8 @@ TEST(Compile, ErrorMapHoldsEveryPixelCentresError) {
     for (int y = 0; y < 24; ++y)
         for (int x = 0; x < 32; ++x) {
             EXPECT_EQ(map->at(x, y).x, r->pixel_error_px[y * 32 + x]);
+            EXPECT_EQ(map->at(x, y).y, r->pixel_shift_rows[y * 32 + x]);
+            EXPECT_EQ(map->at(x, y).z, r->pixel_reflection_error_px[y * 32 + x]);
             worst = std::max(worst, map->at(x, y).x);
         }
     EXPECT_FLOAT_EQ(worst, static_cast<float>(r->max_seen_error_px));

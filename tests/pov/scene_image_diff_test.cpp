@@ -3,13 +3,13 @@
 //  1. Atmosphere off: POV-Ray renders the template as written (mirage.inc adds nothing) and
 //     the tracer follows straight rays.  Same rays, same shading: a tight threshold.
 //  2. Atmosphere on: POV-Ray renders the compiled band scene, the tracer follows the exact
-//     curved paths (per ray, 0.1 px).  A band ray ends e px from the exact one, where e is
-//     the compile report's error at that pixel centre, and the atmosphere depends on height
-//     only, so a level camera's picture moves along its columns: every pixel must find its
-//     colour in the other image within ceil(e + 0.1) + 1 rows (the 0.1 for the tracer's own
-//     tolerance, the 1 for point sampling: an edge between two pixel centres).  What a
-//     shift the report allows cannot explain is a defect: of the layers, of POV-Ray's
-//     handling of them, or of the report.
+//     curved paths (per ray, 0.1 px).  The atmosphere depends on height only, so a level
+//     camera's picture moves along its columns, and the compile report says how far: for
+//     every pixel, the rows s to where the exact image shows what its band ray ends on, and
+//     the error r of its reflections.  Every pixel must find its colour in the other image
+//     within ceil(s + r + 0.1) + 1 rows (0.1 for the tracer's tolerance, 1 for point
+//     sampling: an edge between two pixel centres).  What that shift cannot explain is a
+//     defect: of the layers, of POV-Ray's handling of them, or of the report.
 //  3. Convergence: layers fitted to a tighter tolerance give a render closer to the tracer.
 //  4. The check fails for a wrong model: layers fitted to another profile, whose own report
 //     is as good, leave many pixels unexplained.
@@ -120,9 +120,9 @@ Result<BandCheck> check_bands(const std::string& scene, CompileOptions o, const 
         return make_error("povray failed: see " + (dir / (stem + ".log")).string());
     auto pov = read_image(o.image);
     if (!pov) return pov.error();
-    std::vector<int> radius(report->pixel_error_px.size());
+    std::vector<int> radius(report->pixel_shift_rows.size());
     for (std::size_t i = 0; i < radius.size(); ++i) {
-        const double e = report->pixel_error_px[i];
+        const double e = report->pixel_shift_rows[i] + report->pixel_reflection_error_px[i];
         radius[i] = std::isfinite(e) ? static_cast<int>(std::ceil(e + kTraceTolerancePx)) + 1 : kH;
     }
     auto plain = compare_images(*pov, traced, kSameColour);
@@ -135,12 +135,14 @@ Result<BandCheck> check_bands(const std::string& scene, CompileOptions o, const 
 
 void print(const std::string& scene, const std::string& what, const BandCheck& c) {
     std::printf(
-        "%s %s: %d layers (%s), report p95 %.3g max %.3g px, seen p95 %.3g max %.3g px; PSNR %.2f "
+        "%s %s: %d layers (%s), report p95 %.3g max %.3g px, seen p95 %.3g max %.3g px, shift "
+        "p95 %.3g max %.3g rows, %d px not shown; PSNR %.2f "
         "dB, %lld px over %.2f, "
         "%lld px (%.3f%%) unexplained by the report's error\n",
         scene.c_str(), what.c_str(), c.report.layers, c.report.layout.c_str(),
         c.report.p95_error_px, c.report.max_error_px, c.report.p95_seen_error_px,
-        c.report.max_seen_error_px, c.plain.psnr_db, static_cast<long long>(c.plain.pixels_over),
+        c.report.max_seen_error_px, c.report.p95_shift_rows, c.report.max_shift_rows,
+        c.report.pixels_not_shown, c.plain.psnr_db, static_cast<long long>(c.plain.pixels_over),
         kSameColour, static_cast<long long>(c.unexplained.pixels_differing),
         100.0 * c.unexplained.share());
 }

@@ -1,0 +1,228 @@
+#include "compile/pixel_check.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+#include "trace/curved_propagator.h"
+#include "util/check.h"
+
+namespace mirage {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+// Where a ray ends: the surface it meets, or the direction it leaves in.
+struct RayEnd {
+    bool hit = false;
+    glm::dvec3 point{0.0};      // on the surface
+    glm::dvec3 direction{0.0};  // unit, of travel there (or when leaving)
+    glm::dvec3 normal{0.0};     // of the surface, facing the ray
+    int primitive = -1;         // -1: the ground where no object is
+    double length = 0.0;        // path length from the ray's start to the hit
+};
+
+/// Where a ray's end lies as seen from `from`: towards its point, or along its direction.
+glm::dvec3 seen_from(const glm::dvec3& from, const RayEnd& e) {
+    const glm::dvec3 v = e.hit ? e.point - from : e.direction;
+    const double n = glm::length(v);
+    return n > 0.0 ? v / n : glm::dvec3(0.0, 0.0, 1.0);
+}
+
+/// The angle between where two rays from `from` end, as seen from a point `distance` behind
+/// `from` along the path (the eye, for a reflected ray): seen from farther back, the angle
+/// at `from` between two end points shrinks in proportion to the distances.
+double end_error_rad(const glm::dvec3& from, double distance, const RayEnd& a, const RayEnd& b) {
+    const double angle = angle_between(seen_from(from, a), seen_from(from, b));
+    if (a.hit && b.hit) {
+        const double reach = std::max(a.length, b.length);
+        return reach > 0.0 ? angle * reach / (distance + reach) : angle;
+    }
+    return angle;
+}
+
+RayEnd exact_end(const CurvedPropagator& exact, const SceneAccel& accel, const glm::dvec3& origin,
+                 const glm::dvec3& dir, double travelled) {
+    RayStart start;
+    start.origin = origin;
+    start.direction = dir;
+    start.travelled = travelled;
+    const PathHit h = exact.propagate(accel, start);
+    RayEnd e;
+    e.hit = h.hit;
+    e.direction = h.direction;
+    if (h.hit) {
+        e.point = h.surface.point;
+        e.normal =
+            glm::dot(h.surface.normal, h.direction) > 0.0 ? -h.surface.normal : h.surface.normal;
+        e.primitive = h.surface.primitive;
+        e.length = h.length;
+    }
+    return e;
+}
+
+RayEnd band_end(const LayerStack& stack, const ObjectQuery& objects, double camera_y,
+                const glm::dvec3& origin, const glm::dvec3& dir, const HorizontalBox& box) {
+    const Trace3dOutcome t =
+        trace_layers_3d(stack, origin, dir, box, box, Trace3dOptions{100000, &objects, camera_y});
+    RayEnd e;
+    if (t.ground) {  // the ground where no object is: the exact ray ends there too
+        e.hit = true;
+        e.point = t.scene_point;
+        e.direction = t.scene_dir;
+        e.length = glm::length(t.scene_point - origin);
+    } else if (t.object) {
+        e.hit = true;
+        e.point = t.object_point;
+        e.direction = t.object_dir;
+        e.normal =
+            glm::dot(t.object->normal, t.object_dir) > 0.0 ? -t.object->normal : t.object->normal;
+        e.primitive = t.object->id;
+        e.length = glm::length(t.object_point - origin);  // the chord: enough for a scale
+    } else {
+        e.direction = t.sky ? t.final_dir : t.scene_dir;
+    }
+    return e;
+}
+
+double reflection_weight(const Scene& scene, int primitive) {
+    const glm::dvec3 r = scene.primitives[primitive].texture.finish.reflection;
+    return std::max({r.x, r.y, r.z});
+}
+
+// One pixel's rays: where the camera rays end as seen from the eye, and the reflections'
+// error.
+struct PixelEnds {
+    glm::dvec3 band_seen{0.0}, exact_seen{0.0};
+    double camera_error_rad = 0.0;
+    double reflection_error_rad = 0.0;
+};
+
+PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
+                     const ObjectQuery& objects, const CurvedPropagator& exact,
+                     const PixelCheckSettings& s, const glm::dvec3& dir) {
+    RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, dir, s.layers);
+    RayEnd e = exact_end(exact, accel, s.eye, dir, 0.0);
+    PixelEnds p;
+    p.band_seen = seen_from(s.eye, b);
+    p.exact_seen = seen_from(s.eye, e);
+    p.camera_error_rad = end_error_rad(s.eye, 0.0, b, e);
+    double travelled = 0.0, weight = 1.0;
+    for (int bounce = 0;
+         bounce < s.max_bounces && b.hit && e.hit && b.primitive >= 0 && b.primitive == e.primitive;
+         ++bounce) {
+        weight *= reflection_weight(scene, b.primitive);
+        if (weight < 1.0 / 255.0) break;
+        travelled += e.length;
+        // Both reflections leave the point the band ray met: the exact image shows that
+        // point from a pixel nearby (the shift measures how far), and its reflection there
+        // is what the pixel would show.  A small move on a curved mirror turns the reflected
+        // ray far but moves the picture only as far as the point moves.  The exact
+        // reflection arrives with the exact direction.
+        glm::dvec3 o = b.point + 1e-6 * b.normal;
+        o.y = std::max(o.y, 0.0);
+        const RayEnd b2 = band_end(rendered, objects, s.camera_y, o,
+                                   glm::reflect(b.direction, b.normal), s.layers);
+        const RayEnd e2 =
+            exact_end(exact, accel, o, glm::reflect(e.direction, b.normal), travelled);
+        p.reflection_error_rad =
+            std::max(p.reflection_error_rad, end_error_rad(o, travelled, b2, e2));
+        b = b2;
+        e = e2;
+    }
+    return p;
+}
+
+/// Runs body(k) for k in [0, n) on all cores, in any order.
+template <class Body>
+void parallel_for(int n, const Body& body) {
+    std::atomic<int> next{0};
+    auto work = [&] {
+        for (int k = next++; k < n; k = next++) body(k);
+    };
+    const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> workers;
+    for (int t = 1; t < std::min(threads, n); ++t) workers.emplace_back(work);
+    work();
+    for (auto& w : workers) w.join();
+}
+
+}  // namespace
+
+PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, const Scene& scene,
+                        const SceneAccel& accel, const ObjectQuery& objects,
+                        const std::vector<glm::dvec3>& directions,
+                        const std::vector<double>& pixel_rad, const std::vector<bool>& cut_off,
+                        const PixelCheckSettings& s) {
+    const int W = s.width, H = s.height;
+    const size_t n = static_cast<size_t>(W) * H;
+    MIRAGE_CHECK(directions.size() == n && pixel_rad.size() == n && cut_off.size() == n);
+    CurvedSettings cs;
+    cs.profile = profile;
+    cs.tolerance_rad = s.exact_tolerance_rad;
+    const CurvedPropagator exact(cs);
+
+    std::vector<PixelEnds> ends(n);
+    parallel_for(H, [&](int row) {
+        for (size_t i = static_cast<size_t>(row) * W; i < static_cast<size_t>(row + 1) * W; ++i)
+            if (!cut_off[i])
+                ends[i] = pixel_ends(rendered, scene, accel, objects, exact, s, directions[i]);
+    });
+
+    PixelCheck out;
+    out.seen_error_px.assign(n, 0.0f);
+    out.shift_rows.assign(n, 0.0f);
+    out.reflection_error_px.assign(n, 0.0f);
+    parallel_for(W, [&](int col) {
+        // Each exact ray's reach: the angle to the farther of its neighbours' ends in the
+        // column, at least a hundredth of a pixel.  A band end within it is what that row
+        // shows (between two rows' samples, or on an edge between them).
+        std::vector<double> reach_cos(H);
+        for (int row = 0; row < H; ++row) {
+            const size_t i = static_cast<size_t>(row) * W + col;
+            double reach = 0.01 * pixel_rad[i];
+            for (int nb : {row - 1, row + 1}) {
+                if (nb < 0 || nb >= H) continue;
+                const size_t j = static_cast<size_t>(nb) * W + col;
+                reach = std::max(reach, angle_between(ends[i].exact_seen, ends[j].exact_seen));
+            }
+            reach_cos[row] = std::cos(std::min(reach, M_PI));
+        }
+        for (int row = 0; row < H; ++row) {
+            const size_t i = static_cast<size_t>(row) * W + col;
+            if (cut_off[i]) {
+                out.seen_error_px[i] = out.shift_rows[i] = static_cast<float>(kInf);
+                continue;
+            }
+            const PixelEnds& p = ends[i];
+            out.seen_error_px[i] = static_cast<float>(
+                std::max(p.camera_error_rad, p.reflection_error_rad) / pixel_rad[i]);
+            out.reflection_error_px[i] = static_cast<float>(p.reflection_error_rad / pixel_rad[i]);
+            // The nearest row whose exact ray ends where this band ray does: outward from the
+            // pixel's own row, up and down alternately.
+            double shift = kInf;
+            for (int d = 0; d < H && !std::isfinite(shift); ++d) {
+                for (int q : {row - d, row + d}) {
+                    if (q < 0 || q >= H) continue;
+                    const size_t j = static_cast<size_t>(q) * W + col;
+                    if (cut_off[j]) continue;
+                    if (glm::dot(ends[j].exact_seen, p.band_seen) >= reach_cos[q]) {
+                        shift = d;
+                        break;
+                    }
+                }
+            }
+            out.shift_rows[i] = static_cast<float>(shift);
+        }
+    });
+    return out;
+}
+
+}  // namespace mirage

@@ -1,0 +1,53 @@
+// What every pixel of a band render shows, against the exact model: each pixel centre's ray
+// followed through the layers as POV-Ray follows it and along its exact path, each to the
+// surface it meets and on through the reflections both make.  Two measures per pixel: the
+// angle between where the two rays end, seen from the eye, and how many rows away the exact
+// image shows what the band ray ends on (in a mirage the exact image is stretched, so a
+// small angle can be many rows).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "atmosphere/profile.h"
+#include "layers/band_tracer3d.h"
+#include "layers/stack.h"
+#include "scene/scene.h"
+#include "trace/scene_accel.h"
+
+namespace mirage {
+
+struct PixelCheckSettings {
+    int width = 0, height = 0;          // the image; rays are row-major from the top row
+    glm::dvec3 eye{0.0};                // where every camera ray starts
+    double camera_y = 0.0;              // the camera's height, for POV-Ray's ior quotients
+    HorizontalBox layers{};             // horizontal extent of the rendered layers
+    double exact_tolerance_rad = 1e-5;  // sampling tolerance of the exact paths
+    int max_bounces = 4;                // reflections followed, while their weight shows
+};
+
+struct PixelCheck {
+    // Angle between the band ray's end and the exact ray's, seen from the eye, in pixels;
+    // the larger of the camera ray's and its reflections' (a reflection's angle at the mirror
+    // shrunk by the distances, as seen from the eye).  +inf where a band ray was cut off.
+    std::vector<float> seen_error_px;
+    // Rows between the pixel and the nearest one in its column whose exact ray ends on what
+    // the band ray ends on (within the exact rays' spacing there); +inf when no row of the
+    // column shows it: the band render shows something the exact image does not.
+    std::vector<float> shift_rows;
+    // The reflections' part of seen_error_px (0 without reflections), pixels.
+    std::vector<float> reflection_error_px;
+};
+
+/// Checks every pixel centre's ray: `directions[i]` and `pixel_rad[i]` (the angle of pixel
+/// i) for the width x height pixels, `cut_off[i]` for rays the band tracer cut off.
+/// `objects` stops band rays at the scene's surfaces (as POV-Ray does); `accel` holds the
+/// same surfaces for the exact rays.  Runs on all cores; the result does not depend on how
+/// many.
+PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, const Scene& scene,
+                        const SceneAccel& accel, const ObjectQuery& objects,
+                        const std::vector<glm::dvec3>& directions,
+                        const std::vector<double>& pixel_rad, const std::vector<bool>& cut_off,
+                        const PixelCheckSettings& settings);
+
+}  // namespace mirage
