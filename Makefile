@@ -10,6 +10,8 @@
 #   make test            build and run every test through CTest
 #   make bench           Google Benchmark for the path kernels
 #   make compare         band models against the continuous tracer: error against run time
+#                        (build/compare/NAME/: results.csv, error_vs_time.png, contact_sheet.png,
+#                        summary.md; SCENE, and W H or CW CH, default 320x240: a few minutes)
 #   make clean
 
 BUILD   ?= build
@@ -17,12 +19,16 @@ SCENE   ?= scenes/desert.pov
 W       ?= 640
 H       ?= 480
 TOL     ?=
+# make compare renders every setting: its own size, smaller, unless W and H are given.
+CW      ?= $(if $(filter command line,$(origin W)),$(W),320)
+CH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 NAME    := $(basename $(notdir $(SCENE)))
 
 # Debian 12 packages the build, the tests and the renders need.
 PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev openimageio-tools \
-            libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox
+            libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox \
+            fonts-dejavu-core
 
 .PHONY: all deps configure build test render trace bench compare clean
 
@@ -55,6 +61,9 @@ trace: build
 	@mkdir -p $(BUILD)/render
 	$(BUILD)/mirage trace $(SCENE) --width $(W) --height $(H) $(if $(TOL),--tolerance $(TOL)) \
 	    -o $(BUILD)/render/$(NAME)-trace.png
+
+compare: build
+	$(BUILD)/mirage compare $(SCENE) -W $(CW) -H $(CH) -o $(BUILD)/compare/$(NAME)
 
 bench: build
 	$(BUILD)/mirage_bench

@@ -112,6 +112,18 @@ Status write_png(const Image& linear, const std::string& path) {
     return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
 }
 
+Status write_png_codes(const Image& codes, const std::string& path) {
+    if (auto s = check_image(codes, path); !s) return s;
+    std::vector<std::uint8_t> bytes(codes.pixels.size());
+    for (std::size_t i = 0; i < codes.pixels.size(); ++i) {
+        bytes[i] = OIIO::convert_type<float, std::uint8_t>(codes.pixels[i]);
+    }
+    OIIO::ImageSpec spec(codes.width, codes.height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("Software", "mirage");
+    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+}
+
 Status write_exr(const Image& linear, const std::string& path) {
     if (auto s = check_image(linear, path); !s) return s;
     OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::FLOAT);

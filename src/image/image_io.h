@@ -27,6 +27,11 @@ Image quantize_srgb8(const Image& linear);
 /// to a temporary name beside `path` and renames it, so a failure leaves `path` untouched.
 Status write_png(const Image& linear, const std::string& path);
 
+/// Writes code values / 255 (what `read_image` gives for an 8-bit PNG, or `quantize_srgb8`)
+/// back as an 8-bit RGB PNG, each value rounded to its code with no encoding, through a
+/// temporary name.  For pictures made of such images (a contact sheet).
+Status write_png_codes(const Image& codes, const std::string& path);
+
 /// Writes linear pixels as a float RGB OpenEXR (no encoding), through a temporary name.
 Status write_exr(const Image& linear, const std::string& path);
 

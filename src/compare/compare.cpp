@@ -1,0 +1,587 @@
+#include "compare/compare.h"
+
+#include <sched.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include "atmosphere/profile.h"
+#include "compare/compare_report.h"
+#include "compare/povray_render.h"
+#include "compile/compile.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
+#include "report/contact_sheet.h"
+#include "trace/trace_scene.h"
+#include "util/atomic_file.h"
+#include "util/format.h"
+#include "util/process.h"
+
+namespace mirage {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxCount = 4096;       // the largest uniform layer count a sweep tries
+constexpr int kFirstCount = 8;        // the default doubling starts here
+constexpr int kMaxImageSide = 20000;  // as the tracer
+
+std::string list_text(const std::vector<double>& values) {
+    std::string s;
+    for (double v : values) {
+        if (!s.empty()) s += ',';
+        s += shortest(v);
+    }
+    return s;
+}
+
+std::string list_text(const std::vector<int>& values) {
+    std::string s;
+    for (int v : values) {
+        if (!s.empty()) s += ',';
+        s += std::to_string(v);
+    }
+    return s;
+}
+
+std::string shell_quoted(const std::string& s) {
+    if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                          "0123456789_-+=/.,:@%") == std::string::npos)
+        return s;
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+double process_cpu_seconds() {
+    rusage u{};
+    ::getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+/// A name for a temporary image beside `path` that keeps its extension last: OpenImageIO and
+/// POV-Ray both choose (or append) the format's extension.
+std::string temporary_image_name(const fs::path& path) {
+    std::string name = ".";
+    name += path.stem().string();
+    name += ".tmp";
+    name += std::to_string(::getpid());
+    name += path.extension().string();
+    return (path.parent_path() / name).string();
+}
+
+/// The sweep's state: the options, the reference and what has been measured so far.
+struct Sweep {
+    CompareOptions opt;
+    fs::path out, renders, work;
+    std::string scene_abs;
+    Image reference;  // code values / 255
+    CompareResult result;
+    std::vector<SheetTile> tiles;
+    std::string povray_version;
+    std::set<std::string> compile_warnings;  // noted once each
+
+    void say(const std::string& line) const {
+        if (opt.progress) opt.progress(line);
+    }
+    void note(const std::string& line) {
+        result.notes.push_back(line);
+        say(line);
+    }
+
+    /// Refuses to replace the scene file with an output.
+    Status guard(const fs::path& output) const {
+        std::error_code ec;
+        if (fs::exists(output, ec) && fs::equivalent(scene_abs, output, ec))
+            return make_error(opt.scene + ": " + output.string() +
+                              " would overwrite the scene template");
+        return Ok{};
+    }
+
+    /// Measures an image (code values / 255) against the reference.
+    Result<ImageComparison> measure(const Image& codes) const {
+        return compare_images(codes, reference, opt.threshold);
+    }
+};
+
+std::string row_id(CompareModel model, const std::string& setting) {
+    return model_name(model) + "-" + setting;
+}
+
+enum class BandOutcome { Rendered, Skipped, OverBudget };
+
+/// Compiles one band design, renders it with POV-Ray and measures it.  A fatal error (POV-Ray
+/// cannot be started, the scene would be overwritten) is an error; a design that cannot be
+/// compiled or rendered is a note.
+Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
+                             CompileReport* over_budget) {
+    CompareRow row;
+    row.model = model;
+    row.setting = setting;
+    const std::string id = row_id(model, setting_text(row));
+    const std::string label =
+        (model == CompareModel::UniformBands ? "uniform " : "adaptive ") + setting_label(row);
+    const fs::path dir = sw.work / id;
+    const fs::path image = sw.renders / (id + ".png");
+    if (auto s = sw.guard(image); !s) return s.error();
+
+    CompileOptions c;
+    c.scene = sw.opt.scene;
+    c.width = sw.opt.width;
+    c.height = sw.opt.height;
+    c.out_dir = dir.string();
+    c.image = image.string();
+    c.library_paths = sw.opt.library_paths;
+    if (model == CompareModel::UniformBands) {
+        c.layers = LayerMode::Uniform;
+        c.layer_count = static_cast<int>(std::lround(setting));
+    } else {
+        c.layers = LayerMode::Adaptive;
+        c.tolerance_px = setting;
+    }
+    auto rep = compile_scene(c);
+    if (!rep) {
+        sw.note(label + ": skipped, mirage compile failed: " + rep.message());
+        return BandOutcome::Skipped;
+    }
+    if (rep->max_trace_level > kPovrayMaxTraceLevel) {
+        if (over_budget) *over_budget = *rep;
+        return BandOutcome::OverBudget;
+    }
+    // What compile had to give up (a refit within a tighter trace-level budget) explains an
+    // error that does not fall with the tolerance.
+    for (const auto& w : rep->warnings)
+        if (sw.compile_warnings.insert(w).second) sw.note(label + ": mirage compile: " + w);
+
+    PovrayRenderSettings ps;
+    ps.povray = sw.opt.povray;
+    ps.ini = rep->ini_path;
+    ps.work_dir = sw.out.string();
+    const std::string log = (dir / "povray.log").string();
+    ps.log = temporary_name_for(log);
+    ps.output = temporary_image_name(image);
+    ps.threads = sw.opt.threads;
+    auto run = render_povray(ps);
+    if (!run) return run.error();
+    if (auto s = commit_file(ps.log, log); !s) return s.error();
+    std::error_code ec;
+    if (run->exit_code != 0 || !fs::exists(ps.output, ec)) {
+        fs::remove(ps.output, ec);
+        sw.note(label + ": skipped, POV-Ray failed (exit " + std::to_string(run->exit_code) + "; " +
+                log + "):\n" + log_tail(log, 5));
+        return BandOutcome::Skipped;
+    }
+    if (auto s = commit_file(ps.output, image.string()); !s) return s.error();
+    if (sw.povray_version.empty()) sw.povray_version = run->log.version;
+    auto codes = read_image(image.string());
+    if (!codes) return codes.error();
+    auto cmp = sw.measure(*codes);
+    if (!cmp) return make_error(image.string() + ": " + cmp.message());
+
+    row.layers = rep->layers;
+    row.seconds = run->seconds;
+    row.render_seconds = run->log.trace_seconds.value_or(0.0);
+    row.cpu_seconds = run->log.cpu_seconds.value_or(0.0);
+    row.threads = run->log.threads;
+    row.compile_seconds = rep->seconds;
+    row.rmse = cmp->rmse;
+    row.psnr_db = cmp->psnr_db;
+    row.share_over =
+        cmp->pixel_count > 0 ? static_cast<double>(cmp->pixels_over) / cmp->pixel_count : 0.0;
+    row.max_error_px = rep->max_error_px;
+    row.p95_error_px = rep->p95_error_px;
+    row.max_trace_level = rep->max_trace_level;
+    row.image = fs::relative(image, sw.out).string();
+    sw.result.rows.push_back(row);
+    sw.tiles.push_back(
+        {std::move(*codes),
+         model_name(model) + " " + setting_label(row) +
+             (model == CompareModel::AdaptiveBands ? ", " + std::to_string(row.layers) + " layers"
+                                                   : "") +
+             "\nPOV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3)});
+    sw.say(label + ": " +
+           (model == CompareModel::AdaptiveBands ? std::to_string(row.layers) + " layers, " : "") +
+           "POV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3));
+    return BandOutcome::Rendered;
+}
+
+/// Traces one polyline setting and measures it; a trace that fails is a note.
+Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
+    CompareRow row;
+    row.model = model;
+    row.setting = tolerance;
+    const std::string id = row_id(model, setting_text(row));
+    const std::string label = model_name(model) + " " + setting_label(row);
+    const fs::path image = sw.renders / (id + ".png");
+    if (auto s = sw.guard(image); !s) return s;
+    TraceOptions t;
+    t.scene = sw.opt.scene;
+    t.output = image.string();
+    t.width = sw.opt.width;
+    t.height = sw.opt.height;
+    t.tolerance_px = tolerance;
+    t.threads = sw.opt.threads;
+    t.scanline_paths = model == CompareModel::Scanline;
+    t.library_paths = sw.opt.library_paths;
+    t.progress = false;
+    const double cpu0 = process_cpu_seconds();
+    const auto t0 = std::chrono::steady_clock::now();
+    auto rep = trace_scene(t);
+    const auto t1 = std::chrono::steady_clock::now();
+    const double cpu1 = process_cpu_seconds();
+    if (!rep) {
+        sw.note(label + ": skipped, the tracer failed: " + rep.message());
+        return Ok{};
+    }
+    Image codes = quantize_srgb8(rep->render.image);
+    auto cmp = sw.measure(codes);
+    if (!cmp) return make_error(image.string() + ": " + cmp.message());
+    row.seconds = std::chrono::duration<double>(t1 - t0).count();
+    row.render_seconds = rep->render.stats.seconds;
+    row.cpu_seconds = cpu1 - cpu0;
+    row.threads = rep->render.stats.threads;
+    row.rmse = cmp->rmse;
+    row.psnr_db = cmp->psnr_db;
+    row.share_over =
+        cmp->pixel_count > 0 ? static_cast<double>(cmp->pixels_over) / cmp->pixel_count : 0.0;
+    row.max_error_px = rep->tolerance_px;
+    row.segments_per_ray = rep->render.stats.segments_per_ray();
+    row.image = fs::relative(image, sw.out).string();
+    sw.result.rows.push_back(row);
+    sw.tiles.push_back({std::move(codes), label + "\ntracer " + sig(row.seconds, 3) + " s, RMSE " +
+                                              sig(row.rmse, 3)});
+    sw.say(label + ": " + sig(row.segments_per_ray, 3) + " segments/ray, tracer " +
+           sig(row.seconds, 3) + " s on " + std::to_string(row.threads) + " threads, RMSE " +
+           sig(row.rmse, 3));
+    return Ok{};
+}
+
+/// POV-Ray with no layers against the tracer with straight rays: how far apart the two
+/// renderers are before any atmosphere.  Failures are notes.
+Status run_straight(Sweep& sw) {
+    const fs::path dir = sw.work / "straight";
+    CompileOptions c;
+    c.scene = sw.opt.scene;
+    c.width = sw.opt.width;
+    c.height = sw.opt.height;
+    c.out_dir = dir.string();
+    c.image = (dir / "povray.png").string();
+    c.library_paths = sw.opt.library_paths;
+    c.profile = Profile{};  // ProfileKind::None: no layers at all
+    c.profile_label = "none (straight rays)";
+    auto rep = compile_scene(c);
+    if (!rep) {
+        sw.note("straight rays: not compared, mirage compile failed: " + rep.message());
+        return Ok{};
+    }
+    PovrayRenderSettings ps;
+    ps.povray = sw.opt.povray;
+    ps.ini = rep->ini_path;
+    ps.work_dir = sw.out.string();
+    const std::string log = (dir / "povray.log").string();
+    ps.log = temporary_name_for(log);
+    ps.output = temporary_image_name(c.image);
+    ps.threads = sw.opt.threads;
+    auto run = render_povray(ps);
+    if (!run) return run.error();
+    if (auto s = commit_file(ps.log, log); !s) return s.error();
+    std::error_code ec;
+    if (run->exit_code != 0 || !fs::exists(ps.output, ec)) {
+        fs::remove(ps.output, ec);
+        sw.note("straight rays: not compared, POV-Ray failed (exit " +
+                std::to_string(run->exit_code) + "; " + log + ")");
+        return Ok{};
+    }
+    if (auto s = commit_file(ps.output, c.image); !s) return s.error();
+    if (sw.povray_version.empty()) sw.povray_version = run->log.version;
+    TraceOptions t;
+    t.scene = sw.opt.scene;
+    t.output = (dir / "tracer.png").string();
+    t.width = sw.opt.width;
+    t.height = sw.opt.height;
+    t.threads = sw.opt.threads;
+    t.atmosphere = false;
+    t.library_paths = sw.opt.library_paths;
+    t.progress = false;
+    auto traced = trace_scene(t);
+    if (!traced) {
+        sw.note("straight rays: not compared, the tracer failed: " + traced.message());
+        return Ok{};
+    }
+    auto pov = read_image(c.image);
+    if (!pov) return pov.error();
+    auto cmp = compare_images(*pov, quantize_srgb8(traced->render.image), sw.opt.threshold);
+    if (!cmp) return make_error(c.image + ": " + cmp.message());
+    sw.result.straight_rmse = cmp->rmse;
+    sw.say("straight rays: POV-Ray against the tracer, RMSE " + sig(cmp->rmse, 3));
+    return Ok{};
+}
+
+/// Draws error_vs_time.png and .svg with gnuplot from the script, through temporary names.
+Status plot(Sweep& sw) {
+    CompareResult& r = sw.result;
+    if (!find_program(sw.opt.gnuplot)) {
+        sw.note(sw.opt.gnuplot +
+                " not found on PATH: no plot drawn (run error_vs_time.gp "
+                "with gnuplot to draw it)");
+        return Ok{};
+    }
+    const std::string png_tmp = temporary_image_name(r.plot_png);
+    const std::string svg_tmp = temporary_image_name(r.plot_svg);
+    const std::string log = (sw.work / "gnuplot.log").string();
+    const std::string vars = "png_out='" + fs::path(png_tmp).filename().string() + "'; svg_out='" +
+                             fs::path(svg_tmp).filename().string() + "'";
+    auto run = run_process({sw.opt.gnuplot, "-e", vars, "error_vs_time.gp"}, sw.out.string(),
+                           temporary_name_for(log));
+    if (!run) return run.error();
+    if (auto s = commit_file(temporary_name_for(log), log); !s) return s.error();
+    std::error_code ec;
+    if (run->exit_code != 0 || !fs::exists(png_tmp, ec) || !fs::exists(svg_tmp, ec)) {
+        fs::remove(png_tmp, ec);
+        fs::remove(svg_tmp, ec);
+        sw.note("gnuplot failed (exit " + std::to_string(run->exit_code) + "; " + log +
+                "): no plot drawn");
+        return Ok{};
+    }
+    if (auto s = commit_file(png_tmp, r.plot_png); !s) return s;
+    if (auto s = commit_file(svg_tmp, r.plot_svg); !s) return s;
+    r.plotted = true;
+    return Ok{};
+}
+
+}  // namespace
+
+std::string model_name(CompareModel model) {
+    switch (model) {
+        case CompareModel::UniformBands:
+            return "uniform-bands";
+        case CompareModel::AdaptiveBands:
+            return "adaptive-bands";
+        case CompareModel::Polyline:
+            return "polyline";
+        case CompareModel::Scanline:
+            return "scanline";
+    }
+    return "";
+}
+
+MachineInfo read_machine_info() {
+    MachineInfo m;
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (::sched_getaffinity(0, sizeof set, &set) == 0) m.cores = CPU_COUNT(&set);
+    if (m.cores <= 0) m.cores = static_cast<int>(::sysconf(_SC_NPROCESSORS_ONLN));
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(cpuinfo, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            const auto colon = line.find(':');
+            if (colon != std::string::npos) {
+                m.cpu = line.substr(colon + 1);
+                m.cpu.erase(0, m.cpu.find_first_not_of(" \t"));
+            }
+            break;
+        }
+    }
+    std::ifstream loadavg("/proc/loadavg");
+    std::string a, b, c;
+    if (loadavg >> a >> b >> c) m.load = a + " " + b + " " + c;
+    return m;
+}
+
+Status validate_compare_options(const CompareOptions& o) {
+    if (o.scene.empty()) return make_error("no scene given");
+    if (o.width < 1 || o.height < 1 || o.width > kMaxImageSide || o.height > kMaxImageSide)
+        return make_error("image size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                          " must be 1 to 20000 pixels each way");
+    auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+    if (!positive(o.reference_tolerance_px))
+        return make_error("--reference-tolerance " + shortest(o.reference_tolerance_px) +
+                          ": must be a positive number of pixels");
+    for (int n : o.counts)
+        if (n < 1 || n > kMaxCount)
+            return make_error("--counts " + std::to_string(n) + ": must be 1 to " +
+                              std::to_string(kMaxCount) + " layers");
+    const std::pair<const char*, const std::vector<double>*> lists[] = {
+        {"--tolerances", &o.tolerances}, {"--trace-tolerances", &o.trace_tolerances}};
+    for (const auto& [flag, values] : lists)
+        for (double t : *values)
+            if (!positive(t))
+                return make_error(std::string(flag) + " " + shortest(t) +
+                                  ": must be a positive number of pixels");
+    for (const auto& [flag, values] : lists)
+        for (double t : *values)
+            if (!(o.reference_tolerance_px < t))
+                return make_error("--reference-tolerance " + shortest(o.reference_tolerance_px) +
+                                  " px is not finer than " + shortest(t) + " px in " + flag +
+                                  ": the reference must be finer than every setting it judges");
+    if (!(o.threshold > 0.0 && o.threshold < 1.0))
+        return make_error("--threshold " + shortest(o.threshold) +
+                          ": must be between 0 and 1 (a difference of 8-bit codes / 255)");
+    if (o.threads < 0)
+        return make_error("--threads " + std::to_string(o.threads) +
+                          ": must be 0 (all cores) or more");
+    return Ok{};
+}
+
+std::string compare_command_line(const CompareOptions& o) {
+    std::ostringstream s;
+    s << "mirage compare " << shell_quoted(o.scene) << " -W " << o.width << " -H " << o.height;
+    if (!o.out_dir.empty()) s << " -o " << shell_quoted(o.out_dir);
+    s << " --reference-tolerance " << shortest(o.reference_tolerance_px);
+    if (!o.counts.empty()) s << " --counts " << list_text(o.counts);
+    if (!o.tolerances.empty()) s << " --tolerances " << list_text(o.tolerances);
+    if (!o.trace_tolerances.empty()) s << " --trace-tolerances " << list_text(o.trace_tolerances);
+    if (o.scanline) s << " --scanline-paths";
+    s << " --threshold " << shortest(o.threshold);
+    if (o.threads > 0) s << " --threads " << o.threads;
+    for (const auto& p : o.library_paths) s << " -L " << shell_quoted(p);
+    return s.str();
+}
+
+Result<CompareResult> run_comparison(const CompareOptions& options) {
+    if (auto s = validate_compare_options(options); !s) return s.error();
+    Sweep sw;
+    sw.opt = options;
+    CompareOptions& opt = sw.opt;
+    // From coarse to fine, each setting once.
+    std::sort(opt.counts.begin(), opt.counts.end());
+    opt.counts.erase(std::unique(opt.counts.begin(), opt.counts.end()), opt.counts.end());
+    for (auto* list : {&opt.tolerances, &opt.trace_tolerances}) {
+        std::sort(list->begin(), list->end(), std::greater<>());
+        list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
+    if (!find_program(opt.povray))
+        return make_error(opt.povray +
+                          ": not found on PATH; the band models are rendered by POV-Ray 3.7 "
+                          "(Debian: apt-get install povray)");
+    std::error_code ec;
+    if (!fs::is_regular_file(opt.scene, ec))
+        return make_error(opt.scene + ": cannot open: no such file");
+
+    CompareResult& r = sw.result;
+    r.scene = opt.scene;
+    r.name = fs::path(opt.scene).stem().string();
+    r.width = opt.width;
+    r.height = opt.height;
+    r.threshold = opt.threshold;
+    r.reference_tolerance_px = opt.reference_tolerance_px;
+    r.command = compare_command_line(options);
+    r.machine = read_machine_info();
+    sw.scene_abs = fs::absolute(opt.scene).string();
+    sw.out = fs::absolute(opt.out_dir.empty() ? fs::path("build/compare") / r.name
+                                              : fs::path(opt.out_dir));
+    sw.renders = sw.out / "renders";
+    sw.work = sw.out / "work";
+    for (const auto& d : {sw.out, sw.renders, sw.work}) {
+        fs::create_directories(d, ec);
+        if (ec) return make_error(d.string() + ": cannot create: " + ec.message());
+    }
+    r.out_dir = sw.out.string();
+    r.csv_path = (sw.out / "results.csv").string();
+    r.plot_script = (sw.out / "error_vs_time.gp").string();
+    r.plot_png = (sw.out / "error_vs_time.png").string();
+    r.plot_svg = (sw.out / "error_vs_time.svg").string();
+    r.sheet_path = (sw.out / "contact_sheet.png").string();
+    r.summary_path = (sw.out / "summary.md").string();
+    r.reference_path = (sw.out / "reference.png").string();
+    for (const std::string& p : {r.csv_path, r.plot_script, r.plot_png, r.plot_svg, r.sheet_path,
+                                 r.summary_path, r.reference_path})
+        if (auto s = sw.guard(p); !s) return s.error();
+
+    // The reference: per-ray paths at the finest tolerance.  A scene that does not parse
+    // fails here, with its place.
+    TraceOptions t;
+    t.scene = opt.scene;
+    t.width = opt.width;
+    t.height = opt.height;
+    t.tolerance_px = opt.reference_tolerance_px;
+    t.threads = opt.threads;
+    t.library_paths = opt.library_paths;
+    t.progress = false;
+    auto ref = trace_scene(t);
+    if (!ref) return ref.error();
+    if (ref->mode == PathMode::Straight)
+        return make_error(opt.scene + ": the scene declares no atmosphere (" + ref->atmosphere +
+                          "): there is nothing to compare; declare one as mirage.inc describes");
+    if (auto s = write_png(ref->render.image, r.reference_path); !s) return s.error();
+    r.atmosphere = ref->atmosphere;
+    r.reference_seconds = ref->render.stats.seconds;
+    r.reference_threads = ref->render.stats.threads;
+    sw.reference = quantize_srgb8(ref->render.image);
+    sw.tiles.push_back({sw.reference, "reference: per-ray paths " +
+                                          shortest(opt.reference_tolerance_px) + " px\ntracer " +
+                                          sig(r.reference_seconds, 3) + " s"});
+    sw.say("reference " + shortest(opt.reference_tolerance_px) + " px: per-ray paths, tracer " +
+           sig(r.reference_seconds, 3) + " s on " + std::to_string(r.reference_threads) +
+           " threads");
+
+    if (auto s = run_straight(sw); !s) return s.error();
+
+    // Uniform layers, doubling (or as listed) until a design exceeds the trace-level budget.
+    std::vector<int> counts = opt.counts;
+    if (counts.empty())
+        for (int n = kFirstCount; n <= kMaxCount; n *= 2) counts.push_back(n);
+    bool stopped = false;
+    for (int n : counts) {
+        CompileReport over;
+        auto outcome = run_band(sw, CompareModel::UniformBands, n, &over);
+        if (!outcome) return outcome.error();
+        if (*outcome == BandOutcome::OverBudget) {
+            sw.note("uniform-bands: stopped at " + std::to_string(n) +
+                    " layers: a camera ray with its reflections needs trace level " +
+                    std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
+                    std::to_string(kPovrayMaxTraceLevel) + " (not rendered)");
+            stopped = true;
+            break;
+        }
+    }
+    if (!stopped && opt.counts.empty())
+        sw.note("uniform-bands: stopped at " + std::to_string(kMaxCount) +
+                " layers, the sweep's largest count, still within the trace-level budget");
+
+    for (double tol : opt.tolerances) {
+        CompileReport over;
+        auto outcome = run_band(sw, CompareModel::AdaptiveBands, tol, &over);
+        if (!outcome) return outcome.error();
+        if (*outcome == BandOutcome::OverBudget)
+            sw.note("adaptive " + shortest(tol) +
+                    " px: skipped: a camera ray with its "
+                    "reflections needs trace level " +
+                    std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
+                    std::to_string(kPovrayMaxTraceLevel));
+    }
+
+    for (double tol : opt.trace_tolerances)
+        if (auto s = run_tracer(sw, CompareModel::Polyline, tol); !s) return s.error();
+    if (opt.scanline)
+        for (double tol : opt.trace_tolerances)
+            if (auto s = run_tracer(sw, CompareModel::Scanline, tol); !s) return s.error();
+
+    r.povray_version = sw.povray_version;
+    if (auto s = write_file_atomic(r.csv_path, results_csv(r)); !s) return s.error();
+    if (auto s = write_file_atomic(r.plot_script, gnuplot_script(r)); !s) return s.error();
+    if (auto s = plot(sw); !s) return s.error();
+    auto sheet = make_contact_sheet(sw.tiles);
+    if (!sheet) return sheet.error();
+    r.caption_font = sheet->font;
+    if (r.caption_font.empty())
+        sw.note("contact sheet without captions: OpenImageIO found none of the fonts " +
+                std::string("DejaVuSans, LiberationSans-Regular, NotoSans-Regular, FreeSans ") +
+                "(Debian: apt-get install fonts-dejavu-core)");
+    if (auto s = write_png_codes(sheet->image, r.sheet_path); !s) return s.error();
+    if (auto s = write_file_atomic(r.summary_path, summary_markdown(r)); !s) return s.error();
+    return r;
+}
+
+}  // namespace mirage

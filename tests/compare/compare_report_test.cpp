@@ -1,0 +1,117 @@
+#include "compare/compare_report.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mirage {
+namespace {
+
+CompareRow row(CompareModel model, double setting, double seconds, double rmse) {
+    CompareRow r;
+    r.model = model;
+    r.setting = setting;
+    r.seconds = seconds;
+    r.render_seconds = 0.5 * seconds;
+    r.rmse = rmse;
+    r.psnr_db = -20.0 * std::log10(rmse);
+    r.threads = 2;
+    if (model == CompareModel::UniformBands || model == CompareModel::AdaptiveBands) {
+        r.layers = model == CompareModel::UniformBands ? static_cast<int>(setting) : 40;
+        r.compile_seconds = 0.1;
+        r.max_error_px = 12.5;
+        r.p95_error_px = 2.0;
+        r.max_trace_level = 100;
+    } else {
+        r.max_error_px = setting;
+        r.segments_per_ray = 3.5;
+    }
+    r.image = "renders/" + model_name(model) + "-" + setting_text(r) + ".png";
+    return r;
+}
+
+CompareResult result() {
+    CompareResult r;
+    r.scene = "scenes/desert.pov";
+    r.name = "desert";
+    r.width = 320;
+    r.height = 240;
+    r.threshold = 0.05;
+    r.reference_tolerance_px = 0.02;
+    r.rows = {row(CompareModel::UniformBands, 8, 1.0, 0.08),
+              row(CompareModel::UniformBands, 16, 2.0, 0.04),
+              row(CompareModel::UniformBands, 64, 8.0, 0.02),
+              row(CompareModel::AdaptiveBands, 4, 0.5, 0.04),
+              row(CompareModel::AdaptiveBands, 1, 1.0, 0.01),
+              row(CompareModel::Polyline, 4, 0.1, 0.03),
+              row(CompareModel::Polyline, 0.5, 0.2, 0.005),
+              row(CompareModel::Polyline, 0.1, 0.4, 0.006)};
+    r.command = "mirage compare scenes/desert.pov";
+    return r;
+}
+
+TEST(ResultsCsv, OneRowPerSettingWithEmptyFieldsWhereAColumnDoesNotApply) {
+    const std::string csv = results_csv(result());
+    EXPECT_EQ(csv.substr(0, csv.find('\n')),
+              "model,setting,layers,seconds,render_seconds,cpu_seconds,threads,compile_seconds,"
+              "rmse,psnr,share_over,max_error_px,p95_error_px,max_trace_level,segments_per_ray,"
+              "image");
+    EXPECT_NE(csv.find("\nuniform-bands,16,16,2,1,0,2,0.1,0.04,27.959,0,12.5,2,100,,"
+                       "renders/uniform-bands-16.png\n"),
+              std::string::npos)
+        << csv;
+    EXPECT_NE(csv.find("\npolyline,0.5,,0.2,0.1,0,2,,0.005,46.021,0,0.5,,,3.5,"
+                       "renders/polyline-0.5.png\n"),
+              std::string::npos)
+        << csv;
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
+}
+
+TEST(Headlines, AdaptiveAgainstUniformAtTheLowestCommonError) {
+    const Headlines h = compute_headlines(result().rows);
+    ASSERT_TRUE(h.adaptive_vs_uniform);
+    // Uniform reaches 0.02 at best (8 s); adaptive gets there between 4 px and 1 px.
+    EXPECT_DOUBLE_EQ(h.adaptive_vs_uniform->error, 0.02);
+    EXPECT_DOUBLE_EQ(h.adaptive_vs_uniform->a.seconds, 8.0);
+    EXPECT_NEAR(h.adaptive_vs_uniform->b.seconds, 0.5 * std::sqrt(2.0), 1e-12);
+    ASSERT_TRUE(h.tracer_vs_adaptive);
+    EXPECT_DOUBLE_EQ(h.tracer_vs_adaptive->error, 0.01);
+    // On render time every figure halves here, and the ratios stay.
+    const Headlines hr = compute_headlines(result().rows, TimeBasis::Render);
+    ASSERT_TRUE(hr.adaptive_vs_uniform);
+    EXPECT_NEAR(hr.adaptive_vs_uniform->speedup(), h.adaptive_vs_uniform->speedup(), 1e-12);
+}
+
+TEST(ErrorRises, NamesTheSettingWhereAFinerOneGotWorse) {
+    const auto rises = error_rises(result().rows);
+    ASSERT_EQ(rises.size(), 1u);
+    EXPECT_EQ(rises[0], "polyline: RMSE 0.006 at 0.1 px against 0.005 at 0.5 px");
+}
+
+TEST(GnuplotScript, OneCurvePerModelLabelledBySetting) {
+    const std::string gp = gnuplot_script(result());
+    for (const char* s : {"$uniform_bands << EOD", "$adaptive_bands << EOD", "$polyline << EOD",
+                          "title \"uniform-bands", "title \"adaptive-bands", "title \"polyline",
+                          "with labels", "set logscale xy", "set output png_out",
+                          "set output svg_out", "pngcairo", "\n1 0.08 \"8\"\n"})
+        EXPECT_NE(gp.find(s), std::string::npos) << s;
+    EXPECT_EQ(gp.find("scanline"), std::string::npos);
+}
+
+TEST(Summary, LeadsWithTheTableAndTheFiguresAtEqualError) {
+    const std::string md = summary_markdown(result());
+    EXPECT_NE(md.find("| uniform-bands | 64 layers | 64 | 8 | 0.02 | 34 | 0 % | 12.5 | 2 |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("**Adaptive against uniform layers:** at RMSE 0.02, uniform layers take "
+                      "8 s (at 64 layers) and adaptive layers 0.707 s (interpolated between "
+                      "4 px and 1 px): adaptive layers are 11.3 times faster."),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("polyline: RMSE 0.006 at 0.1 px against 0.005 at 0.5 px"), std::string::npos);
+    EXPECT_NE(md.find("```\nmirage compare scenes/desert.pov\n```"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mirage
