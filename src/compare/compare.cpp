@@ -200,6 +200,7 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
         cmp->pixel_count > 0 ? static_cast<double>(cmp->pixels_over) / cmp->pixel_count : 0.0;
     row.max_error_px = rep->max_error_px;
     row.p95_error_px = rep->p95_error_px;
+    row.p95_shift_rows = rep->p95_shift_rows;
     row.max_trace_level = rep->max_trace_level;
     row.image = fs::relative(image, sw.out).string();
     sw.result.rows.push_back(row);

@@ -65,6 +65,8 @@ struct CompareRow {
                                     // tracer: its tolerance, which bounds the paths' error by
                                     // construction (not measured)
     double p95_error_px = -1.0;     // bands: 95th percentile of the same; -1 for the tracer
+    double p95_shift_rows = -1.0;   // bands: 95th percentile of the rows the picture moves
+                                    // (compile's pixel check); -1 for the tracer
     int max_trace_level = -1;       // bands: as compile measures it; -1 for the tracer
     double segments_per_ray = 0.0;  // tracer: straight segments per propagated ray
     std::string image;              // the render, relative to the output directory

@@ -41,7 +41,8 @@ std::vector<std::string> error_rises(const std::vector<CompareRow>& rows);
 
 /// results.csv: one row per setting, columns model, setting, layers, seconds, render_seconds,
 /// cpu_seconds, threads, compile_seconds, rmse, psnr, share_over, max_error_px, p95_error_px,
-/// max_trace_level, segments_per_ray, image (empty where a column does not apply).
+/// p95_shift_rows, max_trace_level, segments_per_ray, image (empty where a column does not
+/// apply).
 std::string results_csv(const CompareResult& result);
 
 /// error_vs_time.gp: log-log RMSE against seconds, one curve per model with its points

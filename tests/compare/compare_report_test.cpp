@@ -22,6 +22,7 @@ CompareRow row(CompareModel model, double setting, double seconds, double rmse) 
         r.compile_seconds = 0.1;
         r.max_error_px = 12.5;
         r.p95_error_px = 2.0;
+        r.p95_shift_rows = 3.0;
         r.max_trace_level = 100;
     } else {
         r.max_error_px = setting;
@@ -55,13 +56,13 @@ TEST(ResultsCsv, OneRowPerSettingWithEmptyFieldsWhereAColumnDoesNotApply) {
     const std::string csv = results_csv(result());
     EXPECT_EQ(csv.substr(0, csv.find('\n')),
               "model,setting,layers,seconds,render_seconds,cpu_seconds,threads,compile_seconds,"
-              "rmse,psnr,share_over,max_error_px,p95_error_px,max_trace_level,segments_per_ray,"
-              "image");
-    EXPECT_NE(csv.find("\nuniform-bands,16,16,2,1,0,2,0.1,0.04,27.959,0,12.5,2,100,,"
+              "rmse,psnr,share_over,max_error_px,p95_error_px,p95_shift_rows,max_trace_level,"
+              "segments_per_ray,image");
+    EXPECT_NE(csv.find("\nuniform-bands,16,16,2,1,0,2,0.1,0.04,27.959,0,12.5,2,3,100,,"
                        "renders/uniform-bands-16.png\n"),
               std::string::npos)
         << csv;
-    EXPECT_NE(csv.find("\npolyline,0.5,,0.2,0.1,0,2,,0.005,46.021,0,0.5,,,3.5,"
+    EXPECT_NE(csv.find("\npolyline,0.5,,0.2,0.1,0,2,,0.005,46.021,0,0.5,,,,3.5,"
                        "renders/polyline-0.5.png\n"),
               std::string::npos)
         << csv;
