@@ -261,7 +261,9 @@ std::string summary_markdown(const CompareResult& r) {
 
     md << "\n## At equal error\n\n"
        << "Each model's settings form a curve of RMSE against seconds; settings that took longer "
-          "for no less error are left out of it. Seconds at a common RMSE are interpolated in "
+          "for less than "
+       << sig(100.0 * kMinErrorGain, 3)
+       << " % less error are left out of it. Seconds at a common RMSE are interpolated in "
           "log-log between the two neighbouring settings of each curve; the common RMSE is the "
           "lowest both curves reach.\n\n";
     const Headlines h = compute_headlines(r.rows);

@@ -17,7 +17,8 @@ std::vector<TradeoffPoint> pareto_front(std::vector<TradeoffPoint> points) {
         });
     std::vector<TradeoffPoint> front;
     for (const auto& p : points)
-        if (front.empty() || p.error < front.back().error) front.push_back(p);
+        if (front.empty() || p.error < front.back().error * (1.0 - kMinErrorGain))
+            front.push_back(p);
     return front;
 }
 

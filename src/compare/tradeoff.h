@@ -15,10 +15,15 @@ struct TradeoffPoint {
     std::string label;   // the setting, for messages ("64 layers", "0.5 px")
 };
 
+/// A slower setting must lower the error by more than this share to stay on a front: on the
+/// flat tail of a curve, differences of a few pixels out of tens of thousands would otherwise
+/// decide which time is quoted for the lowest error.
+constexpr double kMinErrorGain = 0.01;
+
 /// The points that no other point beats in both time and error, sorted by time (so their
-/// error falls strictly).  A setting that took longer for no less error is dropped: it is not
-/// how anyone would reach that error.  Points with a non-finite or negative value, or no time,
-/// are dropped too.
+/// error falls strictly).  A setting that took longer for no less error, or for less than
+/// kMinErrorGain less, is dropped: it is not how anyone would reach that error.  Points with a
+/// non-finite or negative value, or no time, are dropped too.
 std::vector<TradeoffPoint> pareto_front(std::vector<TradeoffPoint> points);
 
 /// The time a curve needs to reach `error`.

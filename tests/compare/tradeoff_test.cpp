@@ -12,7 +12,8 @@ TEST(ParetoFront, KeepsOnlyPointsNothingBeatsSortedByTime) {
                                      {1.0, 0.10, "fast bad"},
                                      {2.0, 0.20, "dominated"},  // slower and worse than 1 s
                                      {2.5, 0.05, "middle"},
-                                     {3.0, 0.05, "no better"},  // slower for the same error
+                                     {3.0, 0.05, "no better"},        // slower for the same error
+                                     {3.5, 0.0498, "hardly better"},  // 0.4 % less error
                                      {0.0, 0.01, "no time"},
                                      {1.5, NAN, "no error"}});
     ASSERT_EQ(front.size(), 3u);
