@@ -120,6 +120,44 @@ std::string row_id(CompareModel model, const std::string& setting) {
 
 enum class BandOutcome { Rendered, Skipped, OverBudget };
 
+/// A compiled scene rendered by POV-Ray: its log kept as dir/povray.log, its image at
+/// `image` (both through temporary names).
+struct CompiledRender : PovrayRender {
+    bool ok = false;       // POV-Ray ran and wrote the image
+    std::string failure;   // why not, with the log's place
+    std::string log_path;  // dir/povray.log
+};
+
+/// Renders `ini` with POV-Ray.  An error when POV-Ray cannot be started or a file cannot be
+/// put in place; a render that fails is `ok == false`, with its reason.
+Result<CompiledRender> render_compiled(Sweep& sw, const std::string& ini, const fs::path& dir,
+                                       const std::string& image) {
+    PovrayRenderSettings ps;
+    ps.povray = sw.opt.povray;
+    ps.ini = ini;
+    ps.work_dir = sw.out.string();
+    CompiledRender r;
+    r.log_path = (dir / "povray.log").string();
+    ps.log = temporary_name_for(r.log_path);
+    ps.output = temporary_image_name(image);
+    ps.threads = sw.opt.threads;
+    auto run = render_povray(ps);
+    if (!run) return run.error();
+    static_cast<PovrayRender&>(r) = *run;
+    if (auto s = commit_file(ps.log, r.log_path); !s) return s.error();
+    std::error_code ec;
+    if (run->exit_code != 0 || !fs::exists(ps.output, ec)) {
+        fs::remove(ps.output, ec);
+        r.failure =
+            "POV-Ray failed (exit " + std::to_string(run->exit_code) + "; " + r.log_path + ")";
+        return r;
+    }
+    if (auto s = commit_file(ps.output, image); !s) return s.error();
+    if (sw.povray_version.empty()) sw.povray_version = run->log.version;
+    r.ok = true;
+    return r;
+}
+
 /// Compiles one band design, renders it with POV-Ray and measures it.  A fatal error (POV-Ray
 /// cannot be started, the scene would be overwritten) is an error; a design that cannot be
 /// compiled or rendered is a note.
@@ -163,26 +201,12 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     for (const auto& w : rep->warnings)
         if (sw.compile_warnings.insert(w).second) sw.note(label + ": mirage compile: " + w);
 
-    PovrayRenderSettings ps;
-    ps.povray = sw.opt.povray;
-    ps.ini = rep->ini_path;
-    ps.work_dir = sw.out.string();
-    const std::string log = (dir / "povray.log").string();
-    ps.log = temporary_name_for(log);
-    ps.output = temporary_image_name(image);
-    ps.threads = sw.opt.threads;
-    auto run = render_povray(ps);
+    auto run = render_compiled(sw, rep->ini_path, dir, image.string());
     if (!run) return run.error();
-    if (auto s = commit_file(ps.log, log); !s) return s.error();
-    std::error_code ec;
-    if (run->exit_code != 0 || !fs::exists(ps.output, ec)) {
-        fs::remove(ps.output, ec);
-        sw.note(label + ": skipped, POV-Ray failed (exit " + std::to_string(run->exit_code) + "; " +
-                log + "):\n" + log_tail(log, 5));
+    if (!run->ok) {
+        sw.note(label + ": skipped, " + run->failure + ":\n" + log_tail(run->log_path, 5));
         return BandOutcome::Skipped;
     }
-    if (auto s = commit_file(ps.output, image.string()); !s) return s.error();
-    if (sw.povray_version.empty()) sw.povray_version = run->log.version;
     auto codes = read_image(image.string());
     if (!codes) return codes.error();
     auto cmp = sw.measure(*codes);
@@ -285,26 +309,12 @@ Status run_straight(Sweep& sw) {
         sw.note("straight rays: not compared, mirage compile failed: " + rep.message());
         return Ok{};
     }
-    PovrayRenderSettings ps;
-    ps.povray = sw.opt.povray;
-    ps.ini = rep->ini_path;
-    ps.work_dir = sw.out.string();
-    const std::string log = (dir / "povray.log").string();
-    ps.log = temporary_name_for(log);
-    ps.output = temporary_image_name(c.image);
-    ps.threads = sw.opt.threads;
-    auto run = render_povray(ps);
+    auto run = render_compiled(sw, rep->ini_path, dir, c.image);
     if (!run) return run.error();
-    if (auto s = commit_file(ps.log, log); !s) return s.error();
-    std::error_code ec;
-    if (run->exit_code != 0 || !fs::exists(ps.output, ec)) {
-        fs::remove(ps.output, ec);
-        sw.note("straight rays: not compared, POV-Ray failed (exit " +
-                std::to_string(run->exit_code) + "; " + log + ")");
+    if (!run->ok) {
+        sw.note("straight rays: not compared, " + run->failure);
         return Ok{};
     }
-    if (auto s = commit_file(ps.output, c.image); !s) return s.error();
-    if (sw.povray_version.empty()) sw.povray_version = run->log.version;
     TraceOptions t;
     t.scene = sw.opt.scene;
     t.output = (dir / "tracer.png").string();
