@@ -226,6 +226,8 @@ class Lexer {
     int column_ = 1;
 };
 
+}  // namespace
+
 void append_utf8(std::string& out, unsigned code) {
     if (code < 0x80) {
         out += static_cast<char>(code);
@@ -233,13 +235,11 @@ void append_utf8(std::string& out, unsigned code) {
         out += static_cast<char>(0xC0 | (code >> 6));
         out += static_cast<char>(0x80 | (code & 0x3F));
     } else {
-        out += static_cast<char>(0xE0 | (code >> 12));
+        out += static_cast<char>(0xE0 | ((code >> 12) & 0x0F));
         out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
         out += static_cast<char>(0x80 | (code & 0x3F));
     }
 }
-
-}  // namespace
 
 std::string_view SourceFile::line_text(int line) const {
     if (line < 1 || static_cast<std::size_t>(line) > line_starts.size()) return {};

@@ -58,4 +58,8 @@ std::optional<LexError> lex_source(SourceFile& file);
 /// backslash in `error_offset` and std::nullopt.
 std::optional<std::string> unescape_string(std::string_view literal, std::size_t* error_offset);
 
+/// Appends a character of the Basic Multilingual Plane (`code` <= 0xFFFF: what \uXXXX and
+/// chr() can give) to `out` as UTF-8.
+void append_utf8(std::string& out, unsigned code);
+
 }  // namespace mirage
