@@ -136,9 +136,7 @@ Texture SceneParser::parse_texture_body(const Token& kw) {
                 continue;
             }
         }
-        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-            fail(t, "unknown keyword '" + t.text() + "'");
-        }
+        reject_unknown_word(t);
         break;
     }
     (void)kw;
@@ -223,9 +221,7 @@ void SceneParser::parse_pigment_body(Pigment& p, const Token& kw) {
                 continue;
             }
         }
-        if (is_identifier(m) && !m.symbol && !lookup(m.text())) {
-            fail(m, "unknown keyword '" + m.text() + "'");
-        }
+        reject_unknown_word(m);
         break;
     }
     (void)kw;
@@ -241,9 +237,7 @@ void SceneParser::parse_finish_block(Finish& f, const Token& kw) {
         const Token t = peek(0);
         if (t.is_punct("}")) break;
         if (!is_keyword(t)) {
-            if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-                fail(t, "unknown keyword '" + t.text() + "'");
-            }
+            reject_unknown_word(t);
             break;
         }
         const std::string& w = t.text();

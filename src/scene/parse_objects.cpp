@@ -321,9 +321,7 @@ ObjectNode SceneParser::parse_light_source(const Token& kw) {
                 continue;
             }
         }
-        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-            fail(t, "unknown keyword '" + t.text() + "'");
-        }
+        reject_unknown_word(t);
         break;
     }
     expect_close_brace(kw);
@@ -396,9 +394,7 @@ void SceneParser::parse_object_modifiers(ObjectNode& node, const Token& kw) {
                 continue;
             }
         }
-        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-            fail(t, "unknown keyword '" + t.text() + "'");
-        }
+        reject_unknown_word(t);
         break;
     }
     expect_close_brace(kw);
@@ -456,9 +452,7 @@ Transform SceneParser::parse_transform_block(const Token& kw) {
             t = compose_transforms(t, item);
             continue;
         }
-        if (is_identifier(p) && !p.symbol && !lookup(p.text())) {
-            fail(p, "unknown keyword '" + p.text() + "'");
-        }
+        reject_unknown_word(p);
         break;
     }
     expect_close_brace(kw);
@@ -557,9 +551,7 @@ CameraState SceneParser::parse_camera(const Token& kw) {
                 continue;
             }
         }
-        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-            fail(t, "unknown keyword '" + t.text() + "'");
-        }
+        reject_unknown_word(t);
         break;
     }
     expect_close_brace(kw);

@@ -91,9 +91,7 @@ void SceneParser::parse_top_level() {
             add_object_to_scene(*object);
             continue;
         }
-        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-            fail(t, "unknown keyword '" + t.text() + "'");
-        }
+        reject_unknown_word(t);
         fail(t, "expected an object, camera, light_source or directive, got " + describe(t));
     }
 }
@@ -162,9 +160,7 @@ void SceneParser::parse_global_settings(const Token& kw) {
             }
             if (known) continue;
         }
-        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-            fail(t, "unknown keyword '" + t.text() + "'");
-        }
+        reject_unknown_word(t);
         break;
     }
     expect_close_brace(kw);
@@ -215,9 +211,7 @@ SkySphere SceneParser::parse_sky_sphere_value(const Token& kw) {
             sky.emission = parse_rgb_colour();
             continue;
         }
-        if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
-            fail(t, "unknown keyword '" + t.text() + "'");
-        }
+        reject_unknown_word(t);
         break;
     }
     expect_close_brace(kw);

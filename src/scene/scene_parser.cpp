@@ -216,6 +216,11 @@ bool SceneParser::is_identifier(const Token& t) const {
     return t.kind() == TokenKind::Identifier && !is_reserved_word(t.text());
 }
 
+void SceneParser::reject_unknown_word(const Token& t) const {
+    if (is_identifier(t) && !t.symbol && !lookup(t.text()))
+        fail(t, "unknown keyword '" + t.text() + "'");
+}
+
 void SceneParser::resolve(Token& t) {
     if (is_identifier(t)) t.symbol = lookup(t.text());
 }

@@ -184,6 +184,9 @@ class SceneParser {
     void resolve(Token& t);
     bool is_keyword(const Token& t) const;
     bool is_identifier(const Token& t) const;
+    /// Ends the parse at `t` when it is a word that is neither a keyword nor declared: a
+    /// typo where a block's item or its closing brace belongs.
+    void reject_unknown_word(const Token& t) const;
 
     void push_frame(std::shared_ptr<const SourceFile> file, std::size_t begin, std::size_t end,
                     FrameContext::Kind kind, const std::string& macro_name, const Token& at);
