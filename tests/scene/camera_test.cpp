@@ -14,11 +14,7 @@
 namespace mirage {
 namespace {
 
-void expect_vec(const glm::dvec3& got, const glm::dvec3& want, double tol = 1e-12) {
-    EXPECT_NEAR(got.x, want.x, tol);
-    EXPECT_NEAR(got.y, want.y, tol);
-    EXPECT_NEAR(got.z, want.z, tol);
-}
+using testing::expect_vec;
 
 CameraState apply(const CameraModifiers& mods) {
     auto result = apply_camera_statement(CameraState{}, mods);

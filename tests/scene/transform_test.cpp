@@ -2,14 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "parse_helpers.h"
+
 namespace mirage {
 namespace {
 
-void expect_vec(const glm::dvec3& got, const glm::dvec3& want, double tol = 1e-12) {
-    EXPECT_NEAR(got.x, want.x, tol);
-    EXPECT_NEAR(got.y, want.y, tol);
-    EXPECT_NEAR(got.z, want.z, tol);
-}
+using testing::expect_vec;
 
 TEST(Transform, TranslateMovesPointsNotDirections) {
     Transform t = make_translation(glm::dvec3(1, -2, 3));
