@@ -48,10 +48,6 @@ struct PixelRay {
     double pixel_rad = 0.0;
 };
 
-double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
-    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
-
 double percentile(std::vector<double> v, double q) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());

@@ -6,6 +6,7 @@
 #include <limits>
 #include <thread>
 
+#include "scene/camera.h"
 #include "trace/curved_propagator.h"
 #include "util/check.h"
 
@@ -14,10 +15,6 @@ namespace mirage {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
-    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
 
 // Where a ray ends: the surface it meets, or the direction it leaves in.
 struct RayEnd {

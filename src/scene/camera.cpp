@@ -25,6 +25,10 @@ CameraRay camera_ray(const Camera& camera, double x, double y, int width, int he
     return CameraRay{camera.location, glm::normalize(d)};
 }
 
+double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
 Result<CameraState> apply_camera_statement(const CameraState& base, const CameraModifiers& mods) {
     CameraState cam = base;
     if (mods.location) cam.location = *mods.location;

@@ -23,6 +23,10 @@ struct CameraRay {
 /// applied, the lengths of right and up carry it.
 CameraRay camera_ray(const Camera& camera, double x, double y, int width, int height);
 
+/// The angle between two directions (any lengths), rad; accurate for tiny angles too, where
+/// acos of the dot product is not.
+double angle_between(const glm::dvec3& a, const glm::dvec3& b);
+
 /// The state POV-Ray keeps for a camera while parsing: its vectors plus look_at and angle.
 /// The defaults are POV-Ray's default camera.
 struct CameraState {

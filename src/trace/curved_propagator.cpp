@@ -179,7 +179,7 @@ double pixel_angle_rad(const Camera& camera, int width, int height) {
         camera_ray(camera, 0.5 * width, 0.5 * height - 0.5, width, height).direction;
     const glm::dvec3 b =
         camera_ray(camera, 0.5 * width, 0.5 * height + 0.5, width, height).direction;
-    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+    return angle_between(a, b);
 }
 
 bool camera_is_level(const Camera& camera) {
