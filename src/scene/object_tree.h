@@ -2,6 +2,7 @@
 // POV-Ray's rules for transforms and textures, flattened into Scene::primitives at the end.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -18,9 +19,10 @@ struct ObjectNode {
         Empty,  ///< a placeholder for an object skipped in lenient mode
     };
     Kind kind = Kind::Empty;
-    Shape shape;                     // Shape
-    Transform transform;             // Shape: shape space -> world space
-    std::optional<Texture> texture;  // the object's own texture, if it has one
+    Shape shape;                               // Shape
+    Transform transform;                       // Shape: shape space -> world space
+    std::optional<Texture> texture;            // the object's own texture, if it has one
+    std::shared_ptr<const Interior> interior;  // the object's own interior, if it has one
     bool no_shadow = false;
     bool inverse = false;
     std::vector<ObjectNode> children;  // Union

@@ -126,12 +126,13 @@ TEST(Render, RefusesBadSizesAndUnsupportedScenes) {
     auto r = render(small_scene(), bad);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.message(), "image size must be positive, got 0x61");
-    Scene glass = small_scene();
-    glass.primitives[1].texture.pigment = solid(Colour{glm::dvec3(1.0), 0.9, 0.0});
-    glass.primitives[1].loc = FileLoc{"glass.pov", 3, 1};
-    auto g = render(glass, settings(1, 32));
-    ASSERT_FALSE(g.ok());
-    EXPECT_EQ(g.message().rfind("glass.pov:3:1: pigment with filter or transmit", 0), 0u);
+    Scene unordered = small_scene();
+    Pigment g = gradient({0.0, 1.0, 0.0}, {{0.7, rgb(1, 0, 0)}, {0.2, rgb(0, 0, 1)}});
+    unordered.primitives[1].texture.pigment = g;
+    unordered.primitives[1].loc = FileLoc{"map.pov", 3, 1};
+    auto u = render(unordered, settings(1, 32));
+    ASSERT_FALSE(u.ok());
+    EXPECT_EQ(u.message(), "map.pov:3:1: pigment: map entries must be in ascending order");
 }
 
 TEST(Render, RefusesADegenerateCamera) {
