@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 #include "util/result.h"
@@ -18,6 +19,9 @@ std::uint8_t encode_srgb8(float linear);
 
 /// Inverse of the sRGB transfer function for an 8-bit code (exact to float precision).
 float decode_srgb8(std::uint8_t code);
+
+/// Inverse of the sRGB transfer function for a value in [0, 1].
+float decode_srgb_value(float encoded);
 
 /// The image POV-Ray's PNG would hold, as code values / 255: what `read_image` returns for
 /// that PNG.  For comparing a linear render with a PNG without writing a file.
@@ -37,6 +41,19 @@ Status write_exr(const Image& linear, const std::string& path);
 
 /// Writes by extension: .png as `write_png`, .exr as `write_exr`; anything else is refused.
 Status write_image(const Image& linear, const std::string& path);
+
+/// An image as stored, with its alpha: 4 floats per pixel (code / 255 for 8-bit files, no
+/// linearisation), top row first.
+struct RgbaImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> pixels;
+    bool has_alpha = false;
+    double file_gamma = 0.0;  // the file's own decoding gamma; 0: none given (sRGB)
+};
+
+/// Reads an image for an image map: its colour (grey spread to rgb) and alpha (1 without).
+Result<RgbaImage> read_image_rgba(const std::string& path);
 
 /// Reads the first three channels of an image as stored: an 8-bit PNG gives code / 255
 /// (no linearisation), an EXR its linear floats.  A grey image is spread to RGB.

@@ -313,6 +313,7 @@ ObjectNode SceneParser::parse_light_source(const Token& kw) {
             allow_float(1.0);
             continue;
         }
+        if (parse_light_item(node.light)) continue;  // spotlight, area_light, fade...
         if (is_keyword(t)) {
             if (const ModifierArity* m = find_arity(kUnsupportedLightModifiers, t.text())) {
                 Token item = next();
@@ -337,6 +338,7 @@ void SceneParser::parse_object_modifiers(ObjectNode& node, const Token& kw) {
             transform_object(node, tr);
             continue;
         }
+        if (parse_material_modifier(node)) continue;  // normal, interior, material, hollow
         if (is_keyword(t)) {
             const std::string& w = t.text();
             if (w == "texture") {

@@ -22,10 +22,8 @@ struct ItemArity {
 };
 
 constexpr ItemArity kUnsupportedGlobalSettings[] = {
-    {"adc_bailout", Arity::Float},     {"irid_wavelength", Arity::Colour},
-    {"number_of_waves", Arity::Float}, {"noise_generator", Arity::Float},
-    {"photons", Arity::Block},         {"radiosity", Arity::Block},
-    {"subsurface", Arity::Block},      {"hf_gray_16", Arity::OptionalFloat},
+    {"photons", Arity::Block},     {"radiosity", Arity::Block},
+    {"subsurface", Arity::Block},  {"hf_gray_16", Arity::OptionalFloat},
     {"mm_per_unit", Arity::Float},
 };
 
@@ -36,6 +34,12 @@ Scene SceneParser::parse(std::shared_ptr<SourceFile> main_file) {
     push_frame(main_file, 0, main_file->tokens.size() - 1, FrameContext::Kind::Main, "", Token{});
     parse_top_level();
     export_symbols();
+    // POV-Ray takes the noise generator from the last #version unless the scene sets it.
+    scene_.global.language_version = language_version_;
+    scene_.global.assumed_gamma_given = gamma_set_;
+    if (!explicit_noise_generator_) {
+        scene_.global.noise_generator = language_version_ >= 3.5 - 1e-9 ? 2 : 1;
+    }
     return std::move(scene_);
 }
 
@@ -77,7 +81,11 @@ void SceneParser::parse_top_level() {
                 directive_default(next());
                 continue;
             }
-            if (w == "fog" || w == "media" || w == "rainbow") {
+            if (w == "fog") {
+                scene_.fogs.push_back(parse_fog_block(next()));
+                continue;
+            }
+            if (w == "media" || w == "rainbow") {
                 Token item = next();
                 skip_unsupported(item, Arity::Block, "atmospheric effect '" + w + "'");
                 continue;
@@ -142,6 +150,7 @@ void SceneParser::parse_global_settings(const Token& kw) {
             parse_float();
             continue;
         }
+        if (parse_material_global_setting()) continue;
         if (t.is_word("charset")) {
             Token item = next();
             unsupported(item, "global setting 'charset'");

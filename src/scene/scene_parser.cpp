@@ -923,7 +923,12 @@ void SceneParser::directive_default(const Token& keyword) {
             expect_close_brace(item);
         } else if (item.is_word("finish")) {
             parse_finish_block(default_texture_.finish, item);
-        } else if (item.is_word("normal") || item.is_word("radiosity") || item.is_word("camera")) {
+        } else if (item.is_word("normal")) {
+            if (!default_texture_.normal) default_texture_.normal = Normal{};
+            expect_open_brace(item);
+            parse_normal_body(*default_texture_.normal, item);
+            expect_close_brace(item);
+        } else if (item.is_word("radiosity") || item.is_word("camera")) {
             skip_unsupported(item, Arity::Block, "#default item '" + item.text() + "'");
         } else {
             fail(item,
@@ -1064,10 +1069,7 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
                 expect_open_brace(layer);
                 Texture top = parse_texture_body(layer);
                 expect_close_brace(layer);
-                if (!texture_is_opaque(top)) {
-                    unsupported(layer, "layered texture with filter or transmit");
-                }
-                tex = top;
+                layer_texture(tex, std::move(top), layer);
             }
             return finish_other(Value{tex});
         }
@@ -1091,6 +1093,7 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
             Token kw = next();
             return finish_other(parse_array_declaration(kw));
         }
+        if (auto m = parse_material_value()) return finish_other(std::move(*m));
         static const char* const kUnsupportedValues[] = {
             "normal",     "interior",    "material",  "media",       "density",
             "fog",        "rainbow",     "spline",    "function",    "pigment_map",

@@ -12,6 +12,7 @@
 
 #include "scene/camera.h"
 #include "scene/lexer.h"
+#include "scene/material_value.h"
 #include "scene/object_tree.h"
 #include "scene/scene.h"
 
@@ -69,7 +70,7 @@ struct UnsupportedValue {
 struct Value {
     std::variant<Numeric, std::string, ObjectNode, Texture, Pigment, Finish, Transform,
                  ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
-                 UnsupportedValue, SkySphere>
+                 UnsupportedValue, SkySphere, MaterialValue>
         data;
 };
 

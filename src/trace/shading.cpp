@@ -762,10 +762,13 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
                    ? glm::dvec3(0.0)
                    : colour;
     }
-    // TracePointLightShadowRay: through transparent objects, each filtering the light.
+    // TracePointLightShadowRay: through transparent objects, each filtering the light.  The
+    // shadow ray starts with the eye ray's interiors and enters and leaves the objects it
+    // passes (ComputeShadowMedia), which decides where their fade applies.
     glm::dvec3 filtered = colour;
     glm::dvec3 origin = point;
     double remaining = depth;
+    Interiors within = inside;
     while (true) {
         double t_min = kShadowTolerance;
         std::optional<SurfaceHit> hit;
@@ -781,10 +784,11 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
         glm::dvec3 raw = hit->normal;
         if (glm::dot(raw, direction) > 0.0) raw = -raw;
         glm::dvec3 f = shadow_texture(blocker.texture, warps, hit->point, raw, direction);
-        // Fade inside the blocker, when the (eye) ray's interiors hold it.
+        // Fade inside the blocker, over the stretch since the last surface.
         const Interior& interior = interior_of(hit->primitive);
-        if (std::find(inside.begin(), inside.end(), &interior) != inside.end() &&
-            interior.fade_power > 0.0 && std::fabs(interior.fade_distance) > kEpsilon) {
+        const auto it = std::find(within.begin(), within.end(), &interior);
+        if (it != within.end() && interior.fade_power > 0.0 &&
+            std::fabs(interior.fade_distance) > kEpsilon) {
             const glm::dvec3 fade = to_single(interior.fade_colour);
             const double fd = to_single(interior.fade_distance);
             const double fp = to_single(interior.fade_power);
@@ -796,6 +800,11 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
         }
         filtered *= f;
         if (is_black(filtered)) return glm::dvec3(0.0);
+        if (it != within.end()) {
+            within.erase(it);
+        } else {
+            within.push_back(&interior);
+        }
         remaining -= hit->t;
         origin = hit->point;
     }
