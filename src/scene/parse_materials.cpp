@@ -200,7 +200,68 @@ bool SceneParser::parse_pattern_type(Pattern& p, PatternUse use, PatternTargets&
         }
         p.kind = PatternKind::ImageMap;
         p.frequency = 0.0;
-        parse_image_map(p, use, kw);
+        parse_image_map(p, use, kw, t.amount);
+        return true;
+    }
+    if (w == "pigment_pattern") {
+        Token item = next();
+        p.kind = PatternKind::PigmentPattern;
+        auto inner = std::make_shared<Pigment>();
+        expect_open_brace(item);
+        parse_pigment_body(*inner, item);
+        expect_close_brace(item);
+        finish_pigment(*inner);
+        p.pattern_pigment = inner;
+        return true;
+    }
+    if (w == "slope") {
+        next();
+        p.kind = PatternKind::Slope;
+        p.altitude_vector = glm::dvec3(0.0);
+        p.slope_mod = p.altitude_mod = glm::dvec2(0.0);
+        p.slope_point_at = false;
+        // POV-Ray keeps a range as its low end and width; an empty range is ignored.
+        auto range = [&](glm::dvec2& mod) {
+            accept_comma();
+            mod.x = allow_float(0.0);
+            accept_comma();
+            mod.y = allow_float(0.0);
+            if (mod.y != 0.0 && mod.y == mod.x) {
+                mod = glm::dvec2(0.0);
+            } else {
+                mod.y -= mod.x;
+            }
+        };
+        if (peek_punct("{")) {
+            Token open = next();
+            p.slope_point_at = accept_word("point_at");
+            p.slope_vector = parse_vector();
+            range(p.slope_mod);
+            if (peek_word("altitude")) {
+                Token a = next();
+                if (p.slope_point_at) fail(a, "'altitude' cannot be used with 'point_at' in slope");
+                p.altitude_vector = parse_vector();
+                range(p.altitude_mod);
+            }
+            expect_punct("}", "to close 'slope'");
+            (void)open;
+        } else {
+            p.slope_vector = parse_vector();
+        }
+        if (p.slope_point_at) {
+            p.slope_len = 1.0;
+            p.altitude_len = 0.0;
+        } else {
+            p.slope_len = glm::length(p.slope_vector);
+            p.altitude_len = glm::length(p.altitude_vector);
+            if (p.slope_len != 0.0) p.slope_vector /= p.slope_len;
+            if (p.altitude_len != 0.0) p.altitude_vector /= p.altitude_len;
+            // POV-Ray sums the lengths in single precision.
+            const float total = static_cast<float>(p.slope_len + p.altitude_len);
+            if (total == 0.0f) fail(tok, "zero length for both slope and altitude");
+            p.slope_len /= total;
+            p.altitude_len = 1.0 - p.slope_len;
+        }
         return true;
     }
     if (is_unsupported_pattern(w)) {
@@ -619,7 +680,7 @@ void SceneParser::parse_warp(Pattern& p, const Token& kw) {
     p.warps.insert(p.warps.begin(), w);
 }
 
-void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw) {
+void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw, double* amount) {
     expect_open_brace(kw);
     // An old orientation vector is ignored, as POV-Ray ignores it.
     if (starts_vector(peek(0))) parse_vector();
@@ -709,14 +770,13 @@ void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw) {
         } else if (accept_word("interpolate")) {
             Token at = peek(0);
             p.interpolate = static_cast<int>(parse_float());
-            if (p.interpolate != 2 && p.interpolate != 4) {
-                if (p.interpolate == 3) {
-                    unsupported(at, "image interpolation 3 (bicubic)");
-                    p.interpolate = 2;
-                } else {
-                    fail(at, "interpolate must be 2 or 4, got " + std::to_string(p.interpolate));
-                }
+            // POV-Ray checks the values only for image maps.
+            if (use == PatternUse::Pigment && p.interpolate != 2 && p.interpolate != 3 &&
+                p.interpolate != 4) {
+                fail(at, "interpolate must be 2, 3 or 4, got " + std::to_string(p.interpolate));
             }
+        } else if (use == PatternUse::Normal && accept_word("bump_size")) {
+            *amount = parse_float();
         } else if (accept_word("map_type")) {
             Token at = peek(0);
             p.map_type = static_cast<int>(parse_float());
@@ -1558,6 +1618,12 @@ bool SceneParser::parse_light_item(PointLight& light) {
     } else if (w == "area_illumination") {
         next();
         light.area_illumination = allow_float(1.0) > 0.0;
+    } else if (w == "media_attenuation") {
+        next();
+        light.media_attenuation = allow_float(1.0) > 0.0;
+    } else if (w == "media_interaction") {
+        next();
+        light.media_interaction = allow_float(1.0) > 0.0;
     } else {
         return false;
     }

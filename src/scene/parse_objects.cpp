@@ -302,6 +302,7 @@ ObjectNode SceneParser::parse_light_source(const Token& kw) {
             transform_object(node, tr);
             continue;
         }
+        if (parse_light_item(node.light)) continue;  // spotlight, area_light, fade, media...
         if (t.is_word("shadowless")) {
             next();
             node.light.shadowless = true;
@@ -313,7 +314,6 @@ ObjectNode SceneParser::parse_light_source(const Token& kw) {
             allow_float(1.0);
             continue;
         }
-        if (parse_light_item(node.light)) continue;  // spotlight, area_light, fade...
         if (is_keyword(t)) {
             if (const ModifierArity* m = find_arity(kUnsupportedLightModifiers, t.text())) {
                 Token item = next();

@@ -63,10 +63,12 @@ enum class PatternKind : std::uint8_t {
     Mandel,
     Marble,
     Onion,
+    PigmentPattern,
     Planar,
     Quilted,
     Radial,
     Ripples,
+    Slope,
     Spherical,
     Spiral1,
     Spiral2,
@@ -139,6 +141,8 @@ struct ImageData {
     std::string file;
 };
 
+struct Pigment;
+
 /// The fields every POV-Ray pattern carries (TPATTERN): the type, the wave applied to the
 /// value, the pattern's own parameters and its warp chain.  Pigments, normals and patterned
 /// textures are patterns.
@@ -170,6 +174,15 @@ struct Pattern {
     double facets_size = 0.1;                 // Facets
     double facets_coords = 0.0;               // Facets
     double facets_metric = 2.0;               // Facets
+    // Slope: the direction (unit) and altitude, their weights and ranges (POV-Ray keeps the
+    // range as low end and width).
+    glm::dvec3 slope_vector{0.0, 1.0, 0.0};
+    glm::dvec3 altitude_vector{0.0};
+    double slope_len = 1.0, altitude_len = 0.0;
+    glm::dvec2 slope_mod{0.0}, altitude_mod{0.0};
+    bool slope_point_at = false;
+    // PigmentPattern: the pigment whose greyscale is the value.
+    std::shared_ptr<const Pigment> pattern_pigment;
     // ImageMap: the image and how it is mapped (image_map, bump_map).
     std::shared_ptr<const ImageData> image;
     int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus
@@ -355,6 +368,8 @@ struct PointLight {
     bool circular = false;
     bool orient = false;
     bool area_illumination = false;
+    bool media_attenuation = false;  // fog (and media) dim the light on its way
+    bool media_interaction = true;
 };
 
 /// A perspective camera, held as POV-Ray holds it after parsing: the final location,

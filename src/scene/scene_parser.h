@@ -323,7 +323,7 @@ class SceneParser {
     bool parse_pattern_type(Pattern& pattern, PatternUse use, PatternTargets& targets);
     void parse_blend_list(Pattern& pattern, int count, PatternUse use, PatternTargets& targets);
     void parse_warp(Pattern& pattern, const Token& keyword);
-    void parse_image_map(Pattern& pattern, PatternUse use, const Token& keyword);
+    void parse_image_map(Pattern& pattern, PatternUse use, const Token& keyword, double* amount);
     std::vector<PigmentMapEntry> parse_pigment_map(const Token& keyword);
     std::vector<NormalMapEntry> parse_normal_map(const Token& keyword);
     std::vector<TextureMapEntry> parse_texture_map(const Token& keyword);

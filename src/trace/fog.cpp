@@ -54,11 +54,10 @@ double ground_fog(const Fog& fog, const glm::dvec3& origin, const glm::dvec3& di
 
 }  // namespace
 
-glm::dvec3 apply_fog(const std::vector<Fog>& fogs, const glm::dvec3& origin,
-                     const glm::dvec3& direction, double depth, const glm::dvec3& colour,
-                     int generator) {
-    glm::dvec3 sum_att(1.0);
-    glm::dvec3 sum_col(0.0);
+namespace {
+
+void accumulate(const std::vector<Fog>& fogs, const glm::dvec3& origin, const glm::dvec3& direction,
+                double depth, int generator, glm::dvec3& sum_att, glm::dvec3& sum_col) {
     // POV-Ray keeps its fogs in a list with the last declared first.
     for (auto it = fogs.rbegin(); it != fogs.rend(); ++it) {
         const Fog& fog = *it;
@@ -72,7 +71,25 @@ glm::dvec3 apply_fog(const std::vector<Fog>& fogs, const glm::dvec3& origin,
         sum_att *= att * ((1.0 - filter) + filter * rgb);
         sum_col += (1.0 - att) * rgb;
     }
+}
+
+}  // namespace
+
+glm::dvec3 apply_fog(const std::vector<Fog>& fogs, const glm::dvec3& origin,
+                     const glm::dvec3& direction, double depth, const glm::dvec3& colour,
+                     int generator) {
+    glm::dvec3 sum_att(1.0);
+    glm::dvec3 sum_col(0.0);
+    accumulate(fogs, origin, direction, depth, generator, sum_att, sum_col);
     return sum_col + sum_att * colour;
+}
+
+glm::dvec3 fog_attenuation(const std::vector<Fog>& fogs, const glm::dvec3& origin,
+                           const glm::dvec3& direction, double depth, int generator) {
+    glm::dvec3 sum_att(1.0);
+    glm::dvec3 sum_col(0.0);
+    accumulate(fogs, origin, direction, depth, generator, sum_att, sum_col);
+    return sum_att;
 }
 
 }  // namespace mirage

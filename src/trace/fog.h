@@ -17,4 +17,9 @@ glm::dvec3 apply_fog(const std::vector<Fog>& fogs, const glm::dvec3& origin,
                      const glm::dvec3& direction, double depth, const glm::dvec3& colour,
                      int generator);
 
+/// The fogs' attenuation of the light along a shadow ray (POV-Ray's ComputeFog for shadow
+/// test rays: no fog colour is added).
+glm::dvec3 fog_attenuation(const std::vector<Fog>& fogs, const glm::dvec3& origin,
+                           const glm::dvec3& direction, double depth, int generator);
+
 }  // namespace mirage

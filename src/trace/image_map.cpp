@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "trace/single_precision.h"
+
 namespace mirage {
 
 namespace {
@@ -126,7 +128,41 @@ PigmentColour pixel(const Pattern& pat, double u, double v, int& index) {
     return c;
 }
 
+/// POV-Ray's cubic: the four weights of a Catmull-Rom step at the fraction of x.
+void cubic_factors(double x, double f[4]) {
+    const double p = x - static_cast<int>(x);
+    const double q = 1 - p;
+    f[0] = -0.5 * p * q * q;
+    f[1] = 0.5 * q * (q * (3 * p + 1) + 1);
+    f[2] = 0.5 * p * (p * (3 * q + 1) + 1);
+    f[3] = -0.5 * q * p * p;
+}
+
 PigmentColour colour_at(const Pattern& pat, double u, double v, int& index) {
+    if (pat.interpolate == 3) {
+        // InterpolateBicubic: 4 x 4 pixels around the point.
+        u += 0.5;
+        v += 0.5;
+        const int iu = static_cast<int>(u), iv = static_cast<int>(v);
+        double fx[4], fy[4];
+        cubic_factors(u, fx);
+        cubic_factors(v, fy);
+        PigmentColour out;
+        double index_sum = 0.0;
+        for (int i = 0; i < 4; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                int idx;
+                const PigmentColour c = pixel(pat, iu + i - 2.0, iv + j - 2.0, idx);
+                const double f = fx[i] * fy[j];
+                out.rgb += c.rgb * f;
+                out.filter += c.filter * f;
+                out.transmit += c.transmit * f;
+                index_sum += idx * f;
+            }
+        }
+        index = static_cast<int>(index_sum);
+        return out;
+    }
     if (pat.interpolate != 2 && pat.interpolate != 4) return pixel(pat, u, v, index);
     u += 0.5;
     v += 0.5;
@@ -200,7 +236,7 @@ void bump_map_normal(const Normal& n, const glm::dvec3& p, glm::dvec3& normal) {
         u -= img.width;
     }
     const PigmentColour c3 = colour_at(n, u, v, i3);
-    const double amount = n.amount;
+    const double amount = to_single(n.amount);
     const bool by_colour = !n.use_index || i1 == -1 || i2 == -1 || i3 == -1;
     const glm::dvec3 p1(0, amount * (by_colour ? greyscale(c1.rgb) : i1), 0);
     const glm::dvec3 p2(-1, amount * (by_colour ? greyscale(c2.rgb) : i2), 1);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "trace/pigment_eval.h"
 #include "trace/single_precision.h"
 #include "trace/warps.h"
 
@@ -485,6 +486,38 @@ double wrinkles(const glm::dvec3& p, int generator) {
     return value / 2.0;
 }
 
+/// POV-Ray's slope_pattern: the surface's slope against a direction (and its altitude).
+double slope(const Pattern& pat, const glm::dvec3& p, const PatternContext& ctx) {
+    const glm::dvec3& n = ctx.normal;
+    double value1;
+    if (pat.slope_point_at) {
+        const glm::dvec3 v = glm::normalize(pat.slope_vector - ctx.point);
+        value1 = glm::dot(n, v);
+    } else {
+        value1 = glm::dot(n, pat.slope_vector);
+    }
+    value1 = std::clamp(value1, -1.0, 1.0);
+    value1 = std::asin(value1) / kPi * 2;
+    value1 = (value1 + 1.0) * 0.5;
+    if (pat.slope_mod.y != 0.0) value1 = (value1 - pat.slope_mod.x) / pat.slope_mod.y;
+    if (pat.altitude_len == 0.0) {
+        if (value1 == 1.0) return value1 - kEpsilon;
+        return value1 < 0.0 ? 1.0 + std::fmod(value1, 1.0) : std::fmod(value1, 1.0);
+    }
+    double value2 = glm::dot(p, pat.altitude_vector);
+    if (pat.altitude_mod.y != 0.0) value2 = (value2 - pat.altitude_mod.x) / pat.altitude_mod.y;
+    double value = pat.slope_len * value1 + pat.altitude_len * value2;
+    if (value - 1.0 < kEpsilon && value >= 1.0) return value - kEpsilon;
+    return value < 0.0 ? 1.0 + std::fmod(value, 1.0) : std::fmod(value, 1.0);
+}
+
+double pigment_pattern(const Pattern& pat, const glm::dvec3& p, const PatternContext& ctx) {
+    if (!pat.pattern_pigment) return 0.0;
+    PigmentColour c;
+    if (!compute_pigment(*pat.pattern_pigment, p, ctx, c)) return 0.0;
+    return greyscale(c.rgb);
+}
+
 }  // namespace
 
 double quilt_cubic(double t, double p1, double p2) {
@@ -498,7 +531,7 @@ double quilt_cubic(double t, double p1, double p2) {
 
 const PatternContext& default_pattern_context() {
     static const WaveSources waves = make_wave_sources(10);
-    static const PatternContext ctx{2, &waves, glm::dvec3(0.0)};
+    static const PatternContext ctx{2, &waves, glm::dvec3(0.0), glm::dvec3(0.0)};
     return ctx;
 }
 
@@ -567,6 +600,10 @@ double raw_pattern_value(const Pattern& pat, const glm::dvec3& p, const PatternC
             return onion(p);
         case PatternKind::Planar:
             return clip_density(std::fabs(p.y));
+        case PatternKind::Slope:
+            return slope(pat, p, ctx);
+        case PatternKind::PigmentPattern:
+            return pigment_pattern(pat, p, ctx);
         case PatternKind::Quilted:
             return quilted(pat, p);
         case PatternKind::Radial:

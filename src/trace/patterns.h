@@ -15,7 +15,8 @@ namespace mirage {
 struct PatternContext {
     int noise_generator = 2;             // global_settings' noise_generator
     const WaveSources* waves = nullptr;  // the waves and ripples patterns' sources
-    glm::dvec3 normal{0.0};              // the surface normal at the point (slope patterns)
+    glm::dvec3 normal{0.0};              // the surface normal at the point (slope), facing the ray
+    glm::dvec3 point{0.0};               // the surface point in world space (slope with point_at)
 };
 
 /// The default context: generator 2 and POV-Ray's 10 wave sources.

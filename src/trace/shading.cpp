@@ -31,37 +31,6 @@ std::string place(const FileLoc& loc) {
     return out.str();
 }
 
-template <class Entry>
-Status check_ascending(const std::vector<Entry>& map, const FileLoc& loc, const std::string& what) {
-    for (std::size_t i = 1; i < map.size(); ++i) {
-        if (map[i].position < map[i - 1].position) {
-            return make_error(place(loc) + what + ": map entries must be in ascending order");
-        }
-    }
-    return Ok{};
-}
-
-Status check_pigment(const Pigment& p, const FileLoc& loc, const std::string& what) {
-    if (auto s = check_ascending(p.colour_map, loc, what); !s) return s;
-    if (auto s = check_ascending(p.pigment_map, loc, what); !s) return s;
-    for (const PigmentMapEntry& e : p.pigment_map) {
-        if (auto s = check_pigment(*e.pigment, loc, what); !s) return s;
-    }
-    return Ok{};
-}
-
-Status check_texture(const Texture& t, const FileLoc& loc) {
-    if (auto s = check_pigment(t.pigment, loc, "pigment"); !s) return s;
-    for (const Texture& layer : t.layers_below) {
-        if (auto s = check_texture(layer, loc); !s) return s;
-    }
-    if (auto s = check_ascending(t.map, loc, "texture_map"); !s) return s;
-    for (const TextureMapEntry& e : t.map) {
-        if (auto s = check_texture(*e.texture, loc); !s) return s;
-    }
-    return Ok{};
-}
-
 inline double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 inline bool is_black(const glm::dvec3& c) {
     return std::fabs(c.x) < kEpsilon && std::fabs(c.y) < kEpsilon && std::fabs(c.z) < kEpsilon;
@@ -119,6 +88,52 @@ double crand_value(const glm::dvec3& p) {
                         static_cast<std::size_t>(hash3d(c, a, b)));
 }
 
+/// Whether a point is inside a shape (POV-Ray's Inside of spheres, planes, boxes, cylinders
+/// and discs, `inverse` included); false for shapes without an inside test here.
+bool inside_shape(const PreparedShape& s, const glm::dvec3& p) {
+    bool inside = false;
+    switch (s.kind) {
+        case ShapeKind::Sphere: {
+            const glm::dvec3 d = p - s.centre;
+            inside = glm::dot(d, d) - s.radius_sq < 0.0;
+            break;
+        }
+        case ShapeKind::Ellipsoid: {
+            const glm::dvec3 d = glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0)) - s.centre;
+            inside = glm::dot(d, d) - s.radius_sq < 0.0;
+            break;
+        }
+        case ShapeKind::Plane:
+            inside = glm::dot(p, s.normal) + s.pov_distance < kEpsilon;
+            break;
+        case ShapeKind::Box:
+        case ShapeKind::TransformedBox: {
+            const glm::dvec3 q =
+                s.kind == ShapeKind::Box ? p : glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0));
+            inside = true;
+            for (int i = 0; i < 3; ++i) {
+                if (q[i] < s.lo[i] - kEpsilon || q[i] > s.hi[i] + kEpsilon) inside = false;
+            }
+            break;
+        }
+        case ShapeKind::Cylinder: {
+            const glm::dvec3 q = glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0));
+            const double offset = s.open ? kEpsilon : -kEpsilon;
+            inside =
+                !(q.x * q.x + q.y * q.y > 1.0 + offset || q.z < 0.0 - offset || q.z > 1.0 + offset);
+            break;
+        }
+        case ShapeKind::Disc: {
+            const glm::dvec3 q = glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0));
+            inside = q.z < 0.0;
+            break;
+        }
+        default:
+            return false;
+    }
+    return inside != s.inverse;
+}
+
 }  // namespace
 
 void TraceCounters::add(const TraceCounters& o) {
@@ -131,13 +146,9 @@ void TraceCounters::add(const TraceCounters& o) {
 
 Status check_supported(const Scene& scene) {
     for (const Primitive& p : scene.primitives) {
-        if (auto s = check_texture(p.texture, p.loc); !s) return s;
-    }
-    if (scene.sky_sphere) {
-        for (const Pigment& pigment : scene.sky_sphere->pigments) {
-            if (auto s = check_pigment(pigment, scene.sky_sphere->loc, "sky_sphere pigment"); !s) {
-                return s;
-            }
+        if (p.interior && p.interior->dispersion != 1.0) {
+            return make_error(place(p.loc) +
+                              "interior with dispersion: not supported by the built-in tracer");
         }
     }
     return Ok{};
@@ -150,6 +161,7 @@ struct Shader::Context {
     glm::dvec3 point{0.0};
     glm::dvec3 direction{0.0};   // the incoming ray's unit direction
     glm::dvec3 raw_normal{0.0};  // facing the ray
+    glm::dvec3 pnormal{0.0};     // POV-Ray's PNormal: the last perturbed normal (slope)
     double depth = 0.0;          // the ray's length to the hit
     double weight = 1.0;
     int level = 1;
@@ -204,6 +216,19 @@ Shader::Shader(const Scene& scene, const SceneAccel& accel, const Propagator& pr
     for (Interior& interior : resolved_) {
         if (interior.ior == 0.0) interior.ior = 1.0;  // the atmosphere's
     }
+    camera_location_ = scene.camera.location;
+    camera_inside_ = containing_interiors(camera_location_);
+}
+
+Shader::Interiors Shader::containing_interiors(const glm::dvec3& point) const {
+    // InitRayContainerState: every object the ray starts in, in object order (a union's
+    // children share one interior, entered once).
+    Interiors list;
+    for (std::size_t i = 0; i < interiors_.size(); ++i) {
+        if (std::find(list.begin(), list.end(), interiors_[i]) != list.end()) continue;
+        if (inside_shape(accel_->shape(static_cast<int>(i)), point)) list.push_back(interiors_[i]);
+    }
+    return list;
 }
 
 glm::dvec3 Shader::trace_camera_ray(const glm::dvec3& origin, const glm::dvec3& direction,
@@ -217,8 +242,10 @@ glm::dvec3 Shader::trace_camera_ray(const glm::dvec3& origin, const glm::dvec3& 
 glm::dvec3 Shader::trace_camera_ray(const RayStart& start, TraceCounters& counters) const {
     MIRAGE_CHECK(start.travelled == 0.0);
     ++counters.camera_rays;
-    static const Interiors kOutside;
-    return trace_ray(start, 1.0, 0, kOutside, false, counters);
+    if (start.origin == camera_location_) {
+        return trace_ray(start, 1.0, 0, camera_inside_, false, counters);
+    }
+    return trace_ray(start, 1.0, 0, containing_interiors(start.origin), false, counters);
 }
 
 glm::dvec3 Shader::trace_ray(const RayStart& start, double weight, int level,
@@ -279,6 +306,7 @@ glm::dvec3 Shader::shade_hit(const PathHit& path, const glm::dvec3& origin, doub
     // POV-Ray turns the normal to face the incoming ray.
     c.raw_normal = hit.normal;
     if (glm::dot(c.raw_normal, c.direction) > 0.0) c.raw_normal = -c.raw_normal;
+    c.pnormal = c.raw_normal;
     c.depth = path.length;
     c.weight = weight;
     c.level = level;
@@ -299,7 +327,10 @@ glm::dvec3 Shader::texture_colour(const Texture& texture, std::vector<const Patt
     // warps its normals go through (never removing one).
     warps.push_back(&texture.pattern);
     const glm::dvec3 tpoint = warp_point(texture.pattern, ipoint);
-    double value = evaluate_pattern(texture.pattern, tpoint, pattern_context_);
+    PatternContext ctx = pattern_context_;
+    ctx.normal = c.pnormal;
+    ctx.point = c.point;
+    double value = evaluate_pattern(texture.pattern, tpoint, ctx);
     const auto& map = texture.map;
     const std::size_t last = map.size() - 1;
     std::size_t prev = 0, cur = 0;
@@ -353,9 +384,13 @@ glm::dvec3 Shader::lighted_texture(const Texture& texture, const std::vector<con
         const Finish& f = layer.finish;
         const glm::dvec3 normal = layer_normal(layer, warps, ipoint, c.raw_normal);
         if (i == 0) top_normal = normal;
+        if (layer.normal) c.pnormal = normal;
         const double new_weight = c.weight * trans;
         PigmentColour pigment;
-        const bool colour_found = compute_pigment(layer.pigment, ipoint, pattern_context_, pigment);
+        PatternContext ctx = pattern_context_;
+        ctx.normal = c.pnormal;
+        ctx.point = c.point;
+        const bool colour_found = compute_pigment(layer.pigment, ipoint, ctx, pigment);
         one_colour_found = one_colour_found || colour_found;
 
         // Angle-dependent reflectivity (ComputeReflectivity).
@@ -713,7 +748,7 @@ bool Shader::refract(const Finish& f, const Interior& interior, const glm::dvec3
 
 glm::dvec3 Shader::shadow_texture(const Texture& texture, std::vector<const Pattern*>& warps,
                                   const glm::dvec3& ipoint, const glm::dvec3& raw_normal,
-                                  const glm::dvec3& direction) const {
+                                  const glm::dvec3& direction, double caustics) const {
     if (texture.pattern.kind != PatternKind::Solid) {
         warps.push_back(&texture.pattern);
         const glm::dvec3 tpoint = warp_point(texture.pattern, ipoint);
@@ -727,18 +762,17 @@ glm::dvec3 Shader::shadow_texture(const Texture& texture, std::vector<const Patt
             while (value > to_single(map[cur].position)) prev = cur++;
         }
         if (value == to_single(map[cur].position)) prev = cur;
-        glm::dvec3 f = shadow_texture(*map[cur].texture, warps, tpoint, raw_normal, direction);
+        glm::dvec3 f =
+            shadow_texture(*map[cur].texture, warps, tpoint, raw_normal, direction, caustics);
         if (prev != cur) {
             const glm::dvec3 below =
-                shadow_texture(*map[prev].texture, warps, tpoint, raw_normal, direction);
+                shadow_texture(*map[prev].texture, warps, tpoint, raw_normal, direction, caustics);
             value = (value - to_single(map[prev].position)) /
                     (to_single(map[cur].position) - to_single(map[prev].position));
             f = value * f + (1.0 - value) * below;
         }
         return f;
     }
-    (void)raw_normal;
-    (void)direction;
     glm::dvec3 filter(1.0);
     const std::size_t layer_count = 1 + texture.layers_below.size();
     for (std::size_t i = 0; i < layer_count; ++i) {
@@ -746,6 +780,11 @@ glm::dvec3 Shader::shadow_texture(const Texture& texture, std::vector<const Patt
         PigmentColour pigment;
         if (compute_pigment(layer.pigment, ipoint, pattern_context_, pigment)) {
             filter *= pigment.rgb_transmit();
+        }
+        // Faked caustics: the light focused where the (perturbed) surface faces it.
+        if (caustics != 0.0) {
+            const glm::dvec3 n = layer_normal(layer, warps, ipoint, raw_normal);
+            filter *= 1.0 + std::pow(std::fabs(glm::dot(n, direction)), caustics);
         }
     }
     return filter;
@@ -757,7 +796,13 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
                                  TraceCounters& counters) const {
     if (light.area_light) return area_shadow(light, point, colour, inside, counters);
     ++counters.shadow_rays;
-    if (!any_transparent_caster_) {
+    // With media_attenuation the fogs dim the light on its way (ComputeShadowMedia), on the
+    // stretches outside solid objects.
+    const bool fogged = light.media_attenuation && light.media_interaction && !scene_->fogs.empty();
+    auto hollow = [](const Interiors& list) {
+        return std::all_of(list.begin(), list.end(), [](const Interior* i) { return i->hollow; });
+    };
+    if (!any_transparent_caster_ && !fogged) {
         return accel_->any_shadow_hit(point, direction, kShadowTolerance, depth - kShadowTolerance)
                    ? glm::dvec3(0.0)
                    : colour;
@@ -783,9 +828,10 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
         std::vector<const Pattern*> warps;
         glm::dvec3 raw = hit->normal;
         if (glm::dot(raw, direction) > 0.0) raw = -raw;
-        glm::dvec3 f = shadow_texture(blocker.texture, warps, hit->point, raw, direction);
-        // Fade inside the blocker, over the stretch since the last surface.
         const Interior& interior = interior_of(hit->primitive);
+        glm::dvec3 f = shadow_texture(blocker.texture, warps, hit->point, raw, direction,
+                                      to_single(interior.caustics));
+        // Fade inside the blocker, over the stretch since the last surface.
         const auto it = std::find(within.begin(), within.end(), &interior);
         if (it != within.end() && interior.fade_power > 0.0 &&
             std::fabs(interior.fade_distance) > kEpsilon) {
@@ -800,6 +846,10 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
         }
         filtered *= f;
         if (is_black(filtered)) return glm::dvec3(0.0);
+        if (fogged && hollow(within)) {
+            filtered *= fog_attenuation(scene_->fogs, origin, direction, hit->t,
+                                        pattern_context_.noise_generator);
+        }
         if (it != within.end()) {
             within.erase(it);
         } else {
@@ -807,6 +857,10 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
         }
         remaining -= hit->t;
         origin = hit->point;
+    }
+    if (fogged && remaining > kShadowTolerance && hollow(within)) {
+        filtered *= fog_attenuation(scene_->fogs, origin, direction, remaining,
+                                    pattern_context_.noise_generator);
     }
     return filtered;
 }

@@ -99,12 +99,13 @@ class Shader {
                              const Interiors& inside, TraceCounters& counters) const;
     glm::dvec3 shadow_texture(const Texture& texture, std::vector<const Pattern*>& warps,
                               const glm::dvec3& ipoint, const glm::dvec3& raw_normal,
-                              const glm::dvec3& direction) const;
+                              const glm::dvec3& direction, double caustics) const;
     glm::dvec3 area_shadow(const PointLight& light, const glm::dvec3& point,
                            const glm::dvec3& colour, const Interiors& inside,
                            TraceCounters& counters) const;
     double relative_ior(const Interiors& inside, const Interior& interior) const;
     const Interior& interior_of(int primitive) const { return *interiors_[primitive]; }
+    Interiors containing_interiors(const glm::dvec3& point) const;
 
     const Scene* scene_;
     const SceneAccel* accel_;
@@ -118,6 +119,8 @@ class Shader {
     std::vector<const Interior*> interiors_;  // per primitive
     std::vector<std::uint8_t> opaque_;        // per primitive: POV-Ray's OPAQUE_FLAG
     bool any_transparent_caster_ = false;     // a shadow casting primitive is not opaque
+    glm::dvec3 camera_location_{0.0};
+    Interiors camera_inside_;  // the interiors the camera is in
 };
 
 }  // namespace mirage

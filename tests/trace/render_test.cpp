@@ -126,13 +126,15 @@ TEST(Render, RefusesBadSizesAndUnsupportedScenes) {
     auto r = render(small_scene(), bad);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.message(), "image size must be positive, got 0x61");
-    Scene unordered = small_scene();
-    Pigment g = gradient({0.0, 1.0, 0.0}, {{0.7, rgb(1, 0, 0)}, {0.2, rgb(0, 0, 1)}});
-    unordered.primitives[1].texture.pigment = g;
-    unordered.primitives[1].loc = FileLoc{"map.pov", 3, 1};
-    auto u = render(unordered, settings(1, 32));
+    Scene dispersive = small_scene();
+    Interior interior;
+    interior.dispersion = 1.1;
+    dispersive.primitives[1].interior = std::make_shared<const Interior>(interior);
+    dispersive.primitives[1].loc = FileLoc{"prism.pov", 3, 1};
+    auto u = render(dispersive, settings(1, 32));
     ASSERT_FALSE(u.ok());
-    EXPECT_EQ(u.message(), "map.pov:3:1: pigment: map entries must be in ascending order");
+    EXPECT_EQ(u.message(),
+              "prism.pov:3:1: interior with dispersion: not supported by the built-in tracer");
 }
 
 TEST(Render, RefusesADegenerateCamera) {

@@ -216,32 +216,21 @@ TEST(Shading, ZeroRoughnessIsPovRaysExponentZero) {
                 1e-12);
 }
 
-TEST(CheckSupported, RefusesMapsOutOfOrderAnywhere) {
+TEST(CheckSupported, RefusesDispersionWhereItIsUsed) {
     Scene s;
     Primitive glass = primitive(Sphere{}, texture(solid(Colour{glm::dvec3(1.0), 0.0, 0.7})));
     glass.loc = FileLoc{"glass.pov", 12, 5};
+    Interior interior;
+    interior.ior = 1.5;
+    glass.interior = std::make_shared<const Interior>(interior);
     s.primitives.push_back(glass);
-    EXPECT_TRUE(check_supported(s).ok());  // transparency is rendered
-    s.global.assumed_gamma = 2.2;
-    EXPECT_TRUE(check_supported(s).ok());  // and gamma is applied when writing
-    // A pigment map entry deep down with its colour map out of order.
-    auto inner = std::make_shared<Pigment>(
-        gradient({0.0, 1.0, 0.0}, {{0.5, rgb(1, 0, 0)}, {0.25, rgb(0, 0, 1)}}));
-    Pigment outer = gradient({1.0, 0.0, 0.0}, {});
-    outer.pigment_map = {PigmentMapEntry{0.0, inner}, PigmentMapEntry{1.0, inner}};
-    s.primitives[0].texture.pigment = outer;
+    EXPECT_TRUE(check_supported(s).ok());  // transparency and refraction are rendered
+    interior.dispersion = 1.02;
+    s.primitives[0].interior = std::make_shared<const Interior>(interior);
     auto status = check_supported(s);
     ASSERT_FALSE(status.ok());
-    EXPECT_EQ(status.message(), "glass.pov:12:5: pigment: map entries must be in ascending order");
-    SkySphere sky;
-    sky.pigments.push_back(gradient({0.0, 1.0, 0.0}, {{0.5, rgb(1, 0, 0)}, {0.25, rgb(0, 0, 1)}}));
-    sky.loc = FileLoc{"sky.pov", 2, 1};
-    s.primitives.clear();
-    s.sky_sphere = sky;
-    status = check_supported(s);
-    ASSERT_FALSE(status.ok());
     EXPECT_EQ(status.message(),
-              "sky.pov:2:1: sky_sphere pigment: map entries must be in ascending order");
+              "glass.pov:12:5: interior with dispersion: not supported by the built-in tracer");
 }
 
 }  // namespace
