@@ -1350,10 +1350,12 @@ void SceneParser::parse_interior_block(Interior& interior, const Token& kw) {
         if (accept_word("ior")) {
             interior.ior = parse_float();
         } else if (accept_word("dispersion")) {
-            interior.dispersion = parse_float();  // refused by the tracer where it is used
+            interior.dispersion = parse_float();
         } else if (peek_word("dispersion_samples")) {
             next();
-            parse_float();
+            Token at = peek(0);
+            interior.dispersion_samples = static_cast<int>(parse_float());
+            if (interior.dispersion_samples < 2) fail(at, "dispersion_samples must be 2 or more");
         } else if (accept_word("caustics")) {
             interior.caustics = parse_float() * 45.0;
         } else if (accept_word("fade_colour") || accept_word("fade_color")) {

@@ -27,6 +27,37 @@ constexpr ItemArity kUnsupportedGlobalSettings[] = {
     {"mm_per_unit", Arity::Float},
 };
 
+/// What a declared value is, when it is a material (for Scene::material_symbols).
+const char* material_kind(const Value& v) {
+    if (std::holds_alternative<Texture>(v.data)) return "texture";
+    if (std::holds_alternative<Pigment>(v.data)) return "pigment";
+    if (std::holds_alternative<Finish>(v.data)) return "finish";
+    if (std::holds_alternative<ColourMapValue>(v.data)) return "color_map";
+    if (std::holds_alternative<SkySphere>(v.data)) return "sky_sphere";
+    if (const auto* n = std::get_if<Numeric>(&v.data); n && n->size == 5) return "colour";
+    if (const auto* m = std::get_if<MaterialValue>(&v.data)) {
+        switch (m->kind) {
+            case MaterialValue::Kind::Normal:
+                return "normal";
+            case MaterialValue::Kind::Interior:
+                return "interior";
+            case MaterialValue::Kind::Material:
+                return "material";
+            case MaterialValue::Kind::Fog:
+                return "fog";
+            case MaterialValue::Kind::PigmentMap:
+                return "pigment_map";
+            case MaterialValue::Kind::NormalMap:
+                return "normal_map";
+            case MaterialValue::Kind::TextureMap:
+                return "texture_map";
+            case MaterialValue::Kind::SlopeMap:
+                return "slope_map";
+        }
+    }
+    return nullptr;
+}
+
 }  // namespace
 
 Scene SceneParser::parse(std::shared_ptr<SourceFile> main_file) {
@@ -233,6 +264,7 @@ void SceneParser::export_symbols() {
         if (sym->loc.file == "<image size>") continue;
         Declared d;
         d.loc = sym->loc;
+        if (const char* kind = material_kind(sym->value)) scene_.material_symbols[name] = kind;
         if (auto* n = std::get_if<Numeric>(&sym->value.data)) {
             if (n->size == 1) {
                 d.value = n->v[0];

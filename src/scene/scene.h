@@ -293,6 +293,7 @@ struct Texture {
 struct Interior {
     double ior = 0.0;  // 0: the atmosphere's (1), as POV-Ray fills it in
     double dispersion = 1.0;
+    int dispersion_samples = 7;
     double caustics = 0.0;
     glm::dvec3 fade_colour{0.0};
     double fade_distance = 0.0;
@@ -401,7 +402,7 @@ struct GlobalSettings {
     int noise_generator = 2;  // POV-Ray: 2 from #version 3.5 on, 1 before
     int number_of_waves = 10;
     double adc_bailout = 1.0 / 255.0;
-    glm::dvec3 irid_wavelength{0.25, 0.18, 0.14};
+    glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};
 };
 
 /// A fog (POV-Ray's FOG): constant (type 1) or ground fog (type 2).
@@ -441,6 +442,11 @@ struct Scene {
     std::vector<Fog> fogs;  // in file order
     GlobalSettings global;
     std::map<std::string, Declared> symbols;
+    // The materials declared at the top level (and in include files): name -> what it is
+    // ("texture", "pigment", "finish", "normal", "interior", "material", "colour",
+    // "color_map", "pigment_map", "normal_map", "texture_map", "sky_sphere", "fog"), for tools
+    // and tests that look at a library of materials.
+    std::map<std::string, std::string> material_symbols;
     std::vector<std::string> messages;  // #warning and #debug output, with their place
     std::vector<Skipped> skipped;
 };

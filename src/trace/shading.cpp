@@ -14,6 +14,7 @@
 #include "trace/pigment_eval.h"
 #include "trace/shape_intersect.h"
 #include "trace/single_precision.h"
+#include "trace/spectral.h"
 #include "trace/warps.h"
 #include "util/check.h"
 
@@ -145,12 +146,7 @@ void TraceCounters::add(const TraceCounters& o) {
 }
 
 Status check_supported(const Scene& scene) {
-    for (const Primitive& p : scene.primitives) {
-        if (p.interior && p.interior->dispersion != 1.0) {
-            return make_error(place(p.loc) +
-                              "interior with dispersion: not supported by the built-in tracer");
-        }
-    }
+    (void)scene;  // everything the parser accepts is rendered
     return Ok{};
 }
 
@@ -168,6 +164,7 @@ struct Shader::Context {
     const Interiors* inside = nullptr;
     double travelled = 0.0;
     TraceCounters* counters = nullptr;
+    const SpectralBand* band = nullptr;  // the ray's spectral band after a dispersive split
     std::vector<std::optional<glm::dvec3>> shadowed;  // per light
 };
 
@@ -249,8 +246,8 @@ glm::dvec3 Shader::trace_camera_ray(const RayStart& start, TraceCounters& counte
 }
 
 glm::dvec3 Shader::trace_ray(const RayStart& start, double weight, int level,
-                             const Interiors& inside, bool continued,
-                             TraceCounters& counters) const {
+                             const Interiors& inside, bool continued, TraceCounters& counters,
+                             const SpectralBand* band) const {
     // TraceRay: out of trace levels, or too faint to matter, is black (not the sky).
     if (level >= max_trace_level_ || weight < adc_bailout_) {
         if (level >= max_trace_level_) ++counters.trace_level_cutoffs;
@@ -266,7 +263,7 @@ glm::dvec3 Shader::trace_ray(const RayStart& start, double weight, int level,
     counters.segments += static_cast<std::uint64_t>(path.segments);
     const int shade_level = continued ? level : level + 1;
     glm::dvec3 colour = path.hit ? shade_hit(path, start.origin, weight, shade_level, inside,
-                                             start.travelled + path.length, counters)
+                                             start.travelled + path.length, counters, band)
                                  : sky_colour(*scene_, path.direction, pattern_context_);
     // Fog, on rays that are not inside a solid (non-hollow) object.
     if (!scene_->fogs.empty() &&
@@ -290,12 +287,12 @@ glm::dvec3 Shader::shade(const PathHit& path, double weight, int level, TraceCou
     if (!path.hit) return sky_colour(*scene_, path.direction, pattern_context_);
     static const Interiors kOutside;
     return shade_hit(path, path.surface.point - path.length * path.direction, weight, level,
-                     kOutside, travelled, counters);
+                     kOutside, travelled, counters, nullptr);
 }
 
 glm::dvec3 Shader::shade_hit(const PathHit& path, const glm::dvec3& origin, double weight,
                              int level, const Interiors& inside, double travelled,
-                             TraceCounters& counters) const {
+                             TraceCounters& counters, const SpectralBand* band) const {
     (void)origin;
     const SurfaceHit& hit = path.surface;
     const Primitive& primitive = scene_->primitives[hit.primitive];
@@ -313,6 +310,7 @@ glm::dvec3 Shader::shade_hit(const PathHit& path, const glm::dvec3& origin, doub
     c.inside = &inside;
     c.travelled = travelled;
     c.counters = &counters;
+    c.band = band;
     c.shadowed.resize(scene_->lights.size());
     std::vector<const Pattern*> warps;
     return texture_colour(primitive.texture, warps, hit.point, c);
@@ -675,7 +673,7 @@ glm::dvec3 Shader::reflect(const Finish& f, const glm::dvec3& normal, double wei
     bounce.direction = glm::normalize(r);
     // A curved propagator keeps the reflected ray's error an angle seen from the eye.
     bounce.travelled = c.travelled;
-    glm::dvec3 seen = trace_ray(bounce, weight, c.level, *c.inside, false, *c.counters);
+    glm::dvec3 seen = trace_ray(bounce, weight, c.level, *c.inside, false, *c.counters, c.band);
     if (f.irid > 0.0) {
         // ComputeIridColour on the reflected light, with the reflected ray as the "light".
         double thickness = to_single(f.irid_thickness);
@@ -700,32 +698,67 @@ glm::dvec3 Shader::reflect(const Finish& f, const glm::dvec3& normal, double wei
 
 bool Shader::refract(const Finish& f, const Interior& interior, const glm::dvec3& normal,
                      double weight, Context& c, glm::dvec3& colour) const {
-    // ComputeRefraction: the pair of indices depends only on the ray's interior list.
+    // ComputeRefraction: the pair of indices (and dispersions) depends only on the ray's
+    // interior list.
     Interiors next = *c.inside;
-    double ior;
+    double ior, dispersion;
+    int samples = interior.dispersion_samples;
+    const double own_ior = to_single(interior.ior), own_disp = to_single(interior.dispersion);
     if (next.empty()) {
         next.push_back(&interior);
-        ior = 1.0 / to_single(interior.ior);
+        ior = 1.0 / own_ior;
+        dispersion = 1.0 / own_disp;
     } else if (&interior == next.back()) {
         next.pop_back();
-        ior = next.empty() ? to_single(interior.ior) / 1.0
-                           : to_single(interior.ior) / to_single(next.back()->ior);
+        if (next.empty()) {
+            ior = own_ior / 1.0;
+            dispersion = own_disp / 1.0;
+        } else {
+            ior = own_ior / to_single(next.back()->ior);
+            dispersion = own_disp / to_single(next.back()->dispersion);
+            samples = std::max(samples, next.back()->dispersion_samples);
+        }
     } else if (auto it = std::find(next.begin(), next.end(), &interior); it != next.end()) {
         next.erase(it);
         ior = 1.0;  // leaving an overlap: no bending
+        dispersion = 1.0;
     } else {
-        ior = to_single(next.back()->ior) / to_single(interior.ior);
+        ior = to_single(next.back()->ior) / own_ior;
+        dispersion = to_single(next.back()->dispersion) / own_disp;
         next.push_back(&interior);
     }
-    RayStart ray;
-    ray.origin = c.point;
-    ray.travelled = c.travelled;
-    if (std::fabs(ior - 1.0) < kEpsilon) {
+    if (std::fabs(ior - 1.0) < kEpsilon && std::fabs(dispersion - 1.0) < kEpsilon) {
         // The same index on both sides: the ray goes on, at the same trace level.
+        RayStart ray;
+        ray.origin = c.point;
+        ray.travelled = c.travelled;
         ray.direction = c.direction;
-        colour = trace_ray(ray, weight, c.level, next, true, *c.counters);
+        colour = trace_ray(ray, weight, c.level, next, true, *c.counters, c.band);
         return false;
     }
+    if (std::fabs(dispersion - 1.0) < kEpsilon) {
+        return refract_ray(f, ior, normal, weight, next, c.band, c, colour);
+    }
+    if (c.band)
+        return refract_ray(f, dispersion_ior(*c.band, ior, dispersion), normal, weight, next,
+                           c.band, c, colour);
+    // A dispersive surface splits the ray into spectral bands, each refracted with its own
+    // index and carrying its own hue.
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < samples; ++i) {
+        const SpectralBand band = spectral_band(i, samples);
+        glm::dvec3 part(0.0);
+        refract_ray(f, dispersion_ior(band, ior, dispersion), normal, weight, next, &band, c, part);
+        sum += part * spectral_hue(band);
+    }
+    colour = sum / static_cast<double>(samples);
+    return false;
+}
+
+bool Shader::refract_ray(const Finish& f, double ior, const glm::dvec3& normal, double weight,
+                         const Interiors& next, const SpectralBand* band, Context& c,
+                         glm::dvec3& colour) const {
+    // TraceRefractionRay, with Heckbert's method.
     double n = glm::dot(c.direction, normal);
     glm::dvec3 local = normal;
     if (n <= 0.0) {
@@ -733,16 +766,21 @@ bool Shader::refract(const Finish& f, const Interior& interior, const glm::dvec3
     } else {
         local = -normal;
     }
-    // Heckbert's method.
     double t = 1.0 + ior * ior * (n * n - 1.0);
     if (t < 0.0) {
         // Total internal reflection, with the ray's own interiors.
+        const SpectralBand* saved = c.band;
+        c.band = band;
         colour += reflect(f, normal, weight, c);
+        c.band = saved;
         return true;
     }
     t = ior * n - std::sqrt(t);
+    RayStart ray;
+    ray.origin = c.point;
+    ray.travelled = c.travelled;
     ray.direction = glm::normalize(ior * c.direction + t * local);
-    colour = trace_ray(ray, weight, c.level, next, false, *c.counters);
+    colour = trace_ray(ray, weight, c.level, next, false, *c.counters, band);
     return false;
 }
 

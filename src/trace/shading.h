@@ -19,6 +19,7 @@
 #include "trace/patterns.h"
 #include "trace/propagator.h"
 #include "trace/scene_accel.h"
+#include "trace/spectral.h"
 #include "util/result.h"
 
 namespace mirage {
@@ -77,10 +78,13 @@ class Shader {
     struct Context;  // one intersection's shading state
     struct ShadowCache;
 
+    // `band`: the spectral band of a ray split by a dispersive refraction, else null.
     glm::dvec3 trace_ray(const RayStart& start, double weight, int level, const Interiors& inside,
-                         bool continued, TraceCounters& counters) const;
+                         bool continued, TraceCounters& counters,
+                         const SpectralBand* band = nullptr) const;
     glm::dvec3 shade_hit(const PathHit& path, const glm::dvec3& origin, double weight, int level,
-                         const Interiors& inside, double travelled, TraceCounters& counters) const;
+                         const Interiors& inside, double travelled, TraceCounters& counters,
+                         const SpectralBand* band) const;
     glm::dvec3 texture_colour(const Texture& texture, std::vector<const Pattern*>& warps,
                               const glm::dvec3& ipoint, Context& c) const;
     glm::dvec3 lighted_texture(const Texture& texture, const std::vector<const Pattern*>& warps,
@@ -94,6 +98,9 @@ class Shader {
                        Context& c) const;
     bool refract(const Finish& finish, const Interior& interior, const glm::dvec3& normal,
                  double weight, Context& c, glm::dvec3& colour) const;
+    bool refract_ray(const Finish& finish, double ior, const glm::dvec3& normal, double weight,
+                     const Interiors& next, const SpectralBand* band, Context& c,
+                     glm::dvec3& colour) const;
     glm::dvec3 shadow_filter(const PointLight& light, const glm::dvec3& point,
                              const glm::dvec3& direction, double depth, const glm::dvec3& colour,
                              const Interiors& inside, TraceCounters& counters) const;

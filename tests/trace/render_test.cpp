@@ -120,21 +120,12 @@ TEST(Render, UsesThePixelRayFunctionGiven) {
     EXPECT_EQ(r->image.at(96, 60), zenith);
 }
 
-TEST(Render, RefusesBadSizesAndUnsupportedScenes) {
+TEST(Render, RefusesBadSizes) {
     RenderSettings bad = settings(1, 32);
     bad.width = 0;
     auto r = render(small_scene(), bad);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.message(), "image size must be positive, got 0x61");
-    Scene dispersive = small_scene();
-    Interior interior;
-    interior.dispersion = 1.1;
-    dispersive.primitives[1].interior = std::make_shared<const Interior>(interior);
-    dispersive.primitives[1].loc = FileLoc{"prism.pov", 3, 1};
-    auto u = render(dispersive, settings(1, 32));
-    ASSERT_FALSE(u.ok());
-    EXPECT_EQ(u.message(),
-              "prism.pov:3:1: interior with dispersion: not supported by the built-in tracer");
 }
 
 TEST(Render, RefusesADegenerateCamera) {

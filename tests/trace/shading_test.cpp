@@ -216,22 +216,5 @@ TEST(Shading, ZeroRoughnessIsPovRaysExponentZero) {
                 1e-12);
 }
 
-TEST(CheckSupported, RefusesDispersionWhereItIsUsed) {
-    Scene s;
-    Primitive glass = primitive(Sphere{}, texture(solid(Colour{glm::dvec3(1.0), 0.0, 0.7})));
-    glass.loc = FileLoc{"glass.pov", 12, 5};
-    Interior interior;
-    interior.ior = 1.5;
-    glass.interior = std::make_shared<const Interior>(interior);
-    s.primitives.push_back(glass);
-    EXPECT_TRUE(check_supported(s).ok());  // transparency and refraction are rendered
-    interior.dispersion = 1.02;
-    s.primitives[0].interior = std::make_shared<const Interior>(interior);
-    auto status = check_supported(s);
-    ASSERT_FALSE(status.ok());
-    EXPECT_EQ(status.message(),
-              "glass.pov:12:5: interior with dispersion: not supported by the built-in tracer");
-}
-
 }  // namespace
 }  // namespace mirage
