@@ -15,6 +15,7 @@ namespace mirage {
 struct Material {
     std::optional<Texture> texture;
     std::optional<Interior> interior;
+    std::optional<Texture> interior_texture;
 };
 
 struct MaterialValue {

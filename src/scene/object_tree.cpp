@@ -8,10 +8,13 @@ namespace mirage {
 namespace {
 
 void flatten(const ObjectNode& object, const Texture* inherited,
-             const std::shared_ptr<const Interior>& inherited_interior, bool inherited_no_shadow,
+             const std::shared_ptr<const Interior>& inherited_interior,
+             const Texture* inherited_interior_texture, bool inherited_no_shadow,
              const Texture& default_texture, std::vector<Primitive>& primitives,
              std::vector<PointLight>& lights) {
     const Texture* texture = object.texture ? &*object.texture : inherited;
+    const Texture* interior_texture =
+        object.interior_texture ? &*object.interior_texture : inherited_interior_texture;
     // An object without an interior shares its union's (one medium, as in POV-Ray).
     const std::shared_ptr<const Interior> interior =
         object.interior ? object.interior : inherited_interior;
@@ -27,6 +30,7 @@ void flatten(const ObjectNode& object, const Texture* inherited,
             p.inverse = object.inverse;
             p.loc = object.loc;
             p.interior = interior ? interior : std::make_shared<const Interior>();
+            if (interior_texture) p.interior_texture = *interior_texture;
             primitives.push_back(std::move(p));
             break;
         }
@@ -34,7 +38,8 @@ void flatten(const ObjectNode& object, const Texture* inherited,
             // A union always has an interior (POV-Ray gives it one), which its children share.
             const auto shared = interior ? interior : std::make_shared<const Interior>();
             for (const ObjectNode& child : object.children) {
-                flatten(child, texture, shared, no_shadow, default_texture, primitives, lights);
+                flatten(child, texture, shared, interior_texture, no_shadow, default_texture,
+                        primitives, lights);
             }
             break;
         }
@@ -63,11 +68,12 @@ void transform_object(ObjectNode& object, const Transform& t) {
             break;
     }
     if (object.texture) transform_texture(*object.texture, t);
+    if (object.interior_texture) transform_texture(*object.interior_texture, t);
 }
 
 void flatten_object(const ObjectNode& object, const Texture& default_texture,
                     std::vector<Primitive>& primitives, std::vector<PointLight>& lights) {
-    flatten(object, nullptr, nullptr, false, default_texture, primitives, lights);
+    flatten(object, nullptr, nullptr, nullptr, false, default_texture, primitives, lights);
 }
 
 }  // namespace mirage

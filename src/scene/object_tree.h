@@ -23,6 +23,7 @@ struct ObjectNode {
     Transform transform;                       // Shape: shape space -> world space
     std::optional<Texture> texture;            // the object's own texture, if it has one
     std::shared_ptr<const Interior> interior;  // the object's own interior, if it has one
+    std::optional<Texture> interior_texture;   // the object's own interior_texture, if any
     bool no_shadow = false;
     bool inverse = false;
     std::vector<ObjectNode> children;  // Union

@@ -1391,6 +1391,13 @@ Material SceneParser::parse_material_block(Material m, const Token& kw) {
                 m.texture = id.texture;
             }
         }
+        if (id.interior_texture) {
+            if (m.interior_texture) {
+                layer_texture(*m.interior_texture, *id.interior_texture, name);
+            } else {
+                m.interior_texture = id.interior_texture;
+            }
+        }
         m.interior = id.interior;  // replaces (or removes) the interior, as in POV-Ray
     }
     while (true) {
@@ -1399,6 +1406,7 @@ Material SceneParser::parse_material_block(Material m, const Token& kw) {
         Transform tr;
         if (parse_transform_item(tr)) {
             if (m.texture) transform_texture(*m.texture, tr);
+            if (m.interior_texture) transform_texture(*m.interior_texture, tr);
             continue;
         }
         if (t.is_word("texture")) {
@@ -1422,7 +1430,14 @@ Material SceneParser::parse_material_block(Material m, const Token& kw) {
         }
         if (t.is_word("interior_texture")) {
             Token item = next();
-            skip_unsupported(item, Arity::Block, "material item 'interior_texture'");
+            expect_open_brace(item);
+            Texture tex = parse_texture_body(item);
+            expect_close_brace(item);
+            if (m.interior_texture) {
+                layer_texture(*m.interior_texture, std::move(tex), item);
+            } else {
+                m.interior_texture = std::move(tex);
+            }
             continue;
         }
         reject_unknown_word(t);
@@ -1527,10 +1542,24 @@ bool SceneParser::parse_material_modifier(ObjectNode& node) {
         Token item = next();
         Material m;
         m.texture = node.texture;
+        m.interior_texture = node.interior_texture;
         if (node.interior) m.interior = *node.interior;
         m = parse_material_block(std::move(m), item);
         node.texture = m.texture;
+        node.interior_texture = m.interior_texture;
         node.interior = m.interior ? std::make_shared<const Interior>(*m.interior) : nullptr;
+        return true;
+    }
+    if (w == "interior_texture") {
+        Token item = next();
+        expect_open_brace(item);
+        Texture tex = parse_texture_body(item);
+        expect_close_brace(item);
+        if (node.interior_texture) {
+            layer_texture(*node.interior_texture, std::move(tex), item);
+        } else {
+            node.interior_texture = std::move(tex);
+        }
         return true;
     }
     if (w == "hollow") {

@@ -342,6 +342,7 @@ struct Primitive {
     FileLoc loc;
     std::shared_ptr<const Interior> interior;  // never null after parsing; children of a union
                                                // share its interior (one medium, as in POV-Ray)
+    std::optional<Texture> interior_texture;   // seen where a ray meets the surface from inside
 };
 
 /// A light source (POV-Ray's LightSource): a point light, a spotlight or a cylinder light,

@@ -300,9 +300,11 @@ glm::dvec3 Shader::shade_hit(const PathHit& path, const glm::dvec3& origin, doub
     c.primitive = hit.primitive;
     c.point = hit.point;
     c.direction = path.direction;
-    // POV-Ray turns the normal to face the incoming ray.
+    // POV-Ray turns the normal to face the incoming ray; a ray from inside sees the
+    // interior_texture where there is one.
     c.raw_normal = hit.normal;
-    if (glm::dot(c.raw_normal, c.direction) > 0.0) c.raw_normal = -c.raw_normal;
+    const bool from_inside = glm::dot(c.raw_normal, c.direction) > 0.0;
+    if (from_inside) c.raw_normal = -c.raw_normal;
     c.pnormal = c.raw_normal;
     c.depth = path.length;
     c.weight = weight;
@@ -313,7 +315,9 @@ glm::dvec3 Shader::shade_hit(const PathHit& path, const glm::dvec3& origin, doub
     c.band = band;
     c.shadowed.resize(scene_->lights.size());
     std::vector<const Pattern*> warps;
-    return texture_colour(primitive.texture, warps, hit.point, c);
+    const Texture& texture = from_inside && primitive.interior_texture ? *primitive.interior_texture
+                                                                       : primitive.texture;
+    return texture_colour(texture, warps, hit.point, c);
 }
 
 glm::dvec3 Shader::texture_colour(const Texture& texture, std::vector<const Pattern*>& warps,
@@ -865,9 +869,12 @@ glm::dvec3 Shader::shadow_filter(const PointLight& light, const glm::dvec3& poin
         const Primitive& blocker = scene_->primitives[hit->primitive];
         std::vector<const Pattern*> warps;
         glm::dvec3 raw = hit->normal;
-        if (glm::dot(raw, direction) > 0.0) raw = -raw;
+        const bool from_inside = glm::dot(raw, direction) > 0.0;
+        if (from_inside) raw = -raw;
+        const Texture& texture =
+            from_inside && blocker.interior_texture ? *blocker.interior_texture : blocker.texture;
         const Interior& interior = interior_of(hit->primitive);
-        glm::dvec3 f = shadow_texture(blocker.texture, warps, hit->point, raw, direction,
+        glm::dvec3 f = shadow_texture(texture, warps, hit->point, raw, direction,
                                       to_single(interior.caustics));
         // Fade inside the blocker, over the stretch since the last surface.
         const auto it = std::find(within.begin(), within.end(), &interior);

@@ -371,6 +371,30 @@ TEST(Interiors, MaterialsAndUnionsShareOne) {
     EXPECT_NE(s.primitives[3].interior, s.primitives[0].interior);
 }
 
+TEST(Interiors, InteriorTexturesOnObjectsMaterialsAndUnions) {
+    Scene s = parse_ok(R"(
+        #declare M = material { texture { pigment { rgb 1 } }
+                                interior_texture { pigment { rgb <1, 0, 0> } } }
+        sphere { 0, 1 material { M } }
+        cylinder { 0, y, 1 open pigment { rgb 0.5 } interior_texture { pigment { rgb <0, 0, 1> } } }
+        union { sphere { 0, 1 } sphere { x, 1 interior_texture { pigment { rgb <0, 1, 0> } } }
+                interior_texture { pigment { rgb 0.25 } } }
+        sphere { 0, 1 }
+    )");
+    ASSERT_EQ(s.primitives.size(), 5u);
+    ASSERT_TRUE(s.primitives[0].interior_texture);
+    expect_vec(s.primitives[0].interior_texture->pigment.colour.rgb, glm::dvec3(1, 0, 0));
+    expect_vec(s.primitives[0].texture.pigment.colour.rgb, glm::dvec3(1, 1, 1));
+    ASSERT_TRUE(s.primitives[1].interior_texture);
+    expect_vec(s.primitives[1].interior_texture->pigment.colour.rgb, glm::dvec3(0, 0, 1));
+    // A union's interior_texture goes to the children without one of their own.
+    ASSERT_TRUE(s.primitives[2].interior_texture);
+    expect_vec(s.primitives[2].interior_texture->pigment.colour.rgb, glm::dvec3(0.25));
+    ASSERT_TRUE(s.primitives[3].interior_texture);
+    expect_vec(s.primitives[3].interior_texture->pigment.colour.rgb, glm::dvec3(0, 1, 0));
+    EXPECT_FALSE(s.primitives[4].interior_texture);
+}
+
 TEST(Lights, SpotsCylindersAreasAndFade) {
     Scene s = parse_ok(R"(
         light_source { <0, 10, 0>, 1 spotlight point_at <0, 0, 0> radius 20 falloff 30

@@ -220,6 +220,24 @@ TEST(PovMaterialParity, GlassAndInteriors) {
             "}\n");
 }
 
+TEST(PovMaterialParity, InteriorTextures) {
+    // Open cylinders seen from above: their inner wall shows the interior_texture, given to
+    // the object, by a material, and by a union to its children; through a glass sphere the
+    // far side from inside.
+    EXPECT_PARITY(
+        "interior_texture",
+        stage("cylinder { <-1.8, -0.4, 0>, <-1.8, 1.2, 0>, 0.8 open pigment { rgb <0.9, 0.8, "
+              "0.2> } interior_texture { pigment { checker rgb <0, 0, 1>, rgb 1 scale 0.2 } "
+              "finish { phong 0.6 } } }\n"
+              "#declare M = material { texture { pigment { rgb <0.3, 0.8, 0.3> } } "
+              "interior_texture { pigment { rgb <1, 0.2, 0.2> } } }\n"
+              "cylinder { <0, -0.4, 0>, <0, 1.2, 0>, 0.8 open material { M } }\n"
+              "union { cylinder { <1.8, -0.4, 0>, <1.8, 1.2, 0>, 0.8 open } "
+              "sphere { <1.8, 2.1, 0.6>, 0.5 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 1.3 "
+              "} } pigment { rgb <0.5, 0.5, 0.9> } interior_texture { pigment { rgb <1, 0.5, "
+              "0> } } }\n"));
+}
+
 TEST(PovMaterialParity, OldGlassAndLegacyGamma) {
     // glass_old.inc's finish ior and a #version 3.6 scene without assumed_gamma, which POV-Ray
     // writes with no gamma handling at all.
