@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <mutex>
 
 #include "scene_builders.h"
+#include "trace/curved_propagator.h"
 #include "trace/single_precision.h"
 
 namespace mirage {
@@ -214,6 +216,72 @@ TEST(Shading, ZeroRoughnessIsPovRaysExponentZero) {
     const glm::dvec3 light_colour = to_single(glm::dvec3(1.0, 0.9, 0.8));
     EXPECT_NEAR(glm::length(rig.trace({0.5, 0.0, -5.0}, {0, 0, 1}) - 0.25 * light_colour), 0.0,
                 1e-12);
+}
+
+/// Records the rays the shader hands to the propagator (the rays in the air) and follows
+/// them along the paper's curved paths.
+class RecordingCurved final : public Propagator {
+  public:
+    explicit RecordingCurved(const CurvedSettings& s) : curved_(s) {}
+    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override {
+        PathHit hit = curved_.propagate(accel, start);
+        std::lock_guard<std::mutex> lock(mutex_);
+        starts.push_back(start);
+        hits.push_back(hit);
+        return hit;
+    }
+    mutable std::vector<RayStart> starts;
+    mutable std::vector<PathHit> hits;
+
+  private:
+    CurvedPropagator curved_;
+    mutable std::mutex mutex_;
+};
+
+TEST(Shading, RaysThroughGlassGoStraightInsideAndCurvedOutside) {
+    CurvedSettings curved;
+    curved.profile = *preset_profile("paper");
+    curved.tolerance_rad = 1e-4;
+    const RecordingCurved recording(curved);
+    Scene s;
+    Finish clear;
+    clear.ambient = glm::dvec3(0.0);
+    clear.diffuse = 0.0;
+    Primitive slab = primitive(Box{{-50.0, -5.0, 8.0}, {50.0, 20.0, 9.0}},
+                               texture(solid(Colour{glm::dvec3(1.0), 1.0, 0.0}), clear));
+    Interior glass;
+    glass.ior = 1.5;
+    slab.interior = std::make_shared<const Interior>(glass);
+    s.primitives.push_back(slab);
+    s.primitives.push_back(primitive(Plane{{0.0, 0.0, 1.0}, 20.0}, Texture{}));
+    const SceneAccel accel = *SceneAccel::build(s);
+    const Shader shader(s, accel, recording);
+    TraceCounters counters;
+    const glm::dvec3 eye(0.0, 1.5, 0.0);
+    shader.trace_camera_ray(eye, glm::normalize(glm::dvec3(0.1, -0.08, 1.0)), counters);
+    // The camera ray, then the ray leaving the slab: the one inside went straight.
+    ASSERT_EQ(recording.starts.size(), 2u);
+    const PathHit& entry = recording.hits[0];
+    const RayStart& out = recording.starts[1];
+    ASSERT_TRUE(entry.hit);
+    EXPECT_NEAR(entry.surface.point.z, 8.0, 1e-9);
+    EXPECT_NEAR(out.origin.z, 9.0, 1e-9);
+    // Inside, the ray is the straight refracted ray from the entry point (Snell's law with
+    // 1 / 1.5 about the slab's normal facing the ray, -z).
+    const glm::dvec3 d = entry.direction;
+    const double eta = 1.0 / 1.5, cosi = d.z;
+    const glm::dvec3 inside =
+        glm::normalize(eta * d + (eta * cosi - std::sqrt(1.0 - eta * eta * (1.0 - cosi * cosi))) *
+                                     glm::dvec3(0.0, 0.0, -1.0));
+    const glm::dvec3 expected_exit = entry.surface.point + (1.0 / inside.z) * inside;
+    EXPECT_NEAR(glm::length(out.origin - expected_exit), 0.0, 1e-9);
+    // Out of the slab the ray regains the incoming direction, and its allowance counts the
+    // path from the eye.
+    EXPECT_NEAR(glm::length(out.direction - d), 0.0, 1e-9);
+    EXPECT_NEAR(out.travelled, entry.length + glm::length(expected_exit - entry.surface.point),
+                1e-9);
+    ASSERT_TRUE(recording.hits[1].hit);
+    EXPECT_EQ(recording.hits[1].surface.primitive, 1);
 }
 
 }  // namespace
