@@ -658,14 +658,11 @@ void SceneParser::parse_warp(Pattern& p, const Token& kw) {
             w.planar_offset = parse_float();
         }
     } else if (t.is_word("cubic")) {
-        unsupported(t, "warp 'cubic'");
-        skip_rest_of_block();
-        expect_close_brace(kw);
-        return;
+        w.kind = Warp::Kind::Cubic;
     } else {
         fail(t,
              "expected a warp type (turbulence, repeat, black_hole, cylindrical, spherical, "
-             "toroidal, planar), got " +
+             "toroidal, planar, cubic), got " +
                  describe(t));
     }
     expect_close_brace(kw);

@@ -95,6 +95,31 @@ void warp_toroidal(glm::dvec3& p, const Warp& w) {
 
 void warp_planar(glm::dvec3& p, const Warp& w) { p = orient(w, p.x, p.y, w.planar_offset); }
 
+// The cube's six faces unfolded into a cross on the unit square (POV-Ray's CubicWarp): the
+// face the point's largest coordinate picks, the other two divided by it; z keeps that
+// coordinate's size.
+void warp_cubic(glm::dvec3& p) {
+    const double x = p.x, y = p.y, z = p.z;
+    const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+    constexpr double third = 1.0 / 3.0;
+    if (x >= 0 && x >= ay && x >= az) {
+        p = glm::dvec3(0.75 - 0.25 * (z / x + 1.0) / 2.0, third + third * (y / x + 1.0) / 2.0, x);
+    } else if (y >= 0 && y >= ax && y >= az) {
+        p = glm::dvec3(0.25 + 0.25 * (x / y + 1.0) / 2.0, 1.0 - third * (z / y + 1.0) / 2.0, y);
+    } else if (z >= 0 && z >= ax && z >= ay) {
+        p = glm::dvec3(0.25 + 0.25 * (x / z + 1.0) / 2.0, third + third * (y / z + 1.0) / 2.0, z);
+    } else if (x < 0 && x <= -ay && x <= -az) {
+        const double m = -x;
+        p = glm::dvec3(0.25 * (z / m + 1.0) / 2.0, third + third * (y / m + 1.0) / 2.0, m);
+    } else if (y < 0 && y <= -ax && y <= -az) {
+        const double m = -y;
+        p = glm::dvec3(0.25 + 0.25 * (x / m + 1.0) / 2.0, third * (z / m + 1.0) / 2.0, m);
+    } else {
+        const double m = -z;
+        p = glm::dvec3(1.0 - 0.25 * (x / m + 1.0) / 2.0, third + third * (y / m + 1.0) / 2.0, m);
+    }
+}
+
 void warp_repeat(glm::dvec3& p, const Warp& w) {
     glm::dvec3 r = p;
     const int axis = w.axis;
@@ -179,7 +204,8 @@ glm::dvec3 warp_point(const Pattern& pattern, const glm::dvec3& point) {
                 warp_planar(p, w);
                 break;
             case Warp::Kind::Cubic:
-                break;  // refused by the parser
+                warp_cubic(p);
+                break;
         }
     }
     if (pattern.turbulence && !pattern_applies_own_turbulence(pattern.kind)) {

@@ -104,6 +104,26 @@ TEST(Warps, BlackHolePullsPointsTowardItsCentre) {
     EXPECT_EQ(warp_point(p, {1.5, 0, 0}), glm::dvec3(1.5, 0, 0));  // outside: untouched
 }
 
+TEST(Warps, CubicUnfoldsTheCubesFacesIntoACross) {
+    Pattern p = of(PatternKind::Bozo);
+    Warp cubic;
+    cubic.kind = Warp::Kind::Cubic;
+    p.warps.push_back(cubic);
+    // Each face's centre lands at the centre of its square of the cross (quarters across,
+    // thirds up), with the distance along that face's axis as z.
+    const auto near = [](const glm::dvec3& a, const glm::dvec3& b) {
+        EXPECT_NEAR(glm::length(a - b), 0.0, 1e-12) << a.x << " " << a.y << " " << a.z;
+    };
+    near(warp_point(p, {2, 0, 0}), {0.625, 0.5, 2});         // +x
+    near(warp_point(p, {-3, 0, 0}), {0.125, 0.5, 3});        // -x
+    near(warp_point(p, {0, 0, 1}), {0.375, 0.5, 1});         // +z
+    near(warp_point(p, {0, 0, -1}), {0.875, 0.5, 1});        // -z
+    near(warp_point(p, {0, 1, 0}), {0.375, 5.0 / 6.0, 1});   // +y, above +z
+    near(warp_point(p, {0, -1, 0}), {0.375, 1.0 / 6.0, 1});  // -y, below
+    // Across a face: the other coordinates over the face's one.
+    near(warp_point(p, {2, 1, -1}), {0.75 - 0.25 * 0.25, 1.0 / 3.0 + 0.25, 2});
+}
+
 TEST(Warps, NormalsGoThroughTheTransformsAndBack) {
     Pattern p = of(PatternKind::Bozo);
     p.transform = make_scaling(glm::dvec3(1, 4, 1));
