@@ -1,14 +1,15 @@
 // Diagnostic formatting, shared by the lexer and parser errors.
 #include "scene/diagnostics.h"
 
+#include "scene/scene.h"
+
 namespace mirage {
 
 std::string format_diagnostic(std::string_view path, int line, int column, std::string_view message,
                               const std::vector<std::string>& context,
                               std::string_view source_line) {
     std::string out;
-    out += path;
-    out += ':' + std::to_string(line) + ':' + std::to_string(column) + ": ";
+    out += to_string(FileLoc{std::string(path), line, column}) + ": ";
     out += message;
     for (const std::string& c : context) {
         out += '\n';

@@ -19,6 +19,12 @@ struct FileLoc {
     int column = 0;
 };
 
+/// "file:line:column" as messages name a place ("file" alone when the line is not known).
+inline std::string to_string(const FileLoc& loc) {
+    if (loc.line <= 0) return loc.file;
+    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
+}
+
 /// A POV-Ray colour: linear rgb plus filter and transmit.
 struct Colour {
     glm::dvec3 rgb{0.0};

@@ -1,5 +1,9 @@
 // The scene parser's internals, shared by its implementation files:
-//   scene_parser.cpp       token stream: files, includes, directives, macros, symbols
+//   token_stream.cpp       frames (files, includes, macro bodies), processed tokens, messages
+//   symbols.cpp            symbol tables, identifier values, array elements
+//   parse_conditionals.cpp #if, #switch, #while, #for and the rest of the conditional stack
+//   parse_directives.cpp   #macro and macro calls, #declare, #undef, #include and the others
+//   parse_values.cpp       the right-hand side of #declare, macro arguments, arrays
 //   parse_expressions.cpp  float, vector, colour and string expressions
 //   parse_objects.cpp      objects, transforms, light sources, the camera
 //   parse_materials.cpp    textures, pigments, finishes, colour maps
@@ -153,7 +157,7 @@ class SceneParser {
     std::shared_ptr<SourceFile> load_file(const std::string& path, const std::string& text);
 
   private:
-    // ---- errors and messages (scene_parser.cpp) ----
+    // ---- errors and messages (token_stream.cpp) ----
     [[noreturn]] void fail(const Token& at, const std::string& message) const;
     [[noreturn]] void fail_at(const SourceFile& file, int line, int column,
                               const std::shared_ptr<const FrameContext>& context,
@@ -163,7 +167,7 @@ class SceneParser {
     static std::string describe(const Token& t);
     static std::string place(const FileLoc& loc, const Token& relative_to);
 
-    // ---- token stream (scene_parser.cpp) ----
+    // ---- token stream (token_stream.cpp) ----
     const Token& peek(std::size_t ahead = 0);
     Token next();
     bool peek_punct(std::string_view p, std::size_t ahead = 0) { return peek(ahead).is_punct(p); }
@@ -193,7 +197,7 @@ class SceneParser {
     void pop_frame();
     void check_cond_closed_at_frame_end(const Token& eof);
 
-    // ---- directives (scene_parser.cpp) ----
+    // ---- directives (parse_conditionals.cpp, parse_directives.cpp) ----
     void handle_directive(const Token& hash);
     void directive_if(const Token& hash, const Token& keyword, Cond true_type, bool value);
     void directive_else(const Token& hash, const Token& keyword);
@@ -218,13 +222,11 @@ class SceneParser {
     void invoke_macro(const Token& name, const std::shared_ptr<const MacroDef>& macro);
     int current_frame_id() const { return frames_.back().id; }
 
-    // ---- symbols (scene_parser.cpp) ----
+    // ---- symbols (symbols.cpp) ----
     std::shared_ptr<Symbol> lookup(const std::string& name, int* depth = nullptr) const;
     void declare(const Token& name_token, Value value, bool local);
-    std::shared_ptr<Symbol> array_element(const Token& name, const std::shared_ptr<Symbol>& array,
-                                          bool for_assignment);
 
-    // ---- rvalues (scene_parser.cpp) ----
+    // ---- values (parse_values.cpp; identifier values in symbols.cpp) ----
     Value parse_rvalue(const Token& for_name, bool is_macro_argument);
     Value parse_array_declaration(const Token& keyword);
     void parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t base,

@@ -26,7 +26,7 @@ double ground_slack(const glm::dvec3& p) {
 
 std::string place(const FileLoc& loc) {
     if (loc.file.empty()) return "";
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": ";
+    return to_string(loc) + ": ";
 }
 
 std::string degrees(double rad) {
