@@ -20,7 +20,7 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "report/contact_sheet.h"
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
 #include "util/process.h"

@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "atmosphere/exact_ray.h"
-#include "compile/library_paths.h"
+#include "load/library_paths.h"
 #include "compile/pixel_check.h"
 #include "image/image_io.h"
 #include "layers/band_tracer3d.h"

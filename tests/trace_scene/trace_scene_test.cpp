@@ -1,4 +1,4 @@
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "compile/library_paths.h"
+#include "load/library_paths.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
-#include "povray_runner.h"
+#include "../trace/povray_runner.h"
 #include "scene/parser.h"
 
 namespace mirage {

@@ -1,4 +1,4 @@
-#include "compile/atmosphere_settings.h"
+#include "load/atmosphere_settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,8 +32,7 @@ const char* const kKnown[] = {
 };
 
 std::string where(const Declared& d) {
-    return d.loc.file + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
-           ": ";
+    return to_string(d.loc) + ": ";
 }
 
 // Edit distance, for "did you mean".

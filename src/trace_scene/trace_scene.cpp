@@ -1,4 +1,4 @@
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,8 +6,8 @@
 #include <memory>
 #include <sstream>
 
-#include "compile/atmosphere_settings.h"
-#include "compile/library_paths.h"
+#include "load/atmosphere_settings.h"
+#include "load/library_paths.h"
 #include "image/image_io.h"
 #include "scene/camera.h"
 #include "scene/parser.h"
