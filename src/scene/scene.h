@@ -3,27 +3,15 @@
 #pragma once
 
 #include <glm/glm.hpp>
-
 #include <map>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "util/file_loc.h"
+
 namespace mirage {
-
-/// A place in a source file, 1-based line and column.
-struct FileLoc {
-    std::string file;
-    int line = 0;
-    int column = 0;
-};
-
-/// "file:line:column" as messages name a place ("file" alone when the line is not known).
-inline std::string to_string(const FileLoc& loc) {
-    if (loc.line <= 0) return loc.file;
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
-}
 
 /// A POV-Ray colour: linear rgb plus filter and transmit.
 struct Colour {
@@ -162,7 +150,8 @@ struct Skipped {
 
 struct Scene {
     std::string file;
-    Camera camera;  // POV-Ray's default camera when the file has none
+    std::vector<std::string> files;  // every file read: the scene, then its includes in order
+    Camera camera;                   // POV-Ray's default camera when the file has none
     bool has_camera = false;
     std::vector<PointLight> lights;
     std::vector<Primitive> primitives;
