@@ -16,12 +16,55 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 // Directives
 
 void SceneParser::push_cond(Cond type, const Token& hash, const Token& keyword) {
+    if (static_cast<int>(cond_.size()) >= options_.limits.max_nesting) {
+        fail(hash, "conditional directives nested more than " +
+                       std::to_string(options_.limits.max_nesting) + " deep, mirage's limit");
+    }
     CondEntry e;
     e.type = type;
     e.directive = "#" + keyword.text();
     e.loc = hash.loc();
     e.frame_id = current_frame_id();
+    e.serial = ++cond_serial_;
+    e.directive_depth = static_cast<int>(directives_.size());
     cond_.push_back(std::move(e));
+}
+
+void SceneParser::check_not_busy(const Token& hash, const Token& keyword) const {
+    if (!cond_.empty() && cond_.back().frame_id == current_frame_id() && !cond_.back().busy.empty())
+        fail(hash, "'#" + keyword.text() + "' inside " + cond_.back().busy);
+}
+
+template <class Read>
+auto SceneParser::read_param_of_top(const Token& hash, const std::string& busy_with, Read read) {
+    const std::size_t level = cond_.size();
+    const std::uint64_t serial = cond_.back().serial;
+    cond_.back().busy = busy_with;
+    auto value = read();
+    if (cond_.size() < level || cond_[level - 1].serial != serial) {
+        fail(hash, busy_with + " runs past the end of its macro or file");
+    }
+    if (cond_.size() > level) {
+        const CondEntry& open = cond_[level];
+        fail(hash, "'" + open.directive + "' at " + place(open.loc, hash) + " is not closed in " +
+                       busy_with);
+    }
+    cond_.back().busy.clear();
+    return value;
+}
+
+void SceneParser::count_loop_pass(const CondEntry& loop, const Token& at) {
+    if (++loop_passes_ <= options_.limits.max_loop_passes) return;
+    const Frame& frame = frames_.back();  // a loop lies in one frame: this one
+    if (frame.file->path == loop.loc.file) {
+        fail_at(*frame.file, loop.loc.line, loop.loc.column, frame.context,
+                "'" + loop.directive + "' reached mirage's limit of " +
+                    std::to_string(options_.limits.max_loop_passes) +
+                    " loop passes (all loops together): an endless loop?");
+    }
+    fail(at, "'" + loop.directive + "' at " + place(loop.loc, at) + " reached mirage's limit of " +
+                 std::to_string(options_.limits.max_loop_passes) +
+                 " loop passes (all loops together): an endless loop?");
 }
 
 // Reads and ignores tokens (carrying out only the conditional directives) while the top of
@@ -65,6 +108,15 @@ bool SceneParser::parse_ifdef_param() {
 }
 
 void SceneParser::handle_directive(const Token& hash) {
+    Nested nested(*this, hash);
+    // The directives being carried out, innermost last, for the loops' #end (directive_end).
+    struct Active {
+        SceneParser& parser;
+        explicit Active(SceneParser& p, const Token& hash) : parser(p) {
+            parser.directives_.push_back(ActiveDirective{hash.loc(), "#"});
+        }
+        ~Active() { parser.directives_.pop_back(); }
+    } active(*this, hash);
     // The keyword follows the '#' as written (POV-Ray allows white space between them).
     Token keyword = lookahead_.empty() ? raw_next() : next();
     if (keyword.kind() != TokenKind::Identifier) {
@@ -73,6 +125,7 @@ void SceneParser::handle_directive(const Token& hash) {
         return;
     }
     const std::string& w = keyword.text();
+    directives_.back().keyword = "#" + w;
 
     if (w == "if" || w == "ifdef" || w == "ifndef") {
         if (skipping_) {
@@ -145,6 +198,7 @@ void SceneParser::directive_else(const Token& hash, const Token& keyword) {
     if (cond_.empty() || cond_.back().frame_id != current_frame_id()) {
         fail(hash, "#else without #if, #ifdef, #ifndef or #switch");
     }
+    check_not_busy(hash, keyword);
     CondEntry& top = cond_.back();
     switch (top.type) {
         case Cond::IfTrue:
@@ -163,42 +217,64 @@ void SceneParser::directive_else(const Token& hash, const Token& keyword) {
         default:
             fail(hash, "#else inside '" + top.directive + "' opened at " + place(top.loc, hash));
     }
-    (void)keyword;
 }
 
 void SceneParser::directive_elseif(const Token& hash, const Token& keyword) {
     if (cond_.empty() || cond_.back().frame_id != current_frame_id()) {
         fail(hash, "#elseif without #if");
     }
+    check_not_busy(hash, keyword);
     switch (cond_.back().type) {
         case Cond::IfTrue:
             cond_.back().type = Cond::SkipTilEnd;
             skip_tokens(Cond::SkipTilEnd);
             break;
-        case Cond::IfFalse:
-            if (std::abs(parse_cond_param()) > kEpsilon) cond_.back().type = Cond::IfTrue;
+        case Cond::IfFalse: {
+            const double v =
+                read_param_of_top(hash, "the condition of '#elseif' at " + place(hash.loc(), hash),
+                                  [&] { return parse_cond_param(); });
+            if (std::abs(v) > kEpsilon) cond_.back().type = Cond::IfTrue;
             break;
+        }
         case Cond::SkipTilEnd:
             break;
         default:
             fail(hash, "#elseif inside '" + cond_.back().directive + "' opened at " +
                            place(cond_.back().loc, hash));
     }
-    (void)keyword;
 }
 
 void SceneParser::directive_end(const Token& hash, const Token& keyword) {
     if (cond_.empty() || cond_.back().frame_id != current_frame_id()) {
         fail(hash, "#end without #if, #ifdef, #ifndef, #while, #for, #switch or #macro");
     }
+    check_not_busy(hash, keyword);
     CondEntry& top = cond_.back();
+    const int depth = static_cast<int>(directives_.size());  // this #end's included
+    if ((top.type == Cond::While || top.type == Cond::For) && depth != top.directive_depth) {
+        // Going back to the loop's start here would begin, in the middle of a directive (a
+        // #declare whose value the #end cuts), the whole body again: inside itself.
+        if (depth > top.directive_depth) {
+            const ActiveDirective& cut = directives_[top.directive_depth - 1];
+            fail(hash, "'#end' of the '" + top.directive + "' at " + place(top.loc, hash) +
+                           " comes inside the '" + cut.keyword + "' at " + place(cut.loc, hash) +
+                           ": a loop must end after the directives in it");
+        }
+        fail(hash, "'#end' of the '" + top.directive + "' at " + place(top.loc, hash) +
+                       " comes after the directive it was opened in has ended");
+    }
     switch (top.type) {
         case Cond::While: {
             Frame& frame = frames_.back();
             frame.pos = top.loop_pos;
-            if (std::abs(parse_cond_param()) <= kEpsilon) {
+            const double v =
+                read_param_of_top(hash, "the condition of '#while' at " + place(top.loc, hash),
+                                  [&] { return parse_cond_param(); });
+            if (std::abs(v) <= kEpsilon) {
                 cond_.back().type = Cond::SkipTilEnd;
                 skip_tokens(Cond::SkipTilEnd);
+            } else {
+                count_loop_pass(cond_.back(), hash);
             }
             break;
         }
@@ -218,6 +294,8 @@ void SceneParser::directive_end(const Token& hash, const Token& keyword) {
             if (done) {
                 top.type = Cond::SkipTilEnd;
                 skip_tokens(Cond::SkipTilEnd);
+            } else {
+                count_loop_pass(top, hash);
             }
             break;
         }
@@ -231,7 +309,6 @@ void SceneParser::directive_end(const Token& hash, const Token& keyword) {
             cond_.pop_back();
             break;
     }
-    (void)keyword;
 }
 
 void SceneParser::directive_while(const Token& hash, const Token& keyword) {
@@ -239,9 +316,14 @@ void SceneParser::directive_while(const Token& hash, const Token& keyword) {
     // The condition is read again at every #end.
     std::size_t pos = lookahead_.empty() ? frames_.back().pos : lookahead_.front().index;
     cond_.back().loop_pos = pos;
-    if (std::abs(parse_cond_param()) <= kEpsilon) {
+    const double v =
+        read_param_of_top(hash, "the condition of '#while' at " + place(hash.loc(), hash),
+                          [&] { return parse_cond_param(); });
+    if (std::abs(v) <= kEpsilon) {
         cond_.back().type = Cond::SkipTilEnd;
         skip_tokens(Cond::SkipTilEnd);
+    } else {
+        count_loop_pass(cond_.back(), hash);
     }
 }
 
@@ -270,6 +352,8 @@ void SceneParser::directive_for(const Token& hash, const Token& keyword) {
     if (!run) {
         e.type = Cond::SkipTilEnd;
         skip_tokens(Cond::SkipTilEnd);
+    } else {
+        count_loop_pass(e, hash);
     }
     (void)close;
 }
@@ -292,6 +376,7 @@ void SceneParser::directive_case(const Token& hash, const Token& keyword) {
     if (cond_.empty() || cond_.back().frame_id != current_frame_id()) {
         fail(hash, "#" + keyword.text() + " outside #switch");
     }
+    check_not_busy(hash, keyword);
     CondEntry& top = cond_.back();
     if (top.type == Cond::SkipTilEnd) return;
     bool from_switch = top.type == Cond::Switch;
@@ -299,22 +384,18 @@ void SceneParser::directive_case(const Token& hash, const Token& keyword) {
         fail(hash, "#" + keyword.text() + " inside '" + top.directive + "' opened at " +
                        place(top.loc, hash));
     }
-    bool match;
-    {
-        ScopedFlag not_skipping(skipping_, false);
-        if (keyword.is_word("case")) {
-            double v = parse_float_param();
-            match = std::abs(v - cond_.back().switch_value) < kEpsilon;
-        } else {
+    const double s = top.switch_value;
+    const bool match = read_param_of_top(
+        hash, "the value of '#" + keyword.text() + "' at " + place(hash.loc(), hash), [&] {
+            ScopedFlag not_skipping(skipping_, false);
+            if (keyword.is_word("case")) return std::abs(parse_float_param() - s) < kEpsilon;
             expect_punct("(", "after #range");
-            double lo = parse_float();
+            const double lo = parse_float();
             accept_comma();
-            double hi = parse_float();
+            const double hi = parse_float();
             expect_punct(")", "after the #range bounds");
-            double s = cond_.back().switch_value;
-            match = s >= lo && s <= hi;
-        }
-    }
+            return s >= lo && s <= hi;
+        });
     CondEntry& entry = cond_.back();
     if (from_switch) {
         entry.type = match ? Cond::CaseTrue : Cond::CaseFalse;
@@ -326,6 +407,7 @@ void SceneParser::directive_case(const Token& hash, const Token& keyword) {
 }
 
 void SceneParser::directive_break(const Token& hash, const Token& keyword) {
+    check_not_busy(hash, keyword);
     while (true) {
         if (!cond_.empty() && cond_.back().frame_id == current_frame_id()) {
             Cond type = cond_.back().type;
@@ -350,7 +432,6 @@ void SceneParser::directive_break(const Token& hash, const Token& keyword) {
         }
         fail(hash, "#break outside #while, #for, #switch or a macro");
     }
-    (void)keyword;
 }
 
 }  // namespace mirage::scene_detail

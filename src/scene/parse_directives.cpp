@@ -1,8 +1,6 @@
 // The directives that are not conditionals: #macro and macro calls, #declare, #local,
 // #undef, #include, #version, #debug, #warning, #error and #default.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "scene/keywords.h"
 #include "scene/scene_parser.h"
@@ -12,18 +10,12 @@ namespace {
 
 constexpr std::size_t kMaxIncludeDepth = 64;
 
-bool read_text_file(const std::string& path, std::string& text) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
-    return true;
-}
-
-bool is_regular_file(const std::string& path) {
+// Where an include is looked for: anything but a directory counts as found, so that a
+// device or a pipe named in #include is refused by what reads it with a message saying so.
+bool is_candidate(const std::string& path) {
     std::error_code ec;
-    return std::filesystem::is_regular_file(path, ec);
+    const auto status = std::filesystem::status(path, ec);
+    return !ec && std::filesystem::exists(status) && !std::filesystem::is_directory(status);
 }
 
 std::string parent_directory(const std::string& path) {
@@ -154,7 +146,7 @@ void SceneParser::directive_include(const Token& hash, const Token& keyword) {
     std::string found;
     if (std::filesystem::path(name).is_absolute()) {
         searched.push_back(name);
-        if (is_regular_file(name)) found = name;
+        if (is_candidate(name)) found = name;
     } else {
         std::string dir = parent_directory(frames_.back().file->path);
         std::vector<std::string> dirs{dir};
@@ -162,7 +154,7 @@ void SceneParser::directive_include(const Token& hash, const Token& keyword) {
         for (const std::string& d : dirs) {
             std::string candidate = join_path(d, name);
             searched.push_back(d.empty() ? "." : d);
-            if (is_regular_file(candidate)) {
+            if (is_candidate(candidate)) {
                 found = candidate;
                 break;
             }
@@ -177,8 +169,7 @@ void SceneParser::directive_include(const Token& hash, const Token& keyword) {
     if (auto it = file_cache_.find(found); it != file_cache_.end()) {
         file = it->second;
     } else {
-        std::string text;
-        if (!read_text_file(found, text)) fail(at, "cannot read include file '" + found + "'");
+        std::string text = read_source(found, &at);
         // Lex errors in the included file name the include chain.
         auto context = std::make_shared<FrameContext>();
         context->kind = FrameContext::Kind::Include;

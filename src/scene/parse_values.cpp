@@ -151,20 +151,27 @@ Value SceneParser::parse_array_declaration(const Token& keyword) {
         ScopedFlag defer(defer_directives_, true);
         return peek_punct(p);
     };
+    const std::size_t max_elements = options_.limits.max_array_elements;
+    std::size_t total = 1;
     while (peek_deferred("[")) {
         Token open = next();
         double v = parse_float();
-        int n = static_cast<int>(v + kEpsilon);
-        if (n <= 0) fail(open, "an array dimension must be at least 1");
+        if (!(v + kEpsilon >= 1.0)) fail(open, "an array dimension must be at least 1");
+        // Checked before it is multiplied in: the product of the sizes cannot overflow.
+        if (v + kEpsilon >= static_cast<double>(max_elements) + 1.0 ||
+            total * static_cast<std::size_t>(v + kEpsilon) > max_elements) {
+            fail(open, "an array of more than " + std::to_string(max_elements) +
+                           " elements, mirage's limit");
+        }
+        const int n = static_cast<int>(v + kEpsilon);
+        total *= static_cast<std::size_t>(n);
         array.sizes.push_back(n);
         expect_punct("]", "after an array dimension");
     }
     if (array.sizes.empty()) {
         fail(peek(0), "expected '[' and a size after 'array', got " + describe(peek(0)));
     }
-    std::size_t total = 1;
-    for (int s : array.sizes) total *= static_cast<std::size_t>(s);
-    if (total > 100000000) fail(keyword, "array too large");
+    count_array_elements(total, keyword);
     array.elements.resize(total);
     if (peek_deferred("{")) parse_array_initializer(array, 0, 0, keyword);
     return Value{std::move(array)};
@@ -172,6 +179,7 @@ Value SceneParser::parse_array_declaration(const Token& keyword) {
 
 void SceneParser::parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t base,
                                           const Token& name) {
+    Nested nested(*this, peek(0));
     Token open = expect_punct("{", "to start the initializer of an array dimension");
     std::size_t stride = 1;
     for (std::size_t d = dim + 1; d < array.sizes.size(); ++d) {

@@ -1,11 +1,39 @@
 // The scene parser's symbol tables: looking names up, #declare and #local, and the values
 // identifiers and array elements stand for.
+#include <algorithm>
+
 #include "scene/scene_parser.h"
+#include "util/format.h"
 
 namespace mirage::scene_detail {
 namespace {
 
 constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
+
+// What a value holds: its objects (shapes, unions, lights) and array elements, and how deeply
+// they nest.
+struct Weight {
+    std::size_t objects = 0, elements = 0;
+    int depth = 0;
+};
+
+void weigh_object(const ObjectNode& object, int depth, Weight& w) {
+    ++w.objects;
+    w.depth = std::max(w.depth, depth);
+    for (const ObjectNode& child : object.children) weigh_object(child, depth + 1, w);
+}
+
+void weigh(const Value& value, int depth, Weight& w) {
+    if (const auto* object = std::get_if<ObjectNode>(&value.data)) {
+        weigh_object(*object, depth, w);
+    } else if (const auto* array = std::get_if<ArrayValue>(&value.data)) {
+        w.elements += array->elements.size();
+        w.depth = std::max(w.depth, depth);
+        for (const auto& e : array->elements) {
+            if (e) weigh(*e, depth + 1, w);
+        }
+    }
+}
 
 }  // namespace
 
@@ -70,11 +98,11 @@ std::shared_ptr<Value>& SceneParser::index_array(ArrayValue& array, const Token&
     for (std::size_t d = 0; d < array.sizes.size(); ++d) {
         Token open = expect_punct("[", "for an index of the array '" + name.text() + "'");
         double v = parse_float();
-        int k = static_cast<int>(v + kEpsilon);
-        if (v < -kEpsilon || k < 0 || k >= array.sizes[d]) {
-            fail(open, "index " + format_str(v, 0, -1) + " of the array '" + name.text() +
+        if (!(v >= -kEpsilon && v + kEpsilon < array.sizes[d])) {
+            fail(open, "index " + shortest(v) + " of the array '" + name.text() +
                            "' is out of range 0 to " + std::to_string(array.sizes[d] - 1));
         }
+        const int k = static_cast<int>(v + kEpsilon);
         index = index * static_cast<std::size_t>(array.sizes[d]) + static_cast<std::size_t>(k);
         expect_punct("]", "after an array index");
     }
@@ -84,15 +112,26 @@ std::shared_ptr<Value>& SceneParser::index_array(ArrayValue& array, const Token&
 Value SceneParser::identifier_value(const Token& name) {
     std::shared_ptr<Symbol> sym = name.symbol ? name.symbol : lookup(name.text());
     if (!sym) fail(name, "undefined identifier '" + name.text() + "'");
+    const Value* value = &sym->value;
     if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
         if (peek_array_index()) {
             Token at = peek(0);
             std::shared_ptr<Value>& e = index_array(*a, name);
             if (!e) fail(at, "element of the array '" + name.text() + "' used before it is set");
-            return deep_copy(*e);
+            value = e.get();
         }
     }
-    return deep_copy(sym->value);
+    // A copy costs what it holds: objects and array elements count towards the limits, and
+    // nothing nests deeper than the parser itself could (a #declare A[0] = A; in a loop would).
+    Weight w;
+    weigh(*value, 1, w);
+    if (w.depth > options_.limits.max_nesting) {
+        fail(name, "'" + name.text() + "' holds objects or arrays nested more than " +
+                       std::to_string(options_.limits.max_nesting) + " deep, mirage's limit");
+    }
+    count_objects(w.objects, name);
+    count_array_elements(w.elements, name);
+    return deep_copy(*value);
 }
 
 }  // namespace mirage::scene_detail

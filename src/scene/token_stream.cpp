@@ -1,16 +1,119 @@
 // The token stream of the scene parser, after POV-Ray 3.7's tokenize.cpp: the frames being
 // read (main file, includes, macro bodies), processed tokens with directives carried out and
 // macros expanded as they are fetched, and the messages that name a token's place.
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
 #include "scene/diagnostics.h"
 #include "scene/keywords.h"
 #include "scene/scene_parser.h"
+#include "util/format.h"
 
 namespace mirage::scene_detail {
 namespace {
 
 constexpr std::size_t kMaxFrames = 1000;
 
+std::string bytes_text(std::uintmax_t n) {
+    std::string s = std::to_string(n) + " bytes";
+    if (n >= (1u << 20) && n % (1u << 20) == 0) s += " (" + std::to_string(n >> 20) + " MiB)";
+    return s;
+}
+
 }  // namespace
+
+// ---------------------------------------------------------------------------------------
+// Limits
+
+SceneParser::Nested::Nested(SceneParser& parser, const Token& at) : parser_(parser) {
+    if (parser_.nesting_ >= parser_.options_.limits.max_nesting) {
+        parser_.fail(at, "nesting too deep: more than " +
+                             std::to_string(parser_.options_.limits.max_nesting) +
+                             " levels of parentheses, objects and directives inside each other");
+    }
+    ++parser_.nesting_;
+}
+
+void SceneParser::count_objects(std::size_t count, const Token& at) {
+    objects_ += count;
+    if (objects_ > options_.limits.max_objects) {
+        fail(at, "more than " + std::to_string(options_.limits.max_objects) +
+                     " objects parsed or copied in all, mirage's limit");
+    }
+}
+
+void SceneParser::count_array_elements(std::size_t count, const Token& at) {
+    array_elements_ += count;
+    if (array_elements_ > options_.limits.max_total_array_elements) {
+        fail(at, "more than " + std::to_string(options_.limits.max_total_array_elements) +
+                     " array elements made or copied in all, mirage's limit");
+    }
+}
+
+void SceneParser::check_string_size(const std::string& s, const Token& at) const {
+    if (s.size() > options_.limits.max_string_bytes) {
+        fail(at, "a string of " + std::to_string(s.size()) + " bytes, more than the " +
+                     bytes_text(options_.limits.max_string_bytes) + " mirage keeps");
+    }
+}
+
+int SceneParser::int_value(double v, const Token& at, const std::string& what, int lo,
+                           int hi) const {
+    if (!(v >= lo && v <= hi)) {
+        fail(at, what + " " + shortest(v) + " is out of range: it must be from " +
+                     std::to_string(lo) + " to " + std::to_string(hi));
+    }
+    return static_cast<int>(v);
+}
+
+std::string SceneParser::read_source(const std::string& path, const Token* at) {
+    auto refuse = [&](const std::string& why) {
+        if (at) fail(*at, "include file '" + path + "' " + why);
+        throw ParseFailure{path + ": " + why};
+    };
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) {
+        refuse(std::string("cannot be opened: ") +
+               (ec ? ec.message() : std::string(std::strerror(ENOENT))));
+    }
+    if (fs::is_directory(status)) refuse("is a directory, not a scene file");
+    if (!fs::is_regular_file(status)) {
+        refuse("is not a regular file (a device, a pipe or a socket?): scenes are read from files");
+    }
+    const ParseLimits& limits = options_.limits;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) refuse("cannot be read: " + ec.message());
+    if (size > limits.max_file_bytes) {
+        refuse("is " + bytes_text(size) + ", more than the " + bytes_text(limits.max_file_bytes) +
+               " mirage reads from one file");
+    }
+    if (source_bytes_ + size > limits.max_source_bytes) {
+        refuse("would bring the files read to " + bytes_text(source_bytes_ + size) +
+               ", more than the " + bytes_text(limits.max_source_bytes) + " mirage reads in all");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) refuse(std::string("cannot be opened: ") + std::strerror(errno));
+    // Read in pieces, so that a file that grows meanwhile is still cut at the limit.
+    std::string text;
+    text.reserve(static_cast<std::size_t>(size));
+    char piece[1 << 16];
+    while (in) {
+        in.read(piece, sizeof piece);
+        text.append(piece, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > limits.max_file_bytes) {
+            refuse("is more than the " + bytes_text(limits.max_file_bytes) +
+                   " mirage reads from one file");
+        }
+    }
+    if (in.bad()) refuse(std::string("cannot be read: ") + std::strerror(errno));
+    source_bytes_ += text.size();
+    scene_.files.push_back(path);
+    return text;
+}
 
 SceneParser::SceneParser(const ParseOptions& options) : options_(options) {
     tables_.emplace_back();
@@ -66,21 +169,22 @@ void SceneParser::add_message(const Token& at, const std::string& kind, const st
 
 std::string SceneParser::describe(const Token& t) {
     if (t.deferred_directive) return "'#'";
+    // A long word is shown by its start.
+    const std::string text = t.text().size() <= 40 ? t.text() : t.text().substr(0, 40) + "...";
     switch (t.kind()) {
         case TokenKind::EndOfFile:
             return "end of file";
         case TokenKind::String:
-            return "string \"" + t.text() + "\"";
+            return "string \"" + text + "\"";
         case TokenKind::Number:
         case TokenKind::Punct:
-            return "'" + t.text() + "'";
+            return "'" + text + "'";
         case TokenKind::Identifier:
-            if (is_reserved_word(t.text())) return "'" + t.text() + "'";
-            if (t.symbol)
-                return value_type_name(t.symbol->value) + " identifier '" + t.text() + "'";
-            return "undefined identifier '" + t.text() + "'";
+            if (is_reserved_word(t.text())) return "'" + text + "'";
+            if (t.symbol) return value_type_name(t.symbol->value) + " identifier '" + text + "'";
+            return "undefined identifier '" + text + "'";
     }
-    return "'" + t.text() + "'";
+    return "'" + text + "'";
 }
 
 std::string SceneParser::place(const FileLoc& loc, const Token& relative_to) {
