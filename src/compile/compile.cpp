@@ -10,19 +10,18 @@
 #include <thread>
 
 #include "atmosphere/exact_ray.h"
-#include "load/library_paths.h"
 #include "compile/pixel_check.h"
 #include "image/image_io.h"
 #include "layers/band_tracer3d.h"
 #include "layers/fit.h"
 #include "layers/outcome.h"
+#include "load/mirage_scene.h"
 #include "pov/emit_layers.h"
 #include "scene/camera.h"
-#include "scene/parser.h"
 #include "trace/scene_accel.h"
-#include "util/atomic_file.h"
 #include "util/check.h"
 #include "util/format.h"
+#include "util/output_set.h"
 
 namespace fs = std::filesystem;
 
@@ -132,55 +131,50 @@ Image error_map_image(const CompileReport& r) {
 
 Result<CompileReport> compile_scene(const CompileOptions& opt) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (opt.width < 1 || opt.height < 1 || opt.width > 20000 || opt.height > 20000)
-        return make_error("image size " + std::to_string(opt.width) + "x" +
-                          std::to_string(opt.height) + " must be 1 to 20000 pixels each way");
-    CompileReport rep;
-    rep.scene = opt.scene;
-    rep.name = scene_name(opt.scene);
-    rep.width = opt.width;
-    rep.height = opt.height;
-
-    ParseOptions po;
-    po.library_paths = opt.library_paths;
-    for (const auto& p : default_library_paths(opt.scene)) po.library_paths.push_back(p);
-    po.image_width = opt.width;
-    po.image_height = opt.height;
-    po.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
-    auto parsed = parse_scene_file(opt.scene, po);
-    if (!parsed) return parsed.error();
-    const Scene& scene = *parsed;
-    auto settings_r = read_atmosphere_settings(scene);
-    if (!settings_r) return settings_r.error();
-    AtmosphereSettings settings = *settings_r;
-    if (opt.tolerance_px) {
-        if (!(*opt.tolerance_px > 0.0))
-            return make_error("--tolerance " + shortest(*opt.tolerance_px) +
-                              ": must be > 0 pixels");
-        settings.tolerance_px = *opt.tolerance_px;
-    }
+    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
+        return make_error("--error-map " + opt.error_map +
+                          ": the error map is written as OpenEXR, name it .exr");
+    SceneLoadOptions lo;
+    lo.scene = opt.scene;
+    lo.width = opt.width;
+    lo.height = opt.height;
+    lo.library_paths = opt.library_paths;
+    lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    lo.tolerance_px = opt.tolerance_px;
+    lo.layers = opt.layers;
+    lo.layer_count = opt.layer_count;
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    const Scene& scene = loaded->scene;
+    const ParseOptions& po = loaded->parse_options;
+    AtmosphereSettings settings = loaded->settings;
     if (opt.profile) {
         settings.profile = *opt.profile;
         settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
         settings.declared = true;
     }
-    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
-        return make_error("--error-map " + opt.error_map +
-                          ": the error map is written as OpenEXR, name it .exr");
-    if (opt.layers) settings.layers = *opt.layers;
-    if (opt.layer_count) settings.layer_count = *opt.layer_count;
+    // Every output is written at the end, all or none, and none over a file the scene was
+    // read from; those named by the options are refused at once.
+    OutputSet outputs(scene.files);
+    for (const std::string& named : {opt.error_map, opt.image})
+        if (!named.empty())
+            if (auto s = outputs.check(named); !s) return s.error();
+    CompileReport rep;
+    rep.scene = opt.scene;
+    rep.name = scene_name(opt.scene);
+    rep.width = opt.width;
+    rep.height = opt.height;
     rep.tolerance_px = settings.tolerance_px;
     rep.atmosphere = settings.declared ? settings.profile_label : "none declared";
 
     const Camera& cam = scene.camera;
     const double eye_y = cam.location.y;
     if (!(eye_y > 0.0)) {
-        const std::string at = cam.loc.file.empty()
-                                   ? scene.file + ": "
-                                   : cam.loc.file + ":" + std::to_string(cam.loc.line) + ":" +
-                                         std::to_string(cam.loc.column) + ": ";
-        return make_error(at + "the camera is at y = " + shortest(eye_y) +
-                          ": it must be above the ground (y = 0) for an atmosphere over it");
+        const std::string at = scene.has_camera ? to_string(cam.loc) : scene.file;
+        return make_error(
+            at + ": the camera is at y = " + shortest(eye_y) +
+            (scene.has_camera ? "" : " (the scene has no camera: POV-Ray's default)") +
+            ": it must be above the ground (y = 0) for an atmosphere over it");
     }
 
     // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
@@ -500,9 +494,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.image_path = opt.image.empty() ? (abs_dir.parent_path() / (rep.name + ".png")).string()
                                        : fs::absolute(opt.image).string();
     const std::string scene_abs = fs::absolute(opt.scene).string();
-    if (fs::equivalent(scene_abs, rep.include_path, ec) ||
-        fs::equivalent(scene_abs, rep.ini_path, ec))
-        return make_error(opt.scene + ": the outputs would overwrite the template");
+    if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
 
     LayerEmitSettings es;
     es.camera_y = eye_y;
@@ -533,10 +525,11 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         {rep.report_path, report_json(rep)},
     };
     for (const auto& [path, text] : files)
-        if (auto s = write_file_atomic(path, text); !s) return s.error();
+        if (auto s = outputs.write_text(path, text); !s) return s.error();
     if (!opt.error_map.empty()) {
-        if (auto s = write_exr(error_map_image(rep), opt.error_map); !s) return s.error();
+        if (auto s = write_exr(error_map_image(rep), opt.error_map, &outputs); !s) return s.error();
     }
+    if (auto s = outputs.commit(); !s) return s.error();
     return rep;
 }
 
