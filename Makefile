@@ -12,6 +12,9 @@
 #   make compare         band models against the continuous tracer: error against run time
 #                        (build/compare/NAME/: results.csv, error_vs_time.png, contact_sheet.png,
 #                        summary.md; SCENE, and W H or CW CH, default 320x240: a few minutes)
+#   make fuzz            libFuzzer on the scene parser and the Mirage_ settings reader for
+#                        FUZZ_SECONDS (default 600), in build-fuzz/ with clang; installs
+#                        FUZZ_PACKAGES first (make test needs none of them)
 #   make clean
 
 BUILD   ?= build
@@ -23,14 +26,18 @@ TOL     ?=
 CW      ?= $(if $(filter command line,$(origin W)),$(W),320)
 CH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+FUZZ_SECONDS ?= 600
+FUZZ_BUILD   ?= build-fuzz
 NAME    := $(basename $(notdir $(SCENE)))
 
 # Debian 12 packages the build, the tests and the renders need.
 PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev openimageio-tools \
             libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox \
             fonts-dejavu-core
+# What make fuzz needs besides: clang and its libFuzzer and sanitizer runtimes.
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev python3
 
-.PHONY: all deps configure build test render trace bench compare clean
+.PHONY: all deps configure build test render trace bench compare fuzz clean
 
 all: build
 
@@ -68,5 +75,19 @@ compare: build
 bench: build
 	$(BUILD)/mirage_bench
 
+# The corpus grows in $(FUZZ_BUILD)/corpus from run to run; a crashing input is written to
+# $(FUZZ_BUILD)/artifacts/ (and belongs in tests/fuzz/crashes/ once fixed).
+fuzz: deps
+	@sh tools/install-deps.sh $(FUZZ_PACKAGES)
+	@test -f $(FUZZ_BUILD)/CMakeCache.txt || cmake -S . -B $(FUZZ_BUILD) \
+	    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 -DMIRAGE_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target mirage_scene_fuzzer
+	@mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
+	python3 tools/fuzz_corpus.py $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/scene.dict
+	$(FUZZ_BUILD)/mirage_scene_fuzzer $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds \
+	    -dict=$(FUZZ_BUILD)/scene.dict -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
+	    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	    -artifact_prefix=$(FUZZ_BUILD)/artifacts/
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(FUZZ_BUILD)
