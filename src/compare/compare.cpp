@@ -478,12 +478,10 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
                           "(Debian: apt-get install povray)");
     // The scene is read first: a scene that does not load fails here, with its place, and
     // its files are the inputs no result may replace.
-    SceneLoadOptions lo;
-    lo.scene = opt.scene;
-    lo.width = opt.width;
-    lo.height = opt.height;
-    lo.library_paths = opt.library_paths;
-    auto loaded = load_mirage_scene(lo);
+    auto loaded = load_mirage_scene({.scene = opt.scene,
+                                     .width = opt.width,
+                                     .height = opt.height,
+                                     .library_paths = opt.library_paths});
     if (!loaded) return loaded.error();
     sw.outputs.protect(loaded->scene.files);
     std::error_code ec;

@@ -53,6 +53,15 @@ auto SceneParser::read_param_of_top(const Token& hash, const std::string& busy_w
     return value;
 }
 
+void SceneParser::go_round_or_skip(bool again, const Token& hash) {
+    if (again) {
+        count_loop_pass(cond_.back(), hash);
+        return;
+    }
+    cond_.back().type = Cond::SkipTilEnd;
+    skip_tokens(Cond::SkipTilEnd);
+}
+
 void SceneParser::count_loop_pass(const CondEntry& loop, const Token& at) {
     if (++loop_passes_ <= options_.limits.max_loop_passes) return;
     const Frame& frame = frames_.back();  // a loop lies in one frame: this one
@@ -270,12 +279,7 @@ void SceneParser::directive_end(const Token& hash, const Token& keyword) {
             const double v =
                 read_param_of_top(hash, "the condition of '#while' at " + place(top.loc, hash),
                                   [&] { return parse_cond_param(); });
-            if (std::abs(v) <= kEpsilon) {
-                cond_.back().type = Cond::SkipTilEnd;
-                skip_tokens(Cond::SkipTilEnd);
-            } else {
-                count_loop_pass(cond_.back(), hash);
-            }
+            go_round_or_skip(std::abs(v) > kEpsilon, hash);
             break;
         }
         case Cond::For: {
@@ -291,12 +295,7 @@ void SceneParser::directive_end(const Token& hash, const Token& keyword) {
                         (top.for_step < 0 && n->v[0] < top.for_end - kEpsilon);
             // Back to the body either way: when done, POV-Ray skips it to this #end.
             frames_.back().pos = top.loop_pos;
-            if (done) {
-                top.type = Cond::SkipTilEnd;
-                skip_tokens(Cond::SkipTilEnd);
-            } else {
-                count_loop_pass(top, hash);
-            }
+            go_round_or_skip(!done, hash);
             break;
         }
         case Cond::DeclaringMacro:
@@ -319,12 +318,7 @@ void SceneParser::directive_while(const Token& hash, const Token& keyword) {
     const double v =
         read_param_of_top(hash, "the condition of '#while' at " + place(hash.loc(), hash),
                           [&] { return parse_cond_param(); });
-    if (std::abs(v) <= kEpsilon) {
-        cond_.back().type = Cond::SkipTilEnd;
-        skip_tokens(Cond::SkipTilEnd);
-    } else {
-        count_loop_pass(cond_.back(), hash);
-    }
+    go_round_or_skip(std::abs(v) > kEpsilon, hash);
 }
 
 void SceneParser::directive_for(const Token& hash, const Token& keyword) {
@@ -349,12 +343,7 @@ void SceneParser::directive_for(const Token& hash, const Token& keyword) {
     e.for_step = step;
     e.loop_pos = lookahead_.empty() ? frames_.back().pos : lookahead_.front().index;
     bool run = (step > 0 && start < end + kEpsilon) || (step < 0 && start > end - kEpsilon);
-    if (!run) {
-        e.type = Cond::SkipTilEnd;
-        skip_tokens(Cond::SkipTilEnd);
-    } else {
-        count_loop_pass(e, hash);
-    }
+    go_round_or_skip(run, hash);
     (void)close;
 }
 

@@ -262,6 +262,9 @@ class SceneParser {
     template <class Read>
     auto read_param_of_top(const Token& hash, const std::string& busy_with, Read read);
     void count_loop_pass(const CondEntry& loop, const Token& at);
+    /// The loop on top of the conditional stack runs its body once more (a pass counted),
+    /// or, when not `again`, its body is skipped to its #end.
+    void go_round_or_skip(bool again, const Token& hash);
     /// Fails when the top entry of this frame is busy (CondEntry::busy).
     void check_not_busy(const Token& hash, const Token& keyword) const;
     void skip_tokens(Cond type);

@@ -11,17 +11,11 @@ namespace mirage {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::quoted;
 using testing::run_tool;
 using testing::test_dir;
 
 const std::string kDesert = std::string(MIRAGE_SOURCE_DIR) + "/scenes/desert.pov";
-
-std::string quoted(const fs::path& p) {
-    std::string q = "'";
-    q += p.string();
-    q += "'";
-    return q;
-}
 
 TEST(CompareCli, ReportsEachSettingAndWhereTheResultsAre) {
     if (!testing::povray_available()) GTEST_SKIP() << "povray is not on PATH";

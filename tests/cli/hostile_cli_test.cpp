@@ -14,12 +14,11 @@ namespace mirage {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::quoted;
 using testing::run_tool;
 using testing::test_dir;
 
 const std::string kDesert = std::string(MIRAGE_SOURCE_DIR) + "/scenes/desert.pov";
-
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 std::string read(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);

@@ -14,15 +14,9 @@ namespace mirage {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::quoted;
 using testing::run_tool;
 using testing::test_dir;
-
-std::string quoted(const fs::path& p) {
-    std::string q = "'";
-    q += p.string();
-    q += "'";
-    return q;
-}
 
 void write_text(const fs::path& path, const std::string& text) {
     std::ofstream out(path);
