@@ -1,6 +1,7 @@
 // The directives that are not conditionals: #macro and macro calls, #declare, #local,
 // #undef, #include, #version, #debug, #warning, #error and #default.
 #include <filesystem>
+#include <optional>
 
 #include "scene/keywords.h"
 #include "scene/scene_parser.h"
@@ -112,14 +113,24 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
         fail(name, "cannot #" + keyword.text() + " '" + name.text() + "': it is a reserved word");
     }
     std::shared_ptr<Symbol> sym = lookup(name.text());
-    std::shared_ptr<Value>* element = nullptr;
+    // An array element is remembered by its index: the directives in the value may declare
+    // the array anew, and a pointer into the old one would dangle.
+    std::optional<std::size_t> element;
+    const void* elements = nullptr;
     if (sym && std::holds_alternative<ArrayValue>(sym->value.data) && peek_array_index()) {
-        element = &index_array(std::get<ArrayValue>(sym->value.data), name);
+        ArrayValue& array = std::get<ArrayValue>(sym->value.data);
+        element = static_cast<std::size_t>(&index_array(array, name) - array.elements.data());
+        elements = array.elements.data();
     }
     expect_punct("=", "after '" + name.text() + "'");
     Value value = parse_rvalue(name, false);
     if (element) {
-        *element = std::make_shared<Value>(std::move(value));
+        auto* array = std::get_if<ArrayValue>(&sym->value.data);
+        if (!array || array->elements.data() != elements || *element >= array->elements.size()) {
+            fail(name, "the array '" + name.text() +
+                           "' was declared anew while the value of its element was read");
+        }
+        array->elements[*element] = std::make_shared<Value>(std::move(value));
     } else {
         declare(name, std::move(value), local);
     }

@@ -143,6 +143,17 @@ TEST(Limits, LoopsHaveAPassLimitThatNamesTheLoop) {
     EXPECT_DOUBLE_EQ(testing::float_symbol(within, "N"), 900.0);
 }
 
+TEST(Limits, AnArrayDeclaredAnewInItsElementsValueIsAnError) {
+    // The element's place was kept as a pointer into the array the value's own #declare
+    // freed (found by the fuzz target: heap use after free).
+    EXPECT_EQ(first_line(parse_error("#declare A = array[2]\n#declare A[0] = #declare A = "
+                                     "array[2] 5;\n")),
+              "scene.pov:2:10: the array 'A' was declared anew while the value of its element "
+              "was read");
+    Scene s = parse_ok("#declare A = array[2]\n#declare A[1] = 5;\n#declare B = A[1];\n");
+    EXPECT_DOUBLE_EQ(testing::float_symbol(s, "B"), 5.0);
+}
+
 TEST(Limits, ArraysAndStringsHaveASize) {
     EXPECT_EQ(first_line(parse_error("#declare A = array[1e9];")),
               "scene.pov:1:19: an array of more than 1000000 elements, mirage's limit");
