@@ -478,10 +478,8 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
                           "(Debian: apt-get install povray)");
     // The scene is read first: a scene that does not load fails here, with its place, and
     // its files are the inputs no result may replace.
-    auto loaded = load_mirage_scene({.scene = opt.scene,
-                                     .width = opt.width,
-                                     .height = opt.height,
-                                     .library_paths = opt.library_paths});
+    auto loaded =
+        load_mirage_scene(scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths));
     if (!loaded) return loaded.error();
     sw.outputs.protect(loaded->scene.files);
     std::error_code ec;

@@ -134,15 +134,12 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
         return make_error("--error-map " + opt.error_map +
                           ": the error map is written as OpenEXR, name it .exr");
-    auto loaded = load_mirage_scene({.scene = opt.scene,
-                                     .width = opt.width,
-                                     .height = opt.height,
-                                     .library_paths = opt.library_paths,
-                                     // the camera, the atmosphere and the extent are enough
-                                     .strict = false,
-                                     .tolerance_px = opt.tolerance_px,
-                                     .layers = opt.layers,
-                                     .layer_count = opt.layer_count});
+    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    lo.tolerance_px = opt.tolerance_px;
+    lo.layers = opt.layers;
+    lo.layer_count = opt.layer_count;
+    auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
     const Scene& scene = loaded->scene;
     const ParseOptions& po = loaded->parse_options;

@@ -25,6 +25,16 @@ Status check_options(const SceneLoadOptions& o) {
 
 }  // namespace
 
+SceneLoadOptions scene_load_options(const std::string& scene, int width, int height,
+                                    const std::vector<std::string>& library_paths) {
+    SceneLoadOptions o;
+    o.scene = scene;
+    o.width = width;
+    o.height = height;
+    o.library_paths = library_paths;
+    return o;
+}
+
 Status check_image_size(int width, int height) {
     if (width >= 1 && height >= 1 && width <= kMaxImageSide && height <= kMaxImageSide) return Ok{};
     return make_error("image size " + std::to_string(width) + "x" + std::to_string(height) +

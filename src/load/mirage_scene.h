@@ -44,6 +44,11 @@ struct MirageScene {
     ParseOptions parse_options;   // as the scene was parsed: every include directory in order
 };
 
+/// The options for `scene` rendered at width x height, the user's include directories
+/// searched first; the rest as SceneLoadOptions has them.
+SceneLoadOptions scene_load_options(const std::string& scene, int width, int height,
+                                    const std::vector<std::string>& library_paths);
+
 /// Checks an image size: 1 to kMaxImageSide pixels each way.
 Status check_image_size(int width, int height);
 

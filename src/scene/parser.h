@@ -28,8 +28,7 @@ namespace mirage {
 /// place and the limit: a hostile or broken scene never crashes the parser, hangs it or fills
 /// the memory (docs/robustness.md gives the reasons for the numbers).
 struct ParseLimits {
-    std::uintmax_t max_file_bytes = 16u << 20;    // one scene or include file, bytes
-    std::uintmax_t max_source_bytes = 64u << 20;  // all the files of a parse together, bytes
+    std::uintmax_t max_source_bytes = 16u << 20;  // the scene and its include files, bytes
     int max_nesting = 256;  // parentheses, objects, directives, conditionals inside each other
     std::int64_t max_loop_passes = 1'000'000;    // passes of all #while and #for loops together
     std::size_t max_array_elements = 1'000'000;  // elements of one array
@@ -51,7 +50,7 @@ struct ParseOptions {
 };
 
 /// Parses the scene file at `path` (shown in messages as given).  The file must be a regular
-/// file of at most ParseLimits::max_file_bytes; a directory, a device or a pipe is refused
+/// file (with its includes at most ParseLimits::max_source_bytes); a directory, a device or a pipe is refused
 /// with a message saying so.
 Result<Scene> parse_scene_file(const std::string& path, const ParseOptions& options);
 

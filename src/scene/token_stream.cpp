@@ -87,14 +87,12 @@ std::string SceneParser::read_source(const std::string& path, const Token* at) {
     const ParseLimits& limits = options_.limits;
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) refuse("cannot be read: " + ec.message());
-    if (size > limits.max_file_bytes) {
-        refuse("is " + bytes_text(size) + ", more than the " + bytes_text(limits.max_file_bytes) +
-               " mirage reads from one file");
-    }
-    if (source_bytes_ + size > limits.max_source_bytes) {
-        refuse("would bring the files read to " + bytes_text(source_bytes_ + size) +
-               ", more than the " + bytes_text(limits.max_source_bytes) + " mirage reads in all");
-    }
+    auto too_large = [&](std::uintmax_t bytes) {
+        refuse((source_bytes_ == 0 ? "is " : "would bring the files read to ") + bytes_text(bytes) +
+               ", more than the " + bytes_text(limits.max_source_bytes) +
+               " mirage reads (the scene and its include files together)");
+    };
+    if (source_bytes_ + size > limits.max_source_bytes) too_large(source_bytes_ + size);
     std::ifstream in(path, std::ios::binary);
     if (!in) refuse(std::string("cannot be opened: ") + std::strerror(errno));
     // Read in pieces, so that a file that grows meanwhile is still cut at the limit.
@@ -104,10 +102,8 @@ std::string SceneParser::read_source(const std::string& path, const Token* at) {
     while (in) {
         in.read(piece, sizeof piece);
         text.append(piece, static_cast<std::size_t>(in.gcount()));
-        if (text.size() > limits.max_file_bytes) {
-            refuse("is more than the " + bytes_text(limits.max_file_bytes) +
-                   " mirage reads from one file");
-        }
+        if (source_bytes_ + text.size() > limits.max_source_bytes)
+            too_large(source_bytes_ + text.size());
     }
     if (in.bad()) refuse(std::string("cannot be read: ") + std::strerror(errno));
     source_bytes_ += text.size();

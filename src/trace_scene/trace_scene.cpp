@@ -50,13 +50,10 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         }
     }
 
-    auto loaded = load_mirage_scene({.scene = opt.scene,
-                                     .width = opt.width,
-                                     .height = opt.height,
-                                     .library_paths = opt.library_paths,
-                                     // every object is rendered: none may be left out silently
-                                     .strict = true,
-                                     .tolerance_px = opt.tolerance_px});
+    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    lo.strict = true;  // the tracer renders every object: none may be left out silently
+    lo.tolerance_px = opt.tolerance_px;
+    auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
     const Scene& scene = loaded->scene;
     const AtmosphereSettings& settings = loaded->settings;

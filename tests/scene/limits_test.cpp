@@ -214,12 +214,13 @@ TEST_F(LimitsOnFiles, ASceneMustBeARegularFileOfBoundedSize) {
               "/dev/zero: is not a regular file (a device, a pipe or a socket?): scenes are read "
               "from files");
     ParseOptions small;
-    small.limits.max_file_bytes = 1000;
+    small.limits.max_source_bytes = 1000;
     const std::string big = write("big.pov", std::string(2000, ' '));
     auto r = parse_scene_file(big, small);
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.message(),
-              big + ": is 2000 bytes, more than the 1000 bytes mirage reads from one file");
+    EXPECT_EQ(r.message(), big +
+                               ": is 2000 bytes, more than the 1000 bytes mirage reads (the "
+                               "scene and its include files together)");
     // Includes: the same checks, named at the #include.
     EXPECT_EQ(first_line(parse_error("#include \"/dev/zero\"")),
               "scene.pov:1:10: include file '/dev/zero' is not a regular file (a device, a pipe "
@@ -229,7 +230,8 @@ TEST_F(LimitsOnFiles, ASceneMustBeARegularFileOfBoundedSize) {
     ASSERT_FALSE(inc.ok());
     EXPECT_EQ(first_line(inc.message()),
               main + ":1:10: include file '" + big +
-                  "' is 2000 bytes, more than the 1000 bytes mirage reads from one file");
+                  "' would bring the files read to 2019 bytes, more than the 1000 bytes mirage "
+                  "reads (the scene and its include files together)");
     // Every file read is listed: the scene first, then its includes.
     write("small.inc", "#declare A = 1;\n");
     const std::string top = write("top.pov", "#include \"small.inc\"\n#include \"small.inc\"\n");
