@@ -145,8 +145,9 @@ void run_vanishing(const PathOptions& o) {
     if (std::isnan(o.eye_height)) fail("give the eye height with --eye-height M");
     if (std::isnan(o.object_height)) fail("give the point's height with --object-height M");
     if (!std::isnan(o.elevation_deg) || !std::isnan(o.i_rad))
-        fail("--object-height asks for the rays that reach the point: give no --elevation-deg or "
-             "--i-rad");
+        fail(
+            "--object-height asks for the rays that reach the point: give no --elevation-deg or "
+            "--i-rad");
     if (!std::isnan(o.object_distance) &&
         !(o.object_distance > 0.0 && std::isfinite(o.object_distance)))
         fail("--object-distance " + g(o.object_distance) + ": must be a distance > 0 m");
@@ -187,10 +188,11 @@ void run_vanishing(const PathOptions& o) {
               << " deg)\n";
     std::cout << "            farthest " << g(reach->farthest) << " m\n";
     if (has_d)
-        std::cout << "at " << g(o.object_distance) << " m    "
-                  << (seen ? "mirrored: rays from the eye reach the point after turning"
-                           : "no mirrored image: no ray from the eye reaches the point after turning")
-                  << "\n";
+        std::cout
+            << "at " << g(o.object_distance) << " m    "
+            << (seen ? "mirrored: rays from the eye reach the point after turning"
+                     : "no mirrored image: no ray from the eye reaches the point after turning")
+            << "\n";
 }
 
 void run_single(const PathOptions& o) {
