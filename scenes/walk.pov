@@ -1,6 +1,6 @@
 // walk.pov: walking toward the mirage.  Khote & Howard: "it is possible to walk towards the
-// mirage and it will disappear".  Two spheres on masts over hot sand (the `paper` atmosphere
-// of desert.pov), approached from 60 m to 5 m as the clock runs from 0 to 1.  Far away the
+// mirage and it will disappear".  Two spheres floating 3.5 m above hot sand (balloons; the
+// `paper` atmosphere of desert.pov), approached from 60 m to 5 m as the clock runs from 0 to 1.  Far away the
 // spheres show below the horizon, upside down, in the light that dipped toward the hot sand
 // and turned; from about 13 m on no ray from the eye reaches them after a turn, and their
 // mirrored image is gone (mirage path --preset paper --eye-height 1.5 --object-height 3.5).
@@ -78,12 +78,10 @@ plane {
     #declare Blue_Texture = texture { pigment { color rgb <0.15, 0.35, 0.80> } finish { Ball_Finish } }
 #end
 
-#declare Mast = cylinder { <0, 0, 0>, <0, Ball_Height - Ball_Radius, 0>, 0.06
-                           pigment { color rgb <0.25, 0.25, 0.25> } }
+// Nothing stands under them: the last rays to reach a sphere after their turn rise to its
+// lower far side from beneath it (a mast there would hide the mirage before it vanishes).
 sphere { Red_Ball, Ball_Radius texture { Red_Texture } }
-object { Mast translate <Red_Ball.x, 0, Red_Ball.z> }
 sphere { Blue_Ball, Ball_Radius texture { Blue_Texture } }
-object { Mast translate <Blue_Ball.x, 0, Blue_Ball.z> }
 
 // Posts marking the way, every 10 m.
 #declare Post = cylinder { <0, 0, 0>, <0, 1.2, 0>, 0.05 pigment { color rgb <0.2, 0.2, 0.2> } }

@@ -66,15 +66,17 @@ std::string fingerprint(const std::string& text) {
     return buf;
 }
 
-// The last non-empty line of a log, for a failed frame's reason.
+// Why a task failed, from its log: its own last message ("mirage animate: frame 3 (clock
+// 0.5): ..."), else the log's last non-empty line.
 std::string last_line(const std::string& path) {
     std::ifstream in(path);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+    std::string line, last, said;
     const std::string prefix = "mirage animate: ";
-    if (last.rfind(prefix, 0) == 0) last = last.substr(prefix.size());
-    return last;
+    while (std::getline(in, line)) {
+        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+        if (line.rfind(prefix, 0) == 0) said = line.substr(prefix.size());
+    }
+    return said.empty() ? last : said;
 }
 
 std::string shell_quote(const std::string& s) {
@@ -513,11 +515,12 @@ Result<std::vector<VanishingRow>> vanishing_rows(const Animation& a) {
     po.image_width = a.options.width;
     po.image_height = a.options.height;
     po.strict = false;
+    VanishingCache cache;
     for (const auto& f : a.plan.frames) {
         po.animation = f.clock;
         auto scene = parse_scene_file(a.options.scene, po);
         if (!scene) return make_error(frame_label(f) + ": " + scene.message());
-        auto views = view_marked_spheres(*scene, a.options.width, a.options.height);
+        auto views = view_marked_spheres(*scene, a.options.width, a.options.height, &cache);
         if (!views) return make_error(frame_label(f) + ": " + views.message());
         for (const auto& v : *views) rows.push_back({f.number, f.clock.clock, v});
     }
@@ -639,9 +642,10 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
         if (!fs::exists(a.frame_image(f.number), ec)) {
             const std::string log = a.frame_stem(f.number) + ".log";
             const std::string why = last_line(log);
-            rep.failures.push_back(frame_label(f) + " failed: " +
-                                   (why.empty() ? "no image and no log (" + log + ")" : why) +
-                                   " (log: " + log + ")");
+            const std::string label = frame_label(f);
+            std::string reason = why.empty() ? "no image and no log (" + log + ")" : why;
+            if (reason.rfind(label + ": ", 0) == 0) reason = reason.substr(label.size() + 2);
+            rep.failures.push_back(label + " failed: " + reason + " (log: " + log + ")");
         }
     }
     if (!rep.failures.empty()) {

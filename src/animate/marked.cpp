@@ -66,7 +66,8 @@ Result<std::vector<MarkedSphere>> read_marked_spheres(const Scene& scene) {
     return out;
 }
 
-Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int width, int height) {
+Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int width, int height,
+                                                    VanishingCache* cache) {
     auto marked = read_marked_spheres(scene);
     if (!marked) return marked.error();
     std::vector<MarkedView> out;
@@ -80,8 +81,21 @@ Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int widt
     for (const auto& m : *marked) {
         const std::string at = m.loc.file + ":" + std::to_string(m.loc.line) + ":" +
                                std::to_string(m.loc.column) + ": " + m.name + ": ";
-        auto vanish = sphere_vanishing_distance(profile, eye.y, m.centre.y, m.radius);
-        if (!vanish) return make_error(at + vanish.message());
+        const std::vector<double> key = {eye.y,
+                                         m.centre.y,
+                                         m.radius,
+                                         profile.eta0,
+                                         profile.eta1,
+                                         profile.alpha,
+                                         static_cast<double>(profile.kind)};
+        Result<double> vanish = make_error("");
+        if (cache && cache->count(key)) {
+            vanish = cache->at(key);
+        } else {
+            vanish = sphere_vanishing_distance(profile, eye.y, m.centre.y, m.radius);
+            if (!vanish) return make_error(at + vanish.message());
+            if (cache) (*cache)[key] = *vanish;
+        }
         MarkedView v;
         v.name = m.name;
         const double d = std::hypot(m.centre.x - eye.x, m.centre.z - eye.z);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct MarkedView {
 /// The marked spheres of `scene` (parsed for this frame) as seen from its camera through its
 /// atmosphere, for an image of width x height.  No marked spheres: an empty list.  A scene
 /// without an inferior atmosphere, or a sphere reaching the ground, is an error naming it.
-Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int width, int height);
+/// `cache` (may be null) keeps the vanishing distances already found, by eye height, centre
+/// height, radius and profile, for the frames of one animation.
+using VanishingCache = std::map<std::vector<double>, double>;
+Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int width, int height,
+                                                    VanishingCache* cache = nullptr);
 
 }  // namespace mirage
