@@ -279,6 +279,31 @@ Status run_hosts(const Animation& a, const std::vector<PlannedFrame>& todo, Prog
     return Ok{};
 }
 
+// POV-Ray 3.7 stamps its PNGs with the time of the render (a tIME chunk and a "Comment" text
+// chunk holding "Render Date: ..."); a frame is copied without them so that it has the same
+// bytes wherever and whenever it was rendered.  The other chunks, the pixels' IDAT among
+// them, are copied as they are.
+Status copy_png_without_dates(const std::string& from, const std::string& to) {
+    const std::string png = read_text(from);
+    static const char kSignature[] = "\x89PNG\r\n\x1a\n";
+    if (png.size() < 8 || png.compare(0, 8, kSignature, 8) != 0)
+        return make_error(from + ": not a PNG file");
+    std::string out = png.substr(0, 8);
+    for (std::size_t i = 8; i + 12 <= png.size();) {
+        const auto* b = reinterpret_cast<const unsigned char*>(png.data() + i);
+        const std::size_t length = (std::size_t(b[0]) << 24) | (std::size_t(b[1]) << 16) |
+                                   (std::size_t(b[2]) << 8) | std::size_t(b[3]);
+        if (i + 12 + length > png.size()) return make_error(from + ": a PNG chunk is cut short");
+        const std::string type = png.substr(i + 4, 4);
+        const bool dated =
+            type == "tIME" ||
+            (type == "tEXt" && png.compare(i + 8, 8, std::string("Comment\0", 8)) == 0);
+        if (!dated) out += png.substr(i, 12 + length);
+        i += 12 + length;
+    }
+    return write_file_atomic(to, out);
+}
+
 double frame_seconds_from_record(const Animation& a, int number) {
     std::ifstream in(a.frame_stem(number) + ".json");
     if (!in) return 0.0;
@@ -437,6 +462,10 @@ Result<FrameRecord> render_frame(const Animation& a, int number) {
         if (run->exit_code != 0 || !fs::exists(rendered, ec))
             return failed("POV-Ray failed (exit " + std::to_string(run->exit_code) + ", " + log +
                           "): " + last_line(log));
+        const std::string undated = (work / "frame.png").string();
+        if (auto s = copy_png_without_dates(rendered, undated); !s) return failed(s.message());
+        fs::remove(rendered, ec);
+        rendered = undated;
     } else {
         TraceOptions to;
         to.scene = o.scene;
@@ -674,8 +703,13 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
     rep.assemble_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
 
+    // The report of the marked objects is an addition: when it cannot be made (a scene whose
+    // atmosphere is not an inferior mirage), the frames and the video stand and a note says why.
     auto rows = vanishing_rows(a);
-    if (!rows) return rows.error();
+    if (!rows) {
+        rep.notes.push_back("no vanishing report: " + rows.message());
+        rows = std::vector<VanishingRow>{};
+    }
     AnimationSummary sum;
     sum.name = a.name;
     sum.scene = o.scene;

@@ -291,6 +291,19 @@ TEST(Animate, PovRaySeesTheClockTheCompilerSaw) {
         EXPECT_NE(log.find(values), std::string::npos)
             << "frame " << f.number << ": the compiler saw '" << values << "'";
     }
+    // POV-Ray dates its images; a frame rendered again has the same bytes all the same.
+    const fs::path frame = dir / "out" / "frames" / "frame_0003.png";
+    const std::string before = read_bytes(frame.string());
+    EXPECT_EQ(before.find("tIME"), std::string::npos);
+    EXPECT_EQ(before.find("Render Date"), std::string::npos);
+    fs::remove(frame);
+    auto again = run_tool("animate " + (dir / "clocked.pov").string() +
+                          " +KFI2 +KFF5 +KI0.1 +KF0.7 -W 40 -H 30 -q -o " + (dir / "out").string());
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(read_bytes(frame.string()), before);
+    auto img = read_image(frame.string());
+    ASSERT_TRUE(img.ok()) << img.message();
+    EXPECT_EQ(img->width, 40);
 }
 
 TEST(Animate, SlurmScriptStatesTheResourcesPerTask) {
