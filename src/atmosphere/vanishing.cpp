@@ -91,8 +91,7 @@ Result<MirrorReach> mirror_reach(const Profile& profile, double eye_height, doub
     };
     constexpr int kSamples = 400;
     const auto [y_near, d_near] = scan_extremum(reach, 0.0, top, kSamples, 1.0);
-    const auto [y_far, d_far] = scan_extremum(reach, 0.0, top, kSamples, -1.0);
-    (void)y_far;
+    const double d_far = scan_extremum(reach, 0.0, top, kSamples, -1.0).second;
     MirrorReach m;
     m.nearest = d_near;
     m.farthest = d_far;

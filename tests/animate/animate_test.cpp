@@ -306,6 +306,31 @@ TEST(Animate, PovRaySeesTheClockTheCompilerSaw) {
     EXPECT_EQ(img->width, 40);
 }
 
+TEST(Animate, ReadsTheRangeFromAnIniFile) {
+    if (!have_ffmpeg()) GTEST_SKIP() << "ffmpeg/ffprobe not on PATH";
+    const fs::path dir = testing::test_dir("animate", "ini");
+    write_text(dir / "walk.ini",
+               "; three frames of the walk\nInitial_Frame=3\nFinal_Frame=5\nInitial_Clock=0.2\n"
+               "Antialias=on\n");
+    auto run = run_tool("animate " + kWalk + " " + (dir / "walk.ini").string() +
+                        " --model trace -W 32 -H 24 -o " + (dir / "out").string());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("note: " + (dir / "walk.ini").string() +
+                           ":5: Antialias: not an animation option, ignored"),
+              std::string::npos)
+        << run.out;
+    for (int f = 3; f <= 5; ++f)
+        EXPECT_TRUE(
+            fs::exists(dir / "out" / "frames" / ("frame_000" + std::to_string(f) + ".png")));
+    EXPECT_FALSE(fs::exists(dir / "out" / "frames" / "frame_0001.png"));
+    const auto first =
+        nlohmann::json::parse(read_bytes((dir / "out/frames/frame_0003.json").string()));
+    EXPECT_EQ(first["clock"].get<double>(), static_cast<double>(0.2f));
+    auto frames = count_video_frames((dir / "out" / "walk.mp4").string());
+    ASSERT_TRUE(frames.ok()) << frames.message();
+    EXPECT_EQ(*frames, 3);
+}
+
 TEST(Animate, SlurmScriptStatesTheResourcesPerTask) {
     AnimateOptions o;
     o.scene = kWalk;
