@@ -442,6 +442,9 @@ Result<FrameRecord> render_frame(const Animation& a, int number) {
         co.image = (work / "render.png").string();
         co.tolerance_px = o.tolerance_px;
         co.library_paths = o.library_paths;
+        // A frame's report needs no sub-pixel samples, and the frames have their own bar.
+        co.samples_per_side = 1;
+        co.progress = false;
         auto compiled = compile_scene(co);
         if (!compiled) return failed("compile: " + compiled.message());
         rec.compile_seconds = compiled->seconds;
