@@ -87,6 +87,7 @@ Result<MirageScene> load_mirage_scene(const SceneLoadOptions& options) {
     po.image_height = options.height;
     po.strict = options.strict;
     po.limits = options.limits;
+    po.animation = options.animation;
     auto parsed = parse_scene_file(options.scene, po);
     if (!parsed) return parsed.error();
     std::error_code ec;

@@ -5,7 +5,7 @@
 // The modules of src/, lowest first; each includes only from those before it (checked by
 // tests/layout/module_order_test.cpp):
 //   util, atmosphere, scene, load, image, layers, pov, report, trace, compile, trace_scene,
-//   compare, cli
+//   compare, animate, cli
 #pragma once
 
 #include <optional>
@@ -27,13 +27,14 @@ constexpr int kMaxImageSide = 20000;
 constexpr double kMinPixelRad = 1e-7;
 
 struct SceneLoadOptions {
-    std::string scene;                       // the .pov file
-    int width = 320, height = 240;           // the render's size, pixels
-    std::vector<std::string> library_paths;  // the user's include directories, searched first
-    bool strict = true;                      // every object must be supported (false: skip others)
-    std::optional<double> tolerance_px;      // --tolerance: replaces Mirage_Tolerance
-    std::optional<LayerMode> layers;         // --layers: replaces Mirage_Layers
-    std::optional<int> layer_count;          // --count: replaces Mirage_Layer_Count
+    std::string scene;                        // the .pov file
+    int width = 320, height = 240;            // the render's size, pixels
+    std::vector<std::string> library_paths;   // the user's include directories, searched first
+    bool strict = true;                       // every object must be supported (false: skip others)
+    std::optional<double> tolerance_px;       // --tolerance: replaces Mirage_Tolerance
+    std::optional<LayerMode> layers;          // --layers: replaces Mirage_Layers
+    std::optional<int> layer_count;           // --count: replaces Mirage_Layer_Count
+    std::optional<AnimationClock> animation;  // this frame's clock (unset: the thread's)
     ParseLimits limits;
 };
 

@@ -111,7 +111,8 @@ std::string SceneParser::read_source(const std::string& path, const Token* at) {
     return text;
 }
 
-SceneParser::SceneParser(const ParseOptions& options) : options_(options) {
+SceneParser::SceneParser(const ParseOptions& options)
+    : options_(options), animation_(options.animation.value_or(thread_animation_clock())) {
     tables_.emplace_back();
     // POV-Ray's front end declares these two like Declare= options, after them.
     for (const auto& [name, value] : options_.declares) {
@@ -126,6 +127,18 @@ SceneParser::SceneParser(const ParseOptions& options) : options_(options) {
             std::string(name) == "image_width" ? options_.image_width : options_.image_height;
         sym->value.data = Numeric::scalar(v);
         sym->loc = FileLoc{"<image size>", 0, 0};
+        tables_[0][name] = sym;
+    }
+    // Then, like POV-Ray's front end, the animation's six (vfe/vfe.cpp, animationprocessing.cpp).
+    const std::pair<const char*, double> frame_values[] = {
+        {"clock_delta", animation_.clock_delta},     {"final_clock", animation_.final_clock},
+        {"final_frame", animation_.final_frame},     {"frame_number", animation_.frame_number},
+        {"initial_clock", animation_.initial_clock}, {"initial_frame", animation_.initial_frame},
+    };
+    for (const auto& [name, value] : frame_values) {
+        auto sym = std::make_shared<Symbol>();
+        sym->value.data = Numeric::scalar(value);
+        sym->loc = FileLoc{"<animation>", 0, 0};
         tables_[0][name] = sym;
     }
 }
