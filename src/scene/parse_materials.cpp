@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "image/image_io.h"
+#include "scene/image_file.h"
 #include "scene/material_ops.h"
 #include "scene/scene_parser.h"
 #include "scene/transform.h"

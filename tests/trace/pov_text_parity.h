@@ -14,7 +14,7 @@
 #include "povray_runner.h"
 #include "scene/parser.h"
 #include "trace/render.h"
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 namespace mirage::testing {
 
