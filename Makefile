@@ -43,7 +43,7 @@ PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev 
             libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox \
             fonts-dejavu-core ffmpeg parallel munge slurmctld slurmd slurm-client
 
-.PHONY: all deps configure build test render trace bench compare animate clean
+.PHONY: all deps configure build test render trace bench compare animate study clean
 
 all: build
 
