@@ -178,7 +178,8 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
             return make_error(ctx.scene.file +
                               ": uniform layers need a count: --count N or Mirage_Layer_Count");
         const double top = top_reached(ctx, rays);
-        d.stack = uniform_layers(ctx.profile, ctx.eye_y, st.layer_count, top);
+        d.stack = merge_invisible_boundaries(
+            uniform_layers(ctx.profile, ctx.eye_y, st.layer_count, top), ctx.eye_y);
         // Berger's layers do not care where the camera is; POV-Ray needs it off a boundary.
         for (double& h : d.stack.heights)
             if (std::fabs(h - ctx.eye_y) < 1e-9 * std::max(1.0, ctx.eye_y))
@@ -224,8 +225,8 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
     for (int attempt = 0; attempt < 12; ++attempt) {
         FitResult f = fit_layers(ctx.profile, ctx.eye_y, design, fs);
         d.max_error_px_fitted = f.quality.max_error_px;
-        d.stack = f.stack;
-        const int level = deepest_trace_level(ctx, ctx.rendered(f.stack), rays);
+        d.stack = merge_invisible_boundaries(f.stack, ctx.eye_y);
+        const int level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
         d.max_trace_level = level;
         if (level <= kMaxTraceLevel) break;
         // Over the ceiling: fewer crossings per pass, in proportion.
