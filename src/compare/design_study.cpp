@@ -377,10 +377,18 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
        << "set xlabel 'boundary crossings per camera ray (mean)'\n"
        << "set ylabel '95th percentile of the error (pixels)'\n"
        << "set title '" << res.name << ": error against the cost of a band design'\n"
-       << "plot 'study.csv' using 4:(strcol(2) eq \"planes\" ? $7 : 1/0) every ::1 with points pt "
-          "7 ps 1.5 title 'planes', "
+       << "set key outside right\n"
+       // Three families, each plane design labelled.
+       << "is(p) = strstrt(strcol(1), p) == 1\n"
+       << "plot 'study.csv' using 4:(is('uniform') ? $7 : 1/0) every ::1 with points pt 7 ps 1.5 "
+          "title 'equal layers', "
+       << "'study.csv' using 4:(is('fit') ? $7 : 1/0) every ::1 with points pt 9 ps 1.8 "
+          "title 'fitted planes', "
        << "'study.csv' using 4:(strcol(2) eq \"revolution\" ? $7 : 1/0) every ::1 with points pt 5 "
-          "ps 1.5 title 'graded layers of revolution'\n";
+          "ps 1.5 title 'graded layers of revolution', "
+       << "'study.csv' using 4:(strcol(2) eq \"planes\" ? $7 : 1/0):1 every ::1 with labels offset "
+          "0,1 "
+          "font ',8' notitle\n";
     if (auto s = write_file_atomic((dir / "study.gp").string(), gp.str()); !s) return s.error();
     if (find_program(opt.gnuplot)) {
         auto run =
