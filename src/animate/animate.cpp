@@ -20,9 +20,8 @@
 #include "animate/video.h"
 #include "compare/compare.h"
 #include "compile/compile.h"
-#include "compile/library_paths.h"
-#include "scene/parser.h"
-#include "trace/trace_scene.h"
+#include "load/mirage_scene.h"
+#include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
 #include "util/process.h"
@@ -442,6 +441,9 @@ Result<FrameRecord> render_frame(const Animation& a, int number) {
         co.image = (work / "render.png").string();
         co.tolerance_px = o.tolerance_px;
         co.library_paths = o.library_paths;
+        // A frame's report needs no sub-pixel samples, and the frames have their own bar.
+        co.samples_per_side = 1;
+        co.progress = false;
         auto compiled = compile_scene(co);
         if (!compiled) return failed("compile: " + compiled.message());
         rec.compile_seconds = compiled->seconds;
@@ -538,18 +540,16 @@ std::string slurm_script(const Animation& a, const std::vector<int>& frames) {
 
 Result<std::vector<VanishingRow>> vanishing_rows(const Animation& a) {
     std::vector<VanishingRow> rows;
-    ParseOptions po;
-    po.library_paths = a.options.library_paths;
-    for (const auto& p : default_library_paths(a.options.scene)) po.library_paths.push_back(p);
-    po.image_width = a.options.width;
-    po.image_height = a.options.height;
-    po.strict = false;
+    // Each frame's scene read as compile and trace read it: load/mirage_scene.h.
+    SceneLoadOptions lo = scene_load_options(a.options.scene, a.options.width, a.options.height,
+                                             a.options.library_paths);
+    lo.strict = false;
     VanishingCache cache;
     for (const auto& f : a.plan.frames) {
-        po.animation = f.clock;
-        auto scene = parse_scene_file(a.options.scene, po);
-        if (!scene) return make_error(frame_label(f) + ": " + scene.message());
-        auto views = view_marked_spheres(*scene, a.options.width, a.options.height, &cache);
+        lo.animation = f.clock;
+        auto loaded = load_mirage_scene(lo);
+        if (!loaded) return make_error(frame_label(f) + ": " + loaded.message());
+        auto views = view_marked_spheres(loaded->scene, a.options.width, a.options.height, &cache);
         if (!views) return make_error(frame_label(f) + ": " + views.message());
         for (const auto& v : *views) rows.push_back({f.number, f.clock.clock, v});
     }

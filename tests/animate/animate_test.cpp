@@ -15,7 +15,7 @@
 #include "../trace/povray_runner.h"
 #include "animate/video.h"
 #include "atmosphere/vanishing.h"
-#include "compile/atmosphere_settings.h"
+#include "load/atmosphere_settings.h"
 #include "image/image_io.h"
 #include "scene/camera.h"
 #include "scene/parser.h"
