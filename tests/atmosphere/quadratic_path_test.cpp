@@ -145,38 +145,41 @@ TEST(QuadraticPath, DuctedRaysArePeriodicAndSymmetricAboutEveryTurningPoint) {
     ASSERT_TRUE(q);
     const auto ducts = find_ducts(*q);
     ASSERT_EQ(ducts.size(), 1u);
-    const double y0 = 0.5 * (ducts[0].bottom + ducts[0].top);
-    for (double elev : {0.0, 4e-4, -7e-4}) {
-        auto path = QuadraticPath::make(*q, y0, M_PI / 2 - elev);
-        ASSERT_TRUE(path.ok());
-        ASSERT_EQ(path->fate(), PathFate::Ducted);
-        ASSERT_EQ(path->turning_point_count(), -1);
-        EXPECT_FALSE(path->hits_ground());
-        const TurningPoint t0 = path->turning_point(0), t1 = path->turning_point(1);
-        const double half = t1.dz - t0.dz;
-        ASSERT_GT(half, 0.0);
-        EXPECT_NE(t0.lowest, t1.lowest);
-        for (int k = 0; k < 8; ++k) {
-            const TurningPoint tk = path->turning_point(k);
-            EXPECT_NEAR(tk.dz, t0.dz + k * half, 1e-9 * tk.dz);
-            EXPECT_DOUBLE_EQ(tk.y, k % 2 == 0 ? t0.y : t1.y);
-            EXPECT_NEAR(path->height_at(tk.dz), tk.y, 1e-9);
-            EXPECT_NEAR(path->slope_at(tk.dz), 0.0, 1e-9);
-            EXPECT_GE(tk.y, ducts[0].bottom - 1e-9);
-            EXPECT_LE(tk.y, ducts[0].top + 1e-9);
-            for (double u : {0.1, 0.37, 0.8}) {
-                const double du = u * half;
-                if (tk.dz - du < 0.0) continue;
-                EXPECT_NEAR(path->height_at(tk.dz - du), path->height_at(tk.dz + du), 1e-9)
-                    << "turning point " << k << " u=" << u;
+    // On flat ground a profile whose index falls all the way up traps every ray with beta above
+    // its top index between the hot ground and the sky: the duct reaches the top.
+    EXPECT_NEAR(ducts[0].top, q->top(), 1e-7);
+    for (double y0 : {ducts[0].peak, 0.5 * (ducts[0].bottom + ducts[0].top)})
+        for (double elev : {0.0, 4e-4, -7e-4}) {
+            auto path = QuadraticPath::make(*q, y0, M_PI / 2 - elev);
+            ASSERT_TRUE(path.ok());
+            ASSERT_EQ(path->fate(), PathFate::Ducted);
+            ASSERT_EQ(path->turning_point_count(), -1);
+            EXPECT_FALSE(path->hits_ground());
+            const TurningPoint t0 = path->turning_point(0), t1 = path->turning_point(1);
+            const double half = t1.dz - t0.dz;
+            ASSERT_GT(half, 0.0);
+            EXPECT_NE(t0.lowest, t1.lowest);
+            for (int k = 0; k < 8; ++k) {
+                const TurningPoint tk = path->turning_point(k);
+                EXPECT_NEAR(tk.dz, t0.dz + k * half, 1e-9 * tk.dz);
+                EXPECT_DOUBLE_EQ(tk.y, k % 2 == 0 ? t0.y : t1.y);
+                EXPECT_NEAR(path->height_at(tk.dz), tk.y, 1e-9);
+                EXPECT_NEAR(path->slope_at(tk.dz), 0.0, 1e-9);
+                EXPECT_GE(tk.y, ducts[0].bottom - 1e-9);
+                EXPECT_LE(tk.y, ducts[0].top + 1e-9);
+                for (double u : {0.1, 0.37, 0.8}) {
+                    const double du = u * half;
+                    if (tk.dz - du < 0.0) continue;
+                    EXPECT_NEAR(path->height_at(tk.dz - du), path->height_at(tk.dz + du), 1e-9)
+                        << "turning point " << k << " u=" << u;
+                }
             }
+            for (double d : {3.0, 17.0, 41.0}) {
+                EXPECT_NEAR(path->height_at(d + 2.0 * half), path->height_at(d), 1e-9);
+                EXPECT_NEAR(path->height_at(d + 20.0 * half), path->height_at(d), 1e-8);
+            }
+            EXPECT_EQ(path->first_turning_point_after(t0.dz + 2.5 * half), 3);
         }
-        for (double d : {3.0, 17.0, 41.0}) {
-            EXPECT_NEAR(path->height_at(d + 2.0 * half), path->height_at(d), 1e-9);
-            EXPECT_NEAR(path->height_at(d + 20.0 * half), path->height_at(d), 1e-8);
-        }
-        EXPECT_EQ(path->first_turning_point_after(t0.dz + 2.5 * half), 3);
-    }
 }
 
 TEST(QuadraticPath, HomogeneousAirGivesStraightLines) {
