@@ -53,7 +53,9 @@ void check_bound(const ExactPath& path, const SampleSettings& st, const SampledP
     const double last = poly.points.back().x;
     double reach = last;
     if (poly.end == PathEnd::Straight) reach = std::max(20.0 * last, last + 1e4);
-    if (poly.end == PathEnd::Ground) EXPECT_EQ(poly.points.back().y, 0.0) << what;
+    if (poly.end == PathEnd::Ground) {
+        EXPECT_EQ(poly.points.back().y, 0.0) << what;
+    }
     std::vector<double> probes;
     for (int j = 0; j <= 4000; ++j) probes.push_back(reach * j / 4000);
     for (size_t k = 1; k < poly.points.size(); ++k) {
