@@ -91,6 +91,10 @@ Basis basis(double kappa, double x) {
 double log1pc(double z) {
     const double a = std::fabs(z);
     if (a < 1e-3) return 1.0 + z * (-0.5 + z * (1.0 / 3 + z * (-0.25 + z * (0.2 - z / 6))));
+    if (a < 6e-3)
+        return 1.0 +
+               z * (-0.5 + z * (1.0 / 3 +
+                                z * (-0.25 + z * (0.2 + z * (-1.0 / 6 + z * (1.0 / 7 - z / 8))))));
     if (a < 0.03) {
         constexpr double c[12] = {1.0,     1.0 / 2, 1.0 / 3, 1.0 / 4,  1.0 / 5,  1.0 / 6,
                                   1.0 / 7, 1.0 / 8, 1.0 / 9, 1.0 / 10, 1.0 / 11, 1.0 / 12};
@@ -104,6 +108,7 @@ double atanc(double z) {
     const double a = std::fabs(z);
     const double w = z * z;
     if (a < 3e-3) return 1.0 + w * (-1.0 / 3 + w * (0.2 - w / 7));
+    if (a < 0.02) return 1.0 + w * (-1.0 / 3 + w * (0.2 + w * (-1.0 / 7 + w * (1.0 / 9 - w / 11))));
     if (a < 0.1) {
         constexpr double c[9] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7, 1.0 / 9,
                                  1.0 / 11, 1.0 / 13, 1.0 / 15, 1.0 / 17};
@@ -143,16 +148,18 @@ double crossing_time(double dy, double s_e, double s_x, double a_e, double kappa
         const double R = dy * (2.0 * a_e + kappa * dy - lambda * S) / (S * (a_e - lambda * s_e));
         return R * log1pc(-lambda * R);
     }
-    const double d = (2.0 * a_e * dy + kappa * dy * dy) / S;  // s_x - s_e
-    const double M = a_e * a_e + lambda * lambda * s_e * s_e;
-    const double im = lambda * lambda * dy * s_e + d * a_e;
-    const double re = lambda * (d * s_e - dy * a_e);
-    const double num = lambda * im, den = M + lambda * re;
-    if (den > 0.0 && std::fabs(num) < 0.1 * den) {
-        const double r = im / den;
+    // With d = s_x - s_e = (2 a_e dy + kappa dy^2) / S, Im = lambda^2 dy s_e + d a_e and
+    // Re = lambda (d s_e - dy a_e), both over the same S: one division for Im / (M + lambda Re).
+    const double g = 2.0 * a_e + kappa * dy;  // d = dy g / S
+    const double l2 = lambda * lambda;
+    const double M = a_e * a_e + l2 * s_e * s_e;
+    const double im_S = dy * (l2 * s_e * S + a_e * g);
+    const double den_S = M * S + l2 * dy * (g * s_e - a_e * S);
+    if (den_S * S > 0.0 && std::fabs(lambda * im_S) < 0.1 * std::fabs(den_S)) {
+        const double r = im_S / den_S;
         return r * atanc(lambda * r);
     }
-    return std::atan2(num, den) / lambda;
+    return std::atan2(lambda * im_S / S, den_S / S) / lambda;
 }
 
 // Distance from a turning point (curvature a_v) to the offset dy (same sign as a_v).
@@ -595,6 +602,25 @@ double QuadraticPath::run_time(double dz, int& sign) const {
     return tau;
 }
 
+const QuadraticSegment& QuadraticPath::segment_for(double t) const {
+    // Queries come mostly in order: the last segment or its neighbour, else a binary search.
+    const auto& segs = sweep_.segments;
+    const size_t n = segs.size();
+    size_t k = seg_hint_ < n ? seg_hint_ : 0;
+    auto holds = [&](size_t j) { return t <= segs[j].t1 && (j == 0 || t > segs[j - 1].t1); };
+    if (!holds(k)) {
+        if (k + 1 < n && holds(k + 1)) {
+            ++k;
+        } else if (k > 0 && holds(k - 1)) {
+            --k;
+        } else {
+            k = &segment_at(sweep_, t) - segs.data();
+        }
+    }
+    seg_hint_ = k;
+    return segs[k];
+}
+
 double QuadraticPath::height_at(double dz) const {
     if (dz == 0.0 || fate_ == PathFate::Level) return y0_;
     if (fate_ == PathFate::Straight) return y0_ + dz * slope0_;
@@ -603,7 +629,7 @@ double QuadraticPath::height_at(double dz) const {
     ensure_time(t);
     if (cur_.done && t >= sweep_.length) return sweep_height(sweep_, t);
     if (sweep_.segments.empty()) return sweep_.y_start;
-    return segment_height(segment_at(sweep_, t), t);
+    return segment_height(segment_for(t), t);
 }
 
 double QuadraticPath::slope_at(double dz) const {
@@ -614,7 +640,7 @@ double QuadraticPath::slope_at(double dz) const {
     ensure_time(t);
     if (cur_.done && t >= sweep_.length) return sign * sweep_slope(sweep_, t);
     if (sweep_.segments.empty()) return sign * sweep_.end_slope;
-    return sign * segment_slope(segment_at(sweep_, t), t);
+    return sign * segment_slope(segment_for(t), t);
 }
 
 double QuadraticPath::curvature_at_height(double y) const {

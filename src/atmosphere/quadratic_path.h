@@ -148,6 +148,9 @@ class QuadraticPath {
     mutable double t1_ = 0.0;  // the run's distance at the start height (= first turn dz)
     mutable bool t1_known_ = true;
     mutable int hint_a_ = -1, hint_b_ = -1;  // pieces of the last curvature bound's heights
+    mutable size_t seg_hint_ = 0;            // the segment of the last height query
+
+    const QuadraticSegment& segment_for(double t) const;
 
     bool extend() const;  // one more segment; false when the run is complete
     void complete() const;

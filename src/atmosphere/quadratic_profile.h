@@ -45,9 +45,17 @@ class QuadraticProfile {
     /// The piece holding height y: j with knot(j) <= y < knot(j+1); -1 below 0, piece_count()
     /// at or above the top.
     int piece_at(double y) const;
-    /// piece_at(y), trying `hint` first.
+    /// piece_at(y), trying `hint` and its neighbours first.
     int piece_at(double y, int hint) const {
-        if (hint >= 0 && hint < piece_count() && y >= y_[hint] && y < y_[hint + 1]) return hint;
+        const int m = piece_count();
+        if (hint >= 0 && hint < m) {
+            if (y >= y_[hint]) {
+                if (y < y_[hint + 1]) return hint;
+                if (hint + 1 < m && y < y_[hint + 2]) return hint + 1;
+            } else if (hint > 0 && y >= y_[hint - 1]) {
+                return hint - 1;
+            }
+        }
         return piece_at(y);
     }
 
