@@ -2,11 +2,11 @@
 // the same air: one ray built, and one ray built and sampled, per iteration, over fans of
 // camera rays.  The road: hot-road air (eye 1.5 m, -0.5 to +0.5 degrees, to 500 m), its
 // exponential profile through the closed forms (exact_ray.h + sampler.h, today's path) and the
-// same exponential fitted to |dn| <= 1e-12 through the general engine (quadratic_path.h +
-// path_sampler.h); and the temperature profile it was fitted to, T = 300 K + 20 K exp(-y/0.3 m)
-// by Gladstone-Dale with the hydrostatic pressure, through the general engine.  The desert:
-// the paper's profile, eye 1.5 m, +-23.5 degrees, to 60 m.  The tolerance is an angle seen from
-// the eye in micro-radians.
+// same exponential fitted by the general engine (quadratic_path.h + path_sampler.h) at the
+// default |dn| <= 1e-10 and at 1e-12; and the temperature profile it was fitted to,
+// T = 300 K + 20 K exp(-y/0.3 m) by Gladstone-Dale with the hydrostatic pressure, through the
+// general engine.  The desert: the paper's profile, eye 1.5 m, +-23.5 degrees, to 60 m.  The
+// tolerance is an angle seen from the eye in micro-radians.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -31,24 +31,24 @@ const Fan kDesert{1.5, -0.41, 0.41, 60.0};
 
 double elevation(const Fan& f, int j, int n) { return f.from + (f.to - f.from) * (j + 0.5) / n; }
 
-std::shared_ptr<const QuadraticProfile> fitted(const AirSpec& spec) {
+std::shared_ptr<const QuadraticProfile> fitted(const AirSpec& spec, double tolerance_n) {
     FitSettings fs;
-    fs.tolerance_n = 1e-12;
+    fs.tolerance_n = tolerance_n;
     return *fit_air(spec, fs);
 }
 
-Atmosphere exponential_fitted(const char* preset) {
+Atmosphere exponential_fitted(const char* preset, double tolerance_n = FitSettings{}.tolerance_n) {
     AirSpec spec;
     spec.source = AirSpec::Source::Exponential;
     spec.exponential = *preset_profile(preset);
-    return Atmosphere::quadratic(fitted(spec));
+    return Atmosphere::quadratic(fitted(spec, tolerance_n));
 }
 
-Atmosphere hot_road_temperatures() {
+Atmosphere hot_road_temperatures(double tolerance_n = FitSettings{}.tolerance_n) {
     AirSpec spec;
     spec.column.ground_temperature_k = 300.0;
     spec.column.layers.push_back({20.0, 0.3});
-    return Atmosphere::quadratic(fitted(spec));
+    return Atmosphere::quadratic(fitted(spec, tolerance_n));
 }
 
 // Today's path: closed forms and sampler.h.
@@ -96,7 +96,9 @@ void BM_General(benchmark::State& state, Atmosphere (*make)(), Fan fan, bool sam
 
 Atmosphere road_exponential() { return Atmosphere::exponential(*preset_profile("hot-road")); }
 Atmosphere road_fitted() { return exponential_fitted("hot-road"); }
+Atmosphere road_fitted_fine() { return exponential_fitted("hot-road", 1e-12); }
 Atmosphere road_temperatures() { return hot_road_temperatures(); }
+Atmosphere road_temperatures_fine() { return hot_road_temperatures(1e-12); }
 Atmosphere desert_exponential() { return Atmosphere::exponential(*preset_profile("paper")); }
 Atmosphere desert_fitted() { return exponential_fitted("paper"); }
 
@@ -117,6 +119,10 @@ BENCHMARK_CAPTURE(BM_General, road_temperatures_sampled, road_temperatures, kRoa
     ->Arg(100)
     ->Arg(18)
     ->Arg(3);
+BENCHMARK_CAPTURE(BM_General, road_fitted_1e - 12_sampled, road_fitted_fine, kRoad, true)->Arg(18);
+BENCHMARK_CAPTURE(BM_General, road_temperatures_1e - 12_sampled, road_temperatures_fine, kRoad,
+                  true)
+    ->Arg(18);
 
 BENCHMARK_CAPTURE(BM_ClosedForm, desert_sampled, "paper", kDesert, true)->Arg(1700)->Arg(340);
 BENCHMARK_CAPTURE(BM_General, desert_fitted_sampled, desert_fitted, kDesert, true)
