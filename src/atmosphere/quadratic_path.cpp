@@ -391,6 +391,16 @@ Result<QuadraticPath> QuadraticPath::make(const QuadraticProfile& profile, doubl
         // reversed ray from the start ends.
         const RunEnd behind =
             run_end(profile, y0, piece_for(profile, y0, -r.sg_), -r.sg_, r.Q0_, false, level);
+        if (behind.kind == SweepEnd::Vertex && behind.y == ahead.y) {
+            // Level at a maximum of n^2 with a corner (an inversion's sharp bottom): n^2 falls
+            // on both sides, so the ray cannot leave this height.
+            r.fate_ = PathFate::Level;
+            r.slope_straight_ = 0.0;
+            s.y_start = s.y_end = y0;
+            s.end = SweepEnd::Top;
+            r.cur_.done = true;
+            return r;
+        }
         r.vertex_ahead_ = true;
         r.t1_known_ = false;
         s.dir = -r.sg_;

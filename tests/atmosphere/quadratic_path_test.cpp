@@ -225,3 +225,41 @@ TEST(QuadraticPath, RefusesStartsBelowTheGroundAndVerticalRays) {
 
 }  // namespace
 }  // namespace mirage
+
+namespace mirage {
+namespace {
+
+// Starts exactly on knots (sounding rows, an inversion's corners), level or nearly so, in both
+// directions: every path is finite everywhere, and a level ray on the sharp bottom of an
+// inversion (a maximum of n*^2 with a corner, n*^2 falling on both sides) stays level there.
+TEST(QuadraticPath, StartsOnKnotsGiveFinitePathsAndACornerMaximumHoldsALevelRay) {
+    const std::vector<AirSpec> specs = {testing::young_spec(0.0), testing::road_duct_spec()};
+    for (const auto& spec : specs) {
+        auto q = testing::fit_or_die(spec, 1e-10);
+        ASSERT_TRUE(q);
+        const Atmosphere atm = Atmosphere::quadratic(q);
+        for (int j = 0; j <= q->piece_count(); ++j) {
+            for (double el : {0.0, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3, 0.3, -0.3}) {
+                auto path = ExactPath::make(atm, q->knot(j), M_PI / 2 - el);
+                ASSERT_TRUE(path.ok()) << path.message();
+                for (double d : {0.0, 0.5, 37.0, 1234.5, 60000.0}) {
+                    if (path->hits_ground() && d > path->dz_ground()) continue;
+                    ASSERT_TRUE(std::isfinite(path->height_at(d)))
+                        << "knot " << j << " elev " << el << " d " << d;
+                    ASSERT_TRUE(std::isfinite(path->slope_at(d)));
+                }
+            }
+        }
+    }
+    auto q = testing::fit_or_die(testing::young_spec(0.0), 1e-10);
+    const double corner = flattened_height(50.0, 6371000.0);
+    int k = q->piece_at(corner);
+    if (std::fabs(q->knot(k + 1) - corner) < std::fabs(q->knot(k) - corner)) ++k;
+    auto level = QuadraticPath::make(*q, q->knot(k), M_PI / 2);
+    ASSERT_TRUE(level.ok());
+    EXPECT_EQ(level->fate(), PathFate::Level);
+    EXPECT_EQ(level->height_at(5000.0), q->knot(k));
+}
+
+}  // namespace
+}  // namespace mirage
