@@ -639,8 +639,8 @@ void setup_path_command(CLI::App& app) {
     sub->add_option("--earth-radius", o->earth_radius,
                     "Earth radius, m (0: flat ground, the default; 6371000 for the Earth)");
     sub->add_option("--top", o->top,
-                    "height above which the air is homogeneous, m (default 1000, or the sounding's "
-                    "last row)");
+                    "height above which the air is homogeneous, m (default 1000 or twice the "
+                    "highest inversion or surface layer's reach; a sounding's last row)");
     sub->add_option("--fit-tolerance", o->fit_tolerance,
                     "largest |n_fit - n| of the general engine's piecewise-quadratic model")
         ->capture_default_str();
