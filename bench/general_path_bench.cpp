@@ -3,8 +3,8 @@
 // camera rays.  The road: hot-road air (eye 1.5 m, -0.5 to +0.5 degrees, to 500 m), its
 // exponential profile through the closed forms (exact_ray.h + sampler.h, today's path) and the
 // same exponential fitted by the general engine (quadratic_path.h + path_sampler.h) at the
-// default |dn| <= 1e-10 and at 1e-12; and the temperature profile it was fitted to,
-// T = 300 K + 20 K exp(-y/0.3 m) by Gladstone-Dale with the hydrostatic pressure, through the
+// default |dn| <= 1e-10 and at 1e-12 (the _fine cases); and the temperature profile it was fitted
+// to, T = 300 K + 20 K exp(-y/0.3 m) by Gladstone-Dale with the hydrostatic pressure, through the
 // general engine.  The desert: the paper's profile, eye 1.5 m, +-23.5 degrees, to 60 m.  The
 // tolerance is an angle seen from the eye in micro-radians.
 #include <benchmark/benchmark.h>
@@ -119,9 +119,8 @@ BENCHMARK_CAPTURE(BM_General, road_temperatures_sampled, road_temperatures, kRoa
     ->Arg(100)
     ->Arg(18)
     ->Arg(3);
-BENCHMARK_CAPTURE(BM_General, road_fitted_1e - 12_sampled, road_fitted_fine, kRoad, true)->Arg(18);
-BENCHMARK_CAPTURE(BM_General, road_temperatures_1e - 12_sampled, road_temperatures_fine, kRoad,
-                  true)
+BENCHMARK_CAPTURE(BM_General, road_fitted_fine_sampled, road_fitted_fine, kRoad, true)->Arg(18);
+BENCHMARK_CAPTURE(BM_General, road_temperatures_fine_sampled, road_temperatures_fine, kRoad, true)
     ->Arg(18);
 
 BENCHMARK_CAPTURE(BM_ClosedForm, desert_sampled, "paper", kDesert, true)->Arg(1700)->Arg(340);
