@@ -12,6 +12,9 @@
 
 namespace mirage {
 
+/// The most rays a diagram draws.
+constexpr int kMaxFanRays = 500;
+
 struct RayDiagramSettings {
     Atmosphere atmosphere;
     std::string profile_label;        // shown in the title and legend, e.g. "paper (inferior)"
@@ -19,7 +22,7 @@ struct RayDiagramSettings {
     double eye_height = 1.5;          // m (above the sphere with an Earth radius)
     double elev_from_deg = -20.0;     // first ray's elevation, degrees
     double elev_to_deg = 5.0;         // last ray's elevation, degrees
-    int count = 11;                   // rays in the fan
+    int count = 11;                   // rays in the fan, 1 to kMaxFanRays
     double max_distance = 40.0;       // horizontal extent drawn, m
     double tolerance_rad = 1e-3;      // sampling tolerance, angle seen from the eye
     double tolerance_m = 0.0;         // sampling tolerance, fixed part, m

@@ -173,48 +173,44 @@ std::string transfer_gnuplot_script(const TransferSettings& st, const TransferCu
 }
 
 Status draw_transfer_diagram(const TransferSettings& st, const TransferCurve& curve,
-                             const ProfilePanel& panel, const std::string& svg_path,
-                             const std::string& png_path, const std::string& gnuplot) {
+                             const ProfilePanel& panel, OutputSet& outputs,
+                             const std::string& svg_path, const std::string& png_path,
+                             const std::string& gnuplot) {
     namespace fs = std::filesystem;
     if (!find_program(gnuplot))
         return make_error(gnuplot + " not found on PATH: the transfer diagram is drawn by gnuplot");
+    // gnuplot writes the outputs' temporary names; the caller's commit() renames them into
+    // place, and an OutputSet destroyed uncommitted (gnuplot failed) removes them.
+    auto abs = [](const std::string& p) { return fs::absolute(p).string(); };
+    std::string svg_tmp, png_tmp;
+    if (!svg_path.empty()) {
+        auto t = outputs.stage(svg_path);
+        if (!t) return t.error();
+        svg_tmp = abs(*t);
+    }
+    if (!png_path.empty()) {
+        auto t = outputs.stage(png_path);
+        if (!t) return t.error();
+        png_tmp = abs(*t);
+    }
     const std::string anchor = !svg_path.empty() ? svg_path : png_path;
-    const std::string svg_tmp = svg_path.empty() ? "" : temporary_name_for(svg_path);
-    const std::string png_tmp = png_path.empty() ? "" : temporary_name_for(png_path);
     const std::string script = temporary_name_for(anchor) + ".gp";
     const std::string log = temporary_name_for(anchor) + ".log";
-    auto abs = [](const std::string& p) { return p.empty() ? p : fs::absolute(p).string(); };
-    if (auto s = write_file_atomic(
-            script, transfer_gnuplot_script(st, curve, panel, abs(svg_tmp), abs(png_tmp)));
+    if (auto s =
+            write_file_atomic(script, transfer_gnuplot_script(st, curve, panel, svg_tmp, png_tmp));
         !s)
         return s.error();
-    auto run = run_process({gnuplot, fs::absolute(script).string()}, "", log);
+    auto run = run_process({gnuplot, abs(script)}, "", log);
     std::error_code ec;
     fs::remove(script, ec);
     std::string log_text;
     if (auto l = read_file(log)) log_text = *l;
     fs::remove(log, ec);
-    auto cleanup = [&] {
-        if (!svg_tmp.empty()) fs::remove(svg_tmp, ec);
-        if (!png_tmp.empty()) fs::remove(png_tmp, ec);
-    };
-    if (!run) {
-        cleanup();
-        return run.error();
-    }
+    if (!run) return run.error();
     if (run->exit_code != 0 || (!svg_tmp.empty() && !fs::exists(svg_tmp, ec)) ||
-        (!png_tmp.empty() && !fs::exists(png_tmp, ec))) {
-        cleanup();
+        (!png_tmp.empty() && !fs::exists(png_tmp, ec)))
         return make_error("gnuplot failed (exit " + std::to_string(run->exit_code) +
                           "): " + log_text);
-    }
-    if (!svg_tmp.empty())
-        if (auto s = commit_file(svg_tmp, svg_path); !s) {
-            cleanup();
-            return s.error();
-        }
-    if (!png_tmp.empty())
-        if (auto s = commit_file(png_tmp, png_path); !s) return s.error();
     return Ok{};
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "atmosphere/exact_path.h"
+#include "util/output_set.h"
 #include "util/result.h"
 
 namespace mirage {
@@ -57,10 +58,12 @@ std::string transfer_gnuplot_script(const TransferSettings& settings, const Tran
                                     const ProfilePanel& panel, const std::string& svg_out,
                                     const std::string& png_out);
 
-/// Draws the diagram with gnuplot (found on PATH) to the given files, each written to a
-/// temporary name and renamed; nothing is written when gnuplot fails.
+/// Draws the diagram with gnuplot (found on PATH) to the given files (either may be empty),
+/// staged in `outputs`: gnuplot writes their temporary names, and the caller's commit() puts
+/// them in place with its other outputs.  Nothing is staged when gnuplot fails.
 Status draw_transfer_diagram(const TransferSettings& settings, const TransferCurve& curve,
-                             const ProfilePanel& panel, const std::string& svg_path,
-                             const std::string& png_path, const std::string& gnuplot = "gnuplot");
+                             const ProfilePanel& panel, OutputSet& outputs,
+                             const std::string& svg_path, const std::string& png_path,
+                             const std::string& gnuplot = "gnuplot");
 
 }  // namespace mirage

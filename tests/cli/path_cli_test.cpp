@@ -82,14 +82,15 @@ TEST(PathCli, BadCsvRowNamesTheRowAndColumn) {
     auto r = run_tool("path --batch " + path);
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.out, "");
-    EXPECT_EQ(r.err, "mirage path: " + path + ":3: column 'alpha': '2.3x' is not a number\n");
+    EXPECT_EQ(r.err,
+              "mirage path: " + path + ":3:28: column 'alpha': '2.3x' is not a decimal number\n");
 
     std::ofstream(path) << "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2,d3\n"
                            "A,superior,1.0,1.5,2.303,1.0,1.9,1,2,3\n";
     r = run_tool("path --batch " + path);
     EXPECT_EQ(r.err, "mirage path: " + path +
-                         ":2: superior profile with eta0 = 1 and eta1 = 1.5: eta0^2 must exceed "
-                         "eta1^2 (the index aloft would not be real)\n");
+                         ":2:16: eta1 = 1.5: a superior profile needs eta0^2 > eta1^2, and eta0 "
+                         "= 1 (the index aloft would not be real)\n");
 
     std::ofstream(path) << "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2\n"
                            "A,inferior,1.0,1.5,2.303,1.0,1.9,1,2\n";
@@ -100,8 +101,8 @@ TEST(PathCli, BadCsvRowNamesTheRowAndColumn) {
                            "A,inferior,1.000233,0.4584,2.303,1.0,3.5,1,2,3\n";
     r = run_tool("path --batch " + path);
     EXPECT_EQ(r.err, "mirage path: " + path +
-                         ":2: column 'i_rad': angle from the vertical i = 3.5 rad must lie "
-                         "strictly between 0 and pi (a vertical ray has no horizontal distance)\n");
+                         ":2:38: i_rad: angle from the vertical i = 3.5 rad must lie strictly "
+                         "between 0 and pi (a vertical ray has no horizontal distance)\n");
 }
 
 TEST(PathCli, BadFlagsAndValuesAreNamed) {
@@ -115,7 +116,9 @@ TEST(PathCli, BadFlagsAndValuesAreNamed) {
 
     r = run_tool("path --preset paper --eye-height 0 --elevation-deg 1");
     EXPECT_EQ(r.exit_code, 1);
-    EXPECT_EQ(r.err, "mirage path: --eye-height 0: the eye must be above the ground (> 0 m)\n");
+    EXPECT_EQ(r.err,
+              "mirage path: --eye-height 0: the eye must be above the ground (> 0 m) and at most "
+              "1e+09 m\n");
 
     r = run_tool("path --preset sahara --eye-height 1 --elevation-deg 1");
     EXPECT_EQ(r.err,
@@ -125,7 +128,7 @@ TEST(PathCli, BadFlagsAndValuesAreNamed) {
     r = run_tool(
         "path --profile inferior --eta0 1.0003 --eta1 0.01 --alpha -2 --eye-height 1 "
         "--elevation-deg 1");
-    EXPECT_EQ(r.err, "mirage path: alpha = -2 must be finite and > 0 (1/m)\n");
+    EXPECT_EQ(r.err, "mirage path: --alpha = -2 must be from 1e-09 to 1e+09 (1/m)\n");
 
     r = run_tool("path --preset paper --eye-height 1");
     EXPECT_EQ(r.err,
@@ -293,6 +296,44 @@ TEST(PathCli, TransferCurveShowsSeveralImagesAndIsDrawnAsSvgAndPng) {
     EXPECT_NE(svg_text.find("<svg"), std::string::npos);
     EXPECT_NE(svg_text.find("apparent elevation (arcmin)"), std::string::npos);
     EXPECT_EQ(png_head, "\x89PNG\r\n\x1a\n");
+}
+
+// The transfer diagram's outputs are written all or none, never over an input: an SVG named
+// like the sounding it was drawn from is refused before gnuplot runs, and neither file appears.
+TEST(PathCli, TransferDiagramNeverReplacesItsSounding) {
+    const std::string snd = temp_path("transfer_sounding.csv"), png = temp_path("transfer_x.png");
+    const std::string text = "height_m,temperature_c\n0,10\n20,12\n40,11.5\n100,11\n";
+    write_text(snd, text);
+    std::remove(png.c_str());
+    auto r = run_tool("path --sounding " + snd +
+                      " --eye-height 20 --transfer 5000 --transfer-count 51 --png " + png +
+                      " --svg " + snd);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.out, "");
+    EXPECT_NE(r.err.find(snd), std::string::npos) << r.err;
+    std::ifstream in(snd);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()),
+              text);
+    EXPECT_FALSE(std::ifstream(png).good());
+}
+
+// The general engine keeps the exponential path's limits on the eye, the tolerances and a
+// batch's distances.
+TEST(PathCli, RealAirRaysKeepTheLimitsOfTheExponentialPath) {
+    auto r = run_tool("path --air-temperature-c 20 --eye-height 2e9 --elevation-deg 0");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.err,
+              "mirage path: --eye-height 2000000000: the eye must be above the ground (> 0 m) and "
+              "at most 1e+09 m\n");
+    r = run_tool("path --air-temperature-c 20 --eye-height 2 --elevation-deg 0 --tolerance 1e-12");
+    EXPECT_EQ(r.err, "mirage path: --tolerance 1e-12: must be 0 or from 1e-10 to 1 rad\n");
+    const std::string rays = temp_path("rays_general_bad.csv");
+    write_text(rays, "case_id,y0,i_rad,d1,d2,d3\nA,1.5,1.57,10,-5,20\n");
+    r = run_tool("path --air-temperature-c 20 --batch " + rays);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err,
+              "mirage path: " + rays + ":2:15: d2 = -5: a distance must be finite and >= 0 (m)\n");
 }
 
 // The check through the tool: no gradient, a level ray from 10 m is 41.4 m above the
