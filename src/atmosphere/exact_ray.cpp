@@ -262,10 +262,11 @@ void setup_superior_shared(ExactRay& r, const ExactRayOrigin& o) {
     r.c = r.gamma * r.q;
     r.dz_ground = kInf;
     if (r.k2 > 0.0) {
-        const double w = std::exp(r.ln_w);
+        const double w = o.E > 1e-150 ? r.P / o.E : std::exp(r.ln_w);
         const double one_m_w2 = (1.0 - w) * (1.0 + w);
         r.theta = std::atan2(w, std::sqrt(one_m_w2));
-        const double ln_1m_w2 = std::log1p(-w) + std::log1p(w);
+        // ln(1 - w^2) from the product of two exact differences: accurate near w = 1 too.
+        const double ln_1m_w2 = std::log(one_m_w2);
         r.y_turn = r.y0 - ln_1m_w2 / alpha;
         r.dz_turn = r.sg * r.theta / r.c;
         r.vertex_form = -ln_1m_w2 <= 2.0 + alpha * r.y0;
@@ -504,6 +505,28 @@ PathState state_at(const ExactRay& r, double dz) {
     PathState st;
     const double alpha = r.profile.alpha;
     const double e1 = r.profile.eta1;
+    // y'' = s alpha eta1^2 exp(-alpha y) / (2 beta^2), with exp(-alpha y) known at the start
+    // (E^2), the turning point (k2) and the ground (1).
+    const double curvature_scale = r.s * alpha * e1 * e1 / (2.0 * r.beta * r.beta);
+    if (r.s != 0 && dz == 0.0) {
+        st.y = r.y0;
+        st.slope = r.cos_i / r.sin_i;
+        st.curvature = curvature_scale * r.E * r.E;
+        return st;
+    }
+    if (r.s != 0 && r.turn_kind != TurnKind::BelowGround && r.turn_kind != TurnKind::None &&
+        dz == r.dz_turn) {
+        st.y = r.y_turn;
+        st.slope = 0.0;
+        st.curvature = curvature_scale * r.k2;
+        return st;
+    }
+    if (r.s != 0 && r.hits_ground && dz == r.dz_ground) {
+        st.y = 0.0;
+        st.slope = slope_at(r, dz);
+        st.curvature = curvature_scale;
+        return st;
+    }
     if (r.s > 0) {
         // F = cosh(u) / cosh(u0), u = x + sg asinh(w), cosh(u0) = sqrt(1 + w^2); the slope is
         // scale q tanh(u) and exp(-alpha y) = k2 sech^2(u): all three from exp(-2|u|).
@@ -515,7 +538,7 @@ PathState state_at(const ExactRay& r, double dz) {
         const double th = (1.0 - e2) / (1.0 + e2);
         st.slope = (e1 / r.beta) * r.q * (u < 0.0 ? -th : th);
         const double sech2 = 4.0 * e2 / ((1.0 + e2) * (1.0 + e2));
-        st.curvature = alpha * e1 * e1 * r.k2 * sech2 / (2.0 * r.beta * r.beta);
+        st.curvature = curvature_scale * r.k2 * sech2;
         return st;
     }
     if (r.s < 0 && r.k2 > 0.0 && r.vertex_form) {
@@ -525,7 +548,7 @@ PathState state_at(const ExactRay& r, double dz) {
         const double cv = std::cos(v), sv = std::sin(v);
         st.y = r.y_turn + (2.0 / alpha) * std::log(cv);
         st.slope = -(e1 / r.beta) * r.q * sv / cv;
-        st.curvature = -alpha * e1 * e1 * r.k2 / (2.0 * r.beta * r.beta * cv * cv);
+        st.curvature = curvature_scale * r.k2 / (cv * cv);
         return st;
     }
     st.y = height_at(r, dz);

@@ -122,7 +122,8 @@ struct PathState {
 
 /// Height, slope and curvature at horizontal distance dz >= 0 together, for about the cost of
 /// one height (from one exponential where the closed form allows; height_at, slope_at and
-/// curvature_at_height to rounding).
+/// curvature_at_height to rounding).  At the start, the turning point and the ground point
+/// (dz exactly 0, dz_turn or dz_ground) their closed forms are used: y0, y_turn, 0.
 PathState state_at(const ExactRay& ray, double dz);
 
 /// The first horizontal distance at which the path reaches height y while still moving

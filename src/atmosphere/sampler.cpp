@@ -335,10 +335,6 @@ class NearSampler {
         return {dz, s.y, s.slope, s.curvature};
     }
 
-    /// The point where the path reaches the ground, at y = 0.
-    PathPoint ground_point(double dz) const {
-        return {dz, 0.0, slope_at(ray_, dz), curvature_at_height(ray_, 0.0)};
-    }
 
     /// Where a stretch ending there must keep the tolerance whatever else: on a surface at
     /// the ground.
@@ -547,33 +543,53 @@ class NearSampler {
 
 }  // namespace
 
-bool region_meets_rectangle(const PathRegion& r, double dz_lo, double dz_hi, double y_lo,
-                            double y_hi) {
+RegionTest::RegionTest(const PathRegion& region) : region_(region) {
+    for (int k = 0; k < 2; ++k) {
+        const double sl = region.lower[k].slope, su = region.upper[k].slope;
+        inv_lower_[k] = sl != 0.0 ? 1.0 / sl : 0.0;
+        inv_upper_[k] = su != 0.0 ? 1.0 / su : 0.0;
+    }
+}
+
+bool RegionTest::meets(double dz_lo, double dz_hi, double y_lo, double y_hi) const {
+    const PathRegion& r = region_;
     double lo = std::max(dz_lo, r.dz_lo);
     double hi = std::min(dz_hi, r.dz_hi);
     if (!(lo <= hi)) return false;
-    // Each line leaves a half-line of dz: a lower line must be at or below y_hi, an upper
-    // one at or above y_lo.  Where the line is on the same side at both ends of [lo, hi] the
-    // answer needs no crossing point.
-    auto keep = [&](const PathLine& l, double level, bool lower) {
-        if (l.slope == 0.0) return lower ? l.y <= level : l.y >= level;
-        const bool ok_lo = lower ? l.at(lo) <= level : l.at(lo) >= level;
-        const bool ok_hi = lower ? l.at(hi) <= level : l.at(hi) >= level;
-        if (ok_lo && ok_hi) return true;
-        if (!ok_lo && !ok_hi) return false;
-        const double cross = l.dz + (level - l.y) / l.slope;
-        if (ok_lo) {
+    // Each line leaves a half-line of dz, on one side of where it crosses the level: a lower
+    // line must be at or below y_hi, an upper one at or above y_lo.
+    for (int k = 0; k < r.lower_count; ++k) {
+        const PathLine& l = r.lower[k];
+        if (l.slope == 0.0) {
+            if (l.y > y_hi) return false;
+            continue;
+        }
+        const double cross = l.dz + (y_hi - l.y) * inv_lower_[k];
+        if (l.slope > 0.0) {
             hi = std::min(hi, cross);
         } else {
             lo = std::max(lo, cross);
         }
-        return true;
-    };
-    for (int k = 0; k < r.lower_count; ++k)
-        if (!keep(r.lower[k], y_hi, true)) return false;
-    for (int k = 0; k < r.upper_count; ++k)
-        if (!keep(r.upper[k], y_lo, false)) return false;
+    }
+    for (int k = 0; k < r.upper_count; ++k) {
+        const PathLine& u = r.upper[k];
+        if (u.slope == 0.0) {
+            if (u.y < y_lo) return false;
+            continue;
+        }
+        const double cross = u.dz + (y_lo - u.y) * inv_upper_[k];
+        if (u.slope > 0.0) {
+            lo = std::max(lo, cross);
+        } else {
+            hi = std::min(hi, cross);
+        }
+    }
     return lo <= hi;
+}
+
+bool region_meets_rectangle(const PathRegion& region, double dz_lo, double dz_hi, double y_lo,
+                            double y_hi) {
+    return RegionTest(region).meets(dz_lo, dz_hi, y_lo, y_hi);
 }
 
 double straight_end_start(const ExactRay& ray, const SampleSettings& st, double from) {
@@ -632,35 +648,37 @@ void sample_path_near(const ExactRay& ray, const SampleSettings& st, const PathO
     const double start = vertex_ahead ? ray.dz_turn : 0.0;
     path.turns = vertex_ahead;
     path.dz_turn = vertex_ahead ? ray.dz_turn : 0.0;
+    const bool escapes = !ground && has_asymptote(ray);
+    if (escapes && st.max_dz >= kMaxDistance && obstacles && !sampler.wedge_may_meet()) {
+        // Nothing lies near the path anywhere, its straight end included: it is kept as its
+        // start, one more point of it (its turning point, else where its straight end
+        // begins) and its straight end, none of them to be tested (the length is of no use
+        // either: nothing is met).
+        const double dz = vertex_ahead ? ray.dz_turn : straight_end_start(ray, st, 0.0);
+        const double y = vertex_ahead ? ray.y_turn : height_at(ray, dz);
+        path.points.push_back({dz, y});
+        path.clear_length.push_back(std::sqrt(dz * dz + (y - ray.y0) * (y - ray.y0)));
+        path.end = PathEnd::Straight;
+        path.end_slope = asymptotic_slope(ray);
+        path.end_clear = true;
+        return;
+    }
     bool straight = false;
-    if (!ground && has_asymptote(ray)) {
+    if (escapes) {
         const double t = straight_end_start(ray, st, start);
         if (t < end) {
             end = t;
             straight = true;
         }
     }
-    if (straight && obstacles && !sampler.wedge_may_meet()) {
-        // Nothing lies near the path anywhere: its start, where its straight end begins, and
-        // the straight end, none of them to be tested (the length is of no use: nothing is
-        // met).
-        const double y = height_at(ray, end);
-        path.points.push_back({end, y});
-        path.clear_length.push_back(std::sqrt(end * end + (y - ray.y0) * (y - ray.y0)));
-        path.end = PathEnd::Straight;
-        path.end_slope = asymptotic_slope(ray);
-        path.end_clear = true;
-        return;
-    }
 
     PathPoint a = sampler.point(0.0);
-    a.y = ray.y0;
     if (vertex_ahead) {
         const PathPoint vertex = sampler.point(ray.dz_turn);
         sampler.piece(a, vertex);
         a = vertex;
     }
-    const PathPoint b = ground ? sampler.ground_point(end) : sampler.point(end);
+    const PathPoint b = sampler.point(end);
     if (end > start) sampler.piece(a, b);
 
     const double last = path.points.back().x;

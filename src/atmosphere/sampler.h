@@ -83,8 +83,21 @@ struct PathRegion {
     int upper_count = 2;
 };
 
-/// Whether the region meets the rectangle [dz_lo, dz_hi] x [y_lo, y_hi] (bounds may be
-/// infinite): the cut of an axis-aligned box by the ray's vertical plane.
+/// A region prepared for many rectangle tests (the reciprocals of its slopes taken once).
+class RegionTest {
+  public:
+    explicit RegionTest(const PathRegion& region);
+    /// Whether the region meets the rectangle [dz_lo, dz_hi] x [y_lo, y_hi] (bounds may be
+    /// infinite): the cut of an axis-aligned box by the ray's vertical plane.
+    bool meets(double dz_lo, double dz_hi, double y_lo, double y_hi) const;
+    const PathRegion& region() const { return region_; }
+
+  private:
+    PathRegion region_;
+    std::array<double, 2> inv_lower_{}, inv_upper_{};  // 1 / slope (0 for a level line)
+};
+
+/// RegionTest(region).meets(dz_lo, dz_hi, y_lo, y_hi).
 bool region_meets_rectangle(const PathRegion& region, double dz_lo, double dz_hi, double y_lo,
                             double y_hi);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -53,28 +54,136 @@ double largest_bend(const Profile& profile, double y0, double sin_i, bool rising
     return std::asin(s_max) - std::asin(beta / hi);
 }
 
+// A monotone function of the azimuth atan2(x, z) of (x, z), in (-2, 2], without a
+// trigonometric function: the "diamond angle", the seam (+-2) straight along -z.
+double pseudo_angle(double x, double z) {
+    const double s = x / (std::abs(x) + std::abs(z));
+    if (z >= 0.0) return s;
+    return x >= 0.0 ? 2.0 - s : -2.0 - s;
+}
+
+// The boxes of the scene's bounded objects that the vertical planes of rays from one eye can
+// cross, by the planes' azimuth: each box is listed in the bins of the azimuths from the eye
+// its x-z rectangle spans (one bin more on each side, for rounding).  What rays from one eye
+// share, built once per scene.
+class EyeIndex {
+  public:
+    EyeIndex(const SceneAccel& accel, const glm::dvec3& eye)
+        : accel_id_(accel.id()), eye_(eye), start_(kBins + 1, 0) {
+        std::vector<std::pair<int, int>> spans;  // per box: its bin ranges, [first, last]
+        std::vector<int> owner;
+        for (int i = 0; i < accel.primitive_count(); ++i) {
+            const Aabb& b = accel.primitive_box(i);
+            if (!b.finite()) continue;
+            const double x0 = b.lo.x - eye.x, x1 = b.hi.x - eye.x;
+            const double z0 = b.lo.z - eye.z, z1 = b.hi.z - eye.z;
+            auto add = [&](int first, int last) {
+                spans.push_back({std::max(0, first), std::min(kBins - 1, last)});
+                owner.push_back(i);
+            };
+            if (x0 <= 0.0 && x1 >= 0.0 && z0 <= 0.0 && z1 >= 0.0) {  // the eye is above it
+                add(0, kBins - 1);
+                continue;
+            }
+            const double corners[4] = {pseudo_angle(x0, z0), pseudo_angle(x0, z1),
+                                       pseudo_angle(x1, z0), pseudo_angle(x1, z1)};
+            if (x0 <= 0.0 && x1 >= 0.0 && z1 < 0.0) {
+                // Behind the eye across the seam: from the corners right of it up to +2, and
+                // from -2 up to the corners left of it.
+                double lo_pos = 2.0, hi_neg = -2.0;
+                for (const double c : corners) {
+                    if (c > 0.0) lo_pos = std::min(lo_pos, c);
+                    if (c < 0.0) hi_neg = std::max(hi_neg, c);
+                }
+                add(bin(lo_pos) - 1, kBins - 1);
+                add(0, bin(hi_neg) + 1);
+                continue;
+            }
+            const auto [lo, hi] = std::minmax({corners[0], corners[1], corners[2], corners[3]});
+            add(bin(lo) - 1, bin(hi) + 1);
+        }
+        for (const auto& [first, last] : spans) {
+            for (int k = first; k <= last; ++k) ++start_[k + 1];
+        }
+        for (int k = 0; k < kBins; ++k) start_[k + 1] += start_[k];
+        items_.resize(start_[kBins]);
+        std::vector<int> fill(start_.begin(), start_.end() - 1);
+        for (std::size_t j = 0; j < spans.size(); ++j) {
+            for (int k = spans[j].first; k <= spans[j].second; ++k) items_[fill[k]++] = owner[j];
+        }
+    }
+
+    bool serves(const SceneAccel& accel, const glm::dvec3& eye) const {
+        return accel_id_ == accel.id() && eye_ == eye;
+    }
+
+    /// The crossings, at dz >= 0, of the boxes a plane along unit `heading` from the eye may
+    /// cross (appended to `out`).
+    void crossings(const SceneAccel& accel, const glm::dvec2& heading,
+                   std::vector<SceneAccel::Crossing>& out) const {
+        const int k = bin(pseudo_angle(heading.x, heading.y));
+        const double inv_x = 1.0 / heading.x, inv_z = 1.0 / heading.y;
+        for (int j = start_[k]; j < start_[k + 1]; ++j) {
+            const Aabb& b = accel.primitive_box(items_[j]);
+            double p = -std::numeric_limits<double>::infinity();
+            double q = std::numeric_limits<double>::infinity();
+            // As the hierarchy's footprint test: a line in a face's plane counts as inside.
+            const double x0 = (b.lo.x - eye_.x) * inv_x, x1 = (b.hi.x - eye_.x) * inv_x;
+            const double z0 = (b.lo.z - eye_.z) * inv_z, z1 = (b.hi.z - eye_.z) * inv_z;
+            for (auto [t0, t1] : {std::pair{x0, x1}, std::pair{z0, z1}}) {
+                if (t0 > t1) std::swap(t0, t1);
+                if (t0 > p) p = t0;
+                if (t1 < q) q = t1;
+            }
+            p = std::max(p, 0.0);
+            if (p <= q) out.push_back({p, q, b.lo.y, b.hi.y});
+        }
+    }
+
+  private:
+    static constexpr int kBins = 4096;
+    static int bin(double pseudo) {
+        return std::clamp(static_cast<int>(std::floor((pseudo + 2.0) * (kBins / 4.0))), 0,
+                          kBins - 1);
+    }
+
+    std::uint64_t accel_id_;
+    glm::dvec3 eye_;
+    std::vector<int> start_;  // bin k lists items_[start_[k]] to items_[start_[k + 1] - 1]
+    std::vector<int> items_;
+};
+
 // What a ray's path can meet, seen in its vertical plane: the boxes of the scene's bounded
-// objects and a ground plane.  The first question goes down the hierarchy, pruned by the
-// region's heights; a ray that asks again gets the list of the boxes its plane crosses (found
-// once, into storage reused from ray to ray).
+// objects and a ground plane.  For a ray from the eye the boxes its plane crosses come from
+// the eye's index; for another ray the first questions go down the hierarchy, pruned by the
+// regions' heights, and a ray that asks more gets the list of the boxes its plane crosses
+// (found once, into storage reused from ray to ray).
 class SceneObstacles final : public PathObstacles {
   public:
     SceneObstacles(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec2& heading,
-                   std::vector<SceneAccel::Crossing>& crossings)
-        : accel_(accel), origin_(origin), heading_(heading), crossings_(crossings) {}
+                   std::vector<SceneAccel::Crossing>& crossings, const EyeIndex* eye)
+        : accel_(accel), origin_(origin), heading_(heading), crossings_(crossings) {
+        if (eye) {
+            crossings_.clear();
+            eye->crossings(accel, heading, crossings_);
+            asked_ = kDirectQuestions + 1;
+        }
+    }
     bool may_meet(const PathRegion& region) const override {
-        if (asked_ == 0) {
+        if (asked_ < kDirectQuestions) {
             ++asked_;
             return accel_.region_may_meet(origin_, heading_, region);
         }
-        if (asked_ == 1) {
+        if (asked_ == kDirectQuestions) {
             ++asked_;
             crossings_.clear();
             accel_.plane_crossings(origin_, heading_, crossings_);
         }
+        if (crossings_.empty()) return false;
+        const RegionTest test(region);
         for (const SceneAccel::Crossing& c : crossings_) {
             if (c.dz_hi < region.dz_lo || c.dz_lo > region.dz_hi) continue;
-            if (region_meets_rectangle(region, c.dz_lo, c.dz_hi, c.y_lo, c.y_hi)) return true;
+            if (test.meets(c.dz_lo, c.dz_hi, c.y_lo, c.y_hi)) return true;
         }
         return false;
     }
@@ -86,26 +195,45 @@ class SceneObstacles final : public PathObstacles {
     glm::dvec2 heading_;
     std::vector<SceneAccel::Crossing>& crossings_;
     mutable int asked_ = 0;
+    static constexpr int kDirectQuestions = 1;  // answered by the hierarchy
 };
 
-// The shared constants of rays from height y0, kept per thread for the last height asked
-// for: a frame's camera rays all start at the eye.
-const ExactRayOrigin& ray_origin(const Profile& p, double y0) {
-    thread_local ExactRayOrigin cached;
-    thread_local bool valid = false;
-    const Profile& c = cached.profile;
-    if (!valid || cached.y0 != y0 || c.kind != p.kind || c.eta0 != p.eta0 || c.eta1 != p.eta1 ||
-        c.alpha != p.alpha) {
-        auto o = make_exact_ray_origin(p, y0);
-        MIRAGE_CHECK(o.ok());
-        cached = *o;
-        valid = true;
-    }
-    return cached;
+// The eye's index for the scene, kept per thread.
+const EyeIndex& eye_index(const SceneAccel& accel, const glm::dvec3& eye) {
+    thread_local std::unique_ptr<EyeIndex> index;
+    if (!index || !index->serves(accel, eye)) index = std::make_unique<EyeIndex>(accel, eye);
+    return *index;
 }
 
-// largest_bend(...) <= limit, from the origin's constants: asin grows at least as fast as its
-// argument, so the arcsines are needed only when the arguments differ by at most the limit.
+// The shared constants of rays from height y0, kept per thread for the last two heights asked
+// for: a frame's camera rays all start at the eye, and each reflection asks for another.
+const ExactRayOrigin& ray_origin(const Profile& p, double y0) {
+    struct Slot {
+        ExactRayOrigin origin;
+        bool valid = false;
+    };
+    thread_local Slot slots[2];
+    thread_local int last = 0;
+    auto matches = [&](const Slot& s) {
+        const Profile& c = s.origin.profile;
+        return s.valid && s.origin.y0 == y0 && c.kind == p.kind && c.eta0 == p.eta0 &&
+               c.eta1 == p.eta1 && c.alpha == p.alpha;
+    };
+    for (int k : {last, 1 - last}) {
+        if (matches(slots[k])) {
+            last = k;
+            return slots[k].origin;
+        }
+    }
+    auto o = make_exact_ray_origin(p, y0);
+    MIRAGE_CHECK(o.ok());
+    last = 1 - last;  // replace the one used less recently
+    slots[last] = {*o, true};
+    return slots[last].origin;
+}
+
+// largest_bend(...) <= limit, from the origin's constants; the arcsines are needed only where
+// a bound of their difference does not settle it.
 bool bends_at_most(const ExactRayOrigin& o, double sin_i, bool rising, double limit) {
     const bool inferior = o.profile.kind == ProfileKind::Inferior;
     double lo = std::min(o.profile.eta0, o.eta_inf);
@@ -115,7 +243,8 @@ bool bends_at_most(const ExactRayOrigin& o, double sin_i, bool rising, double li
     const double s_max = beta / lo;
     if (!(s_max < 1.0)) return false;
     const double s_min = beta / hi;
-    if (s_max - s_min > limit) return false;
+    // asin' = 1 / sqrt(1 - x^2) is at least 1 / sqrt(1 - s_min^2) between the two.
+    if (s_max - s_min > limit * std::sqrt((1.0 - s_min) * (1.0 + s_min))) return false;
     return std::asin(s_max) - std::asin(s_min) <= limit;
 }
 
@@ -132,8 +261,13 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
     if (origin.y <= 0.0 && direction.y <= 0.0) return false;
     const double hl = std::sqrt(direction.x * direction.x + direction.z * direction.z);
     if (hl < kVerticalSin) return false;
-    const double n = std::sqrt(hl * hl + direction.y * direction.y);
-    const double cos_i = direction.y / n, sin_i = hl / n;
+    double cos_i = direction.y, sin_i = hl;
+    const double n2 = hl * hl + direction.y * direction.y;
+    if (std::abs(n2 - 1.0) > 1e-15) {  // not quite a unit direction
+        const double n = std::sqrt(n2);
+        cos_i /= n;
+        sin_i /= n;
+    }
     const ExactRayOrigin& o = ray_origin(p, std::max(origin.y, 0.0));
     if (bends_at_most(o, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad)) return false;
     cp.ray = make_exact_ray(o, cos_i, sin_i);
@@ -143,7 +277,9 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
     ss.start_distance = travelled;
     if (accel && !accel->unbounded_elsewhere()) {
         thread_local std::vector<SceneAccel::Crossing> crossings;
-        const SceneObstacles obstacles(*accel, origin, cp.heading, crossings);
+        const EyeIndex* eye =
+            settings.eye && origin == *settings.eye ? &eye_index(*accel, origin) : nullptr;
+        const SceneObstacles obstacles(*accel, origin, cp.heading, crossings, eye);
         sample_path_near(cp.ray, ss, &obstacles, cp.path);
     } else {
         sample_path_near(cp.ray, ss, nullptr, cp.path);

@@ -33,6 +33,9 @@ struct CurvedSettings {
                                  // profile_in_scene_units); ProfileKind::None: straight rays
     double tolerance_rad = 0.0;  // largest path error, as an angle seen from the eye, rad
     PathSampling sampling = PathSampling::NearSurfaces;
+    // Where the camera rays start.  Rays from there share an index, by azimuth, of the boxes
+    // their vertical planes can cross (built once per scene and thread).
+    std::optional<glm::dvec3> eye = std::nullopt;
 };
 
 /// One ray's path in its vertical plane: the exact ray and its sampled polyline, and the

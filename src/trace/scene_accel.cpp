@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <limits>
 
 #include "util/check.h"
@@ -23,7 +24,9 @@ inline bool better(double t, int primitive, double best_t, int best_primitive) {
 }  // namespace
 
 Result<SceneAccel> SceneAccel::build(const Scene& scene) {
+    static std::atomic<std::uint64_t> next_id{1};
     SceneAccel accel;
+    accel.id_ = next_id++;
     const int n = static_cast<int>(scene.primitives.size());
     accel.shapes_.reserve(n);
     accel.casts_shadow_.reserve(n);
@@ -260,10 +263,11 @@ bool SceneAccel::region_may_meet(const glm::dvec3& origin, const glm::dvec2& hea
                                  const PathRegion& region) const {
     if (nodes_.empty()) return false;
     const double inv_x = 1.0 / heading.x, inv_z = 1.0 / heading.y;
+    const RegionTest test(region);
     auto meets = [&](const Aabb& box) {
         double p = 0.0, q = 0.0;
         footprint(box, origin.x, origin.z, inv_x, inv_z, p, q);
-        return p <= q && region_meets_rectangle(region, p, q, box.lo.y, box.hi.y);
+        return p <= q && test.meets(p, q, box.lo.y, box.hi.y);
     };
     std::array<int, kMaxDepth + 8> stack;
     int top = 0;

@@ -66,6 +66,11 @@ class SceneAccel {
     /// elsewhere: it may be met anywhere).
     bool unbounded_elsewhere() const { return unbounded_elsewhere_; }
 
+    /// A number no other built SceneAccel has (a copy keeps it: it holds the same scene).
+    std::uint64_t id() const { return id_; }
+    /// Primitive i's box as the hierarchy holds it (padded; unbounded for planes).
+    const Aabb& primitive_box(int i) const { return boxes_[i]; }
+
     int primitive_count() const { return static_cast<int>(shapes_.size()); }
     const PreparedShape& shape(int primitive) const { return shapes_[primitive]; }
     /// World bounds of the finite primitives (empty when there are none).
@@ -101,6 +106,7 @@ class SceneAccel {
     Aabb finite_bounds_;
     bool ground_plane_ = false;
     bool unbounded_elsewhere_ = false;
+    std::uint64_t id_ = 0;
 };
 
 }  // namespace mirage
