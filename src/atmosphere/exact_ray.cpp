@@ -551,6 +551,36 @@ PathState state_at(const ExactRay& r, double dz) {
         st.curvature = curvature_scale * r.k2 / (cv * cv);
         return st;
     }
+    if (r.s < 0 && r.k2 < 0.0 && r.c > 0.0) {
+        // Escaping: the forms height_at chooses, and from F and its derivative the slope
+        // (slope_at's) and exp(-alpha y) = E^2 / F^2.
+        const double x = r.c * dz;
+        const double sigma = r.q;
+        const double scale = e1 / r.beta;
+        const bool near_form = r.sg > 0 ? x < 1.0 : sigma < 0.5 * r.P;
+        if (near_form) {
+            // F = cosh x + sg P gamma dz sinhc x; dF = sg P cosh x + sigma^2 gamma dz sinhc x;
+            // cosh and sinh from expm1, without cancellation for small x.
+            const double em = std::expm1(x);
+            const double ch = 1.0 + em * em / (2.0 * (em + 1.0));
+            const double sinh_x = em * (em + 2.0) / (2.0 * (em + 1.0));
+            const double t = r.gamma * dz * (std::fabs(x) < 1e-4 ? 1.0 + x * x / 6.0 : sinh_x / x);
+            const double F = ch + r.sg * r.P * t;
+            st.y = r.y0 + (2.0 / alpha) * std::log(F);
+            st.slope = scale * (r.sg * r.P * ch + sigma * sigma * t) / F;
+            st.curvature = curvature_scale * r.E * r.E / (F * F);
+            return st;
+        }
+        // ln F = ln(ps / 2 sigma) + sg x + ln(1 - g), g = r exp(-2 sg x), and the slope
+        // sg sigma coth(A + sg x) = sg sigma (1 + g) / (1 - g).
+        const double ps = r.P + sigma;
+        const double g = r.E * r.E / (ps * ps) * std::exp(-2.0 * r.sg * x);
+        const double ln_F = std::log(ps / (2.0 * sigma)) + r.sg * x + std::log1p(-g);
+        st.y = r.y0 + (2.0 / alpha) * ln_F;
+        st.slope = scale * r.sg * sigma * (1.0 + g) / (1.0 - g);
+        st.curvature = curvature_scale * r.E * r.E * std::exp(-2.0 * ln_F);
+        return st;
+    }
     st.y = height_at(r, dz);
     st.slope = slope_at(r, dz);
     st.curvature = curvature_at_height(r, st.y);
