@@ -652,12 +652,14 @@ void sample_path_near(const ExactRay& ray, const SampleSettings& st, const PathO
     if (escapes && st.max_dz >= kMaxDistance && obstacles && !sampler.wedge_may_meet()) {
         // Nothing lies near the path anywhere, its straight end included: it is kept as its
         // start, one more point of it (its turning point, else where its straight end
-        // begins) and its straight end, none of them to be tested (the length is of no use
+        // begins, unless that is the start) and its straight end, none of them to be tested (the length is of no use
         // either: nothing is met).
         const double dz = vertex_ahead ? ray.dz_turn : straight_end_start(ray, st, 0.0);
         const double y = vertex_ahead ? ray.y_turn : height_at(ray, dz);
-        path.points.push_back({dz, y});
-        path.clear_length.push_back(std::sqrt(dz * dz + (y - ray.y0) * (y - ray.y0)));
+        if (dz > 0.0) {  // (the straight end may begin at the start: no second point)
+            path.points.push_back({dz, y});
+            path.clear_length.push_back(std::sqrt(dz * dz + (y - ray.y0) * (y - ray.y0)));
+        }
         path.end = PathEnd::Straight;
         path.end_slope = asymptotic_slope(ray);
         path.end_clear = true;
