@@ -12,6 +12,12 @@
 #   make compare         band models against the continuous tracer: error against run time
 #                        (build/compare/NAME/: results.csv, error_vs_time.png, contact_sheet.png,
 #                        summary.md; SCENE, and W H or CW CH, default 320x240: a few minutes)
+#   make animate         every frame of an animated scene (default scenes/walk.pov, FRAMES=24,
+#                        320x240 unless W H are given, MODEL=bands or trace) into
+#                        build/animate/NAME/: NAME.mp4, NAME.gif, vanishing.png, summary.md
+#   make fuzz            libFuzzer on the scene parser and the Mirage_ settings reader for
+#                        FUZZ_SECONDS (default 600), in build-fuzz/ with clang; installs
+#                        FUZZ_PACKAGES first (make test needs none of them)
 #   make clean
 
 BUILD   ?= build
@@ -23,14 +29,25 @@ TOL     ?=
 CW      ?= $(if $(filter command line,$(origin W)),$(W),320)
 CH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+FUZZ_SECONDS ?= 600
+FUZZ_BUILD   ?= build-fuzz
 NAME    := $(basename $(notdir $(SCENE)))
+# make animate: its own default scene and size.
+ASCENE  := $(if $(filter command line,$(origin SCENE)),$(SCENE),scenes/walk.pov)
+ANAME   := $(basename $(notdir $(ASCENE)))
+FRAMES  ?= 24
+MODEL   ?= bands
+AW      ?= $(if $(filter command line,$(origin W)),$(W),320)
+AH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 
 # Debian 12 packages the build, the tests and the renders need.
 PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev openimageio-tools \
             libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox \
-            fonts-dejavu-core
+            fonts-dejavu-core ffmpeg parallel munge slurmctld slurmd slurm-client
+# What make fuzz needs besides: clang and its libFuzzer and sanitizer runtimes.
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev python3
 
-.PHONY: all deps configure build test render trace bench compare clean
+.PHONY: all deps configure build test render trace bench compare animate fuzz clean
 
 all: build
 
@@ -65,8 +82,26 @@ trace: build
 compare: build
 	$(BUILD)/mirage compare $(SCENE) -W $(CW) -H $(CH) -o $(BUILD)/compare/$(NAME)
 
+animate: build
+	$(BUILD)/mirage animate $(ASCENE) --frames $(FRAMES) -W $(AW) -H $(AH) --model $(MODEL) \
+	    $(if $(TOL),--tolerance $(TOL)) -o $(BUILD)/animate/$(ANAME)
+
 bench: build
 	$(BUILD)/mirage_bench
 
+# The corpus grows in $(FUZZ_BUILD)/corpus from run to run; a crashing input is written to
+# $(FUZZ_BUILD)/artifacts/ (and belongs in tests/fuzz/crashes/ once fixed).
+fuzz: deps
+	@sh tools/install-deps.sh $(FUZZ_PACKAGES)
+	@test -f $(FUZZ_BUILD)/CMakeCache.txt || cmake -S . -B $(FUZZ_BUILD) \
+	    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 -DMIRAGE_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target mirage_scene_fuzzer
+	@mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
+	python3 tools/fuzz_corpus.py $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/scene.dict
+	$(FUZZ_BUILD)/mirage_scene_fuzzer $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds \
+	    -dict=$(FUZZ_BUILD)/scene.dict -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
+	    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	    -artifact_prefix=$(FUZZ_BUILD)/artifacts/
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(FUZZ_BUILD)

@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "util/check.h"
+#include "util/format.h"
 
 // Derivations (notation of exact_ray.h; x = c dz).
 //
@@ -27,12 +27,7 @@ constexpr double kLn2 = 0.69314718055994530942;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string number(double v) {
-    std::ostringstream out;
-    out.precision(17);
-    out << v;
-    return out.str();
-}
+std::string number(double v) { return shortest(v); }
 
 double logaddexp(double a, double b) {
     if (a < b) std::swap(a, b);
@@ -324,7 +319,9 @@ double superior_ln_F(const ExactRay& r, double dz) {
         return x + std::log(ps / (2.0 * sigma)) + std::log1p(-E0 / (ps * ps) * std::exp(-2.0 * x));
     }
     if (sigma < 0.5 * r.P) return std::log(std::cosh(x) - r.P * r.gamma * dz * sinhc(x));
-    return std::log(ps / (2.0 * sigma)) - x + std::log1p(-E0 / (ps * ps) * std::exp(2.0 * x));
+    // E0 exp(2x) as one exponential: for a start far above the gradient (alpha y0 > 745) E0
+    // underflows to 0 while exp(2x) overflows on the way down.
+    return std::log(ps / (2.0 * sigma)) - x + std::log1p(-std::exp(2.0 * (x + r.ln_E)) / (ps * ps));
 }
 
 }  // namespace
@@ -367,8 +364,9 @@ std::string_view turn_kind_name(TurnKind k) {
 
 Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad) {
     if (auto s = validate(profile); !s) return s.error();
-    if (!std::isfinite(y0) || y0 < 0.0)
-        return make_error("start height y0 = " + number(y0) + " m must be finite and >= 0");
+    if (!(y0 >= 0.0 && y0 <= kMaxHeight))
+        return make_error("start height y0 = " + number(y0) + " m must be from 0 to " +
+                          number(kMaxHeight) + " m");
     if (!std::isfinite(i_rad) || i_rad <= 0.0 || i_rad >= M_PI)
         return make_error("angle from the vertical i = " + number(i_rad) +
                           " rad must lie strictly between 0 and pi (a vertical ray has no "
@@ -406,8 +404,9 @@ Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad)
 
 Result<ExactRayOrigin> make_exact_ray_origin(const Profile& profile, double y0) {
     if (auto s = validate(profile); !s) return s.error();
-    if (!std::isfinite(y0) || y0 < 0.0)
-        return make_error("start height y0 = " + number(y0) + " m must be finite and >= 0");
+    if (!(y0 >= 0.0 && y0 <= kMaxHeight))
+        return make_error("start height y0 = " + number(y0) + " m must be from 0 to " +
+                          number(kMaxHeight) + " m");
     ExactRayOrigin o;
     o.profile = profile;
     o.y0 = y0;
@@ -573,12 +572,14 @@ PathState state_at(const ExactRay& r, double dz) {
         }
         // ln F = ln(ps / 2 sigma) + sg x + ln(1 - g), g = r exp(-2 sg x), and the slope
         // sg sigma coth(A + sg x) = sg sigma (1 + g) / (1 - g).
+        // E^2 exp(-2 sg x) as one exponential: for a start far above the gradient (alpha y0 >
+        // 745) E^2 underflows to 0 while exp(2x) overflows on the way down.
         const double ps = r.P + sigma;
-        const double g = r.E * r.E / (ps * ps) * std::exp(-2.0 * r.sg * x);
+        const double g = std::exp(2.0 * (r.ln_E - r.sg * x)) / (ps * ps);
         const double ln_F = std::log(ps / (2.0 * sigma)) + r.sg * x + std::log1p(-g);
         st.y = r.y0 + (2.0 / alpha) * ln_F;
         st.slope = scale * r.sg * sigma * (1.0 + g) / (1.0 - g);
-        st.curvature = curvature_scale * r.E * r.E * std::exp(-2.0 * ln_F);
+        st.curvature = curvature_scale * std::exp(2.0 * (r.ln_E - ln_F));
         return st;
     }
     st.y = height_at(r, dz);

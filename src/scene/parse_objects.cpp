@@ -144,6 +144,7 @@ bool SceneParser::starts_object(const Token& t) const {
 std::optional<ObjectNode> SceneParser::parse_object() {
     const Token t = peek(0);
     if (!starts_object(t)) return std::nullopt;
+    Nested nested(*this, t);
     if (is_identifier(t)) {
         Token name = next();
         Value v = identifier_value(name);
@@ -152,6 +153,7 @@ std::optional<ObjectNode> SceneParser::parse_object() {
         return std::move(*object);
     }
     Token kw = next();
+    count_objects(1, kw);
     const std::string& w = kw.text();
     if (w == "union") return parse_union(kw);
     if (w == "object") return parse_object_statement(kw);

@@ -27,7 +27,7 @@ double ground_slack(const glm::dvec3& p) {
 
 std::string place(const FileLoc& loc) {
     if (loc.file.empty()) return "";
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": ";
+    return to_string(loc) + ": ";
 }
 
 std::string degrees(double rad) {
@@ -258,6 +258,9 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
     // Below the ground the atmosphere is not defined: the band model's bottom layer has the
     // ground's index throughout, so such rays go straight there too.
     if (origin.y < -ground_slack(origin)) return false;
+    // So far above the ground (beyond any scene mirage follows) the index is flat to far
+    // below a double's precision: straight.
+    if (origin.y > kMaxHeight) return false;
     if (origin.y <= 0.0 && direction.y <= 0.0) return false;
     const double hl = std::sqrt(direction.x * direction.x + direction.z * direction.z);
     if (hl < kVerticalSin) return false;
@@ -342,6 +345,9 @@ bool goes_straight(const CurvedSettings& settings, const glm::dvec3& origin,
     // Below the ground the atmosphere is not defined: the band model's bottom layer has the
     // ground's index throughout, so such rays go straight there too.
     if (origin.y < -ground_slack(origin)) return true;
+    // So far above the ground (beyond any scene mirage follows) the index is flat to far
+    // below a double's precision: straight.
+    if (origin.y > kMaxHeight) return true;
     if (origin.y <= 0.0 && direction.y <= 0.0) return true;
     const double hl = std::hypot(direction.x, direction.z);
     if (hl < kVerticalSin) return true;
@@ -448,14 +454,6 @@ PathHit ScanlinePropagator::propagate(const SceneAccel& accel, const RayStart& s
     RayStart turned = start;
     turned.direction = glm::normalize(glm::dvec3(heading.x, r.slope, heading.y));
     return straight_.propagate(accel, turned);
-}
-
-double pixel_angle_rad(const Camera& camera, int width, int height) {
-    const glm::dvec3 a =
-        camera_ray(camera, 0.5 * width, 0.5 * height - 0.5, width, height).direction;
-    const glm::dvec3 b =
-        camera_ray(camera, 0.5 * width, 0.5 * height + 0.5, width, height).direction;
-    return angle_between(a, b);
 }
 
 bool camera_is_level(const Camera& camera) {

@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "compile/atmosphere_settings.h"
-#include "compile/library_paths.h"
+#include "load/mirage_scene.h"
 #include "scene/camera.h"
 #include "scene/parser.h"
 #include "trace/curved_propagator.h"
@@ -39,19 +38,11 @@ struct Loaded {
 };
 
 Loaded load(const std::string& path, int width, int height) {
-    ParseOptions po;
-    po.library_paths = default_library_paths(path);
-    po.image_width = width;
-    po.image_height = height;
-    po.strict = true;
-    auto scene = parse_scene_file(path, po);
-    EXPECT_TRUE(scene.ok()) << scene.message();
-    Loaded l{std::move(*scene), {}, 0.5};
-    auto settings = read_atmosphere_settings(l.scene);
-    EXPECT_TRUE(settings.ok()) << settings.message();
-    EXPECT_TRUE(settings->declared) << path;
-    l.profile = profile_in_scene_units(*settings);
-    l.tolerance_px = settings->tolerance_px;
+    auto loaded = load_mirage_scene(scene_load_options(path, width, height, {}));
+    EXPECT_TRUE(loaded.ok()) << loaded.message();
+    EXPECT_TRUE(loaded->settings.declared) << path;
+    Loaded l{std::move(loaded->scene), profile_in_scene_units(loaded->settings),
+             loaded->settings.tolerance_px};
     return l;
 }
 

@@ -1,0 +1,150 @@
+// Stage "settings" of mirage compile (compile/stages.h).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "compile/stages.h"
+#include "load/mirage_scene.h"
+#include "scene/camera.h"
+#include "util/format.h"
+#include "util/output_set.h"
+
+namespace fs = std::filesystem;
+
+namespace mirage {
+
+namespace {
+
+std::string place(const FileLoc& loc, const std::string& file) {
+    return (loc.file.empty() ? file : to_string(loc)) + ": ";
+}
+
+// The |sin(elevation)| of the steepest ray POV-Ray may shoot through the image (antialiasing
+// samples reach the pixels' edges): over the image's edges and a grid inside, which holds
+// the steepest ray unless the camera looks nearly straight up or down.
+double steepest_sine(const Camera& cam, int W, int H) {
+    double s = 0.0;
+    auto take = [&](double x, double y) {
+        s = std::max(s, std::fabs(camera_ray(cam, x, y, W, H).direction.y));
+    };
+    constexpr int kSteps = 256;
+    for (int i = 0; i <= kSteps; ++i) {
+        const double x = W * double(i) / kSteps, y = H * double(i) / kSteps;
+        take(x, 0.0), take(x, H), take(0.0, y), take(W, y);
+        for (int j = 1; j < 32; ++j) take(x, H * j / 32.0);
+    }
+    return s;
+}
+
+}  // namespace
+
+LayerStack CompileContext::rendered(const LayerStack& stack) const {
+    return gaps && stack.boundaries() > 0 ? with_gaps(stack, eye_y, gap) : stack;
+}
+
+Result<CompileContext> compile_settings(const CompileOptions& opt) {
+    if (opt.samples_per_side < 1 || opt.samples_per_side > 5)
+        return make_error("sub-pixel samples " + std::to_string(opt.samples_per_side) +
+                          " per side: must be 1 to 5");
+    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
+        return make_error("--error-map " + opt.error_map +
+                          ": the error map is written as OpenEXR, name it .exr");
+    CompileContext ctx;
+    ctx.options = opt;
+    ctx.name = fs::path(opt.scene).stem().string();
+
+    // The image size, the include paths, the parse, the Mirage_ settings with the options'
+    // replacements and the camera's place: load/mirage_scene.h.
+    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    lo.tolerance_px = opt.tolerance_px;
+    lo.layers = opt.layers;
+    lo.layer_count = opt.layer_count;
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    ctx.scene = std::move(loaded->scene);
+    // The outputs the options name may not replace a file the scene was read from: refused
+    // here, before any work (compile_scene writes them through an OutputSet of its own).
+    {
+        const OutputSet inputs(ctx.scene.files);
+        for (const std::string& named : {opt.error_map, opt.image})
+            if (!named.empty())
+                if (auto s = inputs.check(named); !s) return s.error();
+    }
+    for (const auto& p : loaded->parse_options.library_paths)
+        ctx.library_paths.push_back(fs::absolute(p).string());
+    ctx.settings = loaded->settings;
+    if (opt.profile) {
+        ctx.settings.profile = *opt.profile;
+        ctx.settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
+        ctx.settings.declared = true;
+    }
+
+    const Scene& scene = ctx.scene;
+    ctx.camera = scene.camera;
+    ctx.eye_y = ctx.camera.location.y;
+    if (!(ctx.eye_y > 0.0))
+        return make_error(
+            place(ctx.camera.loc, scene.file) + "the camera is at y = " + shortest(ctx.eye_y) +
+            (scene.has_camera ? "" : " (the scene has no camera: POV-Ray's default)") +
+            ": it must be above the ground (y = 0) for an atmosphere over it");
+
+    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
+    auto accel = SceneAccel::build(scene);
+    if (!accel) return accel.error();
+    ctx.accel = std::make_shared<const SceneAccel>(std::move(*accel));
+    const glm::dvec3& eye = ctx.camera.location;
+    double extent = 0.0;
+    if (ctx.settings.extent) {
+        extent = *ctx.settings.extent;
+        ctx.left_out.push_back("the atmosphere reaches " + sig(extent, 4) +
+                               " units from the camera (Mirage_Extent)");
+    } else {
+        const Aabb& b = ctx.accel->finite_bounds();
+        if (b.empty() || !b.finite()) {
+            if (ctx.settings.declared && !scene.skipped.empty())
+                return make_error(place(scene.skipped.front().loc, scene.file) +
+                                  scene.skipped.front().what +
+                                  " has no extent mirage can compute; declare Mirage_Extent");
+            if (ctx.settings.declared)
+                return make_error(scene.file +
+                                  ": the scene has no finite object to take the atmosphere's "
+                                  "extent from; declare Mirage_Extent (units from the camera)");
+        } else {
+            for (int i = 0; i < 4; ++i) {
+                const double x = (i & 1) ? b.hi.x : b.lo.x, z = (i & 2) ? b.hi.z : b.lo.z;
+                extent = std::max(extent, std::hypot(x - eye.x, z - eye.z));
+            }
+            extent *= 1.25;
+            if (!scene.skipped.empty())
+                ctx.warnings.push_back("objects mirage does not know (" +
+                                       scene.skipped.front().what +
+                                       ", ...) were left out of the extent; declare Mirage_Extent "
+                                       "if they lie farther away");
+        }
+    }
+    if (extent <= 0.0) extent = 100.0 * ctx.eye_y;
+    ctx.extent = extent;
+    ctx.scene_box = {eye.x - extent, eye.x + extent, eye.z - extent, eye.z + extent};
+    const double reach = kLayersExtentFactor * extent;
+    ctx.layers_box = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
+
+    ctx.profile = profile_in_scene_units(ctx.settings);
+    // The layout: nested planes, or slabs with gaps where the index steps are so small that
+    // POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
+    if (opt.layout == "gaps") {
+        ctx.gaps = true;
+    } else if (opt.layout == "auto") {
+        ctx.gaps =
+            std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
+    } else if (opt.layout != "nested") {
+        return make_error("--layout " + opt.layout + ": expected nested, gaps or auto");
+    }
+    // Gaps thick enough that POV-Ray sees both of their faces along the steepest camera ray
+    // (it ignores hits closer than MIN_ISECT_DEPTH = 1e-4 units to a ray's origin).
+    ctx.steepest_sine = steepest_sine(ctx.camera, opt.width, opt.height);
+    ctx.gap = std::max(1.5e-4 * ctx.steepest_sine, 1e-7 * ctx.eye_y);
+    return ctx;
+}
+
+}  // namespace mirage
