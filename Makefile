@@ -99,8 +99,8 @@ fuzz: deps
 	@mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
 	python3 tools/fuzz_corpus.py $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/scene.dict
 	$(FUZZ_BUILD)/mirage_scene_fuzzer $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds \
-	    -dict=$(FUZZ_BUILD)/scene.dict -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
-	    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	    -dict=$(FUZZ_BUILD)/scene.dict -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	    -timeout=60 -rss_limit_mb=2048 -print_final_stats=1 \
 	    -artifact_prefix=$(FUZZ_BUILD)/artifacts/
 
 clean:
