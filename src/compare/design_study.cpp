@@ -1,5 +1,7 @@
 #include "compare/design_study.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include "layers/revolution.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
+#include "util/output_set.h"
 #include "util/parallel.h"
 #include "util/process.h"
 
@@ -178,6 +181,22 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
     fs::create_directories(dir / "work", ec);
     if (ec) return make_error(dir.string() + ": cannot create: " + ec.message());
     res.out_dir = dir.string();
+    // The results (curves, table, plots, summary) are written into a staging directory and
+    // renamed into place together at the end: all of them or none.
+    const fs::path staging = dir / (".staging-" + std::to_string(::getpid()));
+    fs::remove_all(staging, ec);
+    fs::create_directories(staging / "curves", ec);
+    if (ec) return make_error(staging.string() + ": cannot create: " + ec.message());
+    struct RemoveStaging {
+        fs::path path;
+        ~RemoveStaging() {
+            std::error_code e;
+            fs::remove_all(path, e);
+        }
+    } remove_staging{staging};
+    auto put = [&](const std::string& rel, const std::string& content) {
+        return write_file_atomic((staging / rel).string(), content);
+    };
     auto say = [&](const std::string& line) {
         if (opt.progress) opt.progress(line);
     };
@@ -220,7 +239,7 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
               << (std::isfinite(e[i].px) ? sig(e[i].px, 6) : std::string("inf")) << ","
               << e[i].crossings << "\n";
         row.curve = "curves/" + slug(row.design) + ".csv";
-        return write_file_atomic((dir / row.curve).string(), c.str());
+        return put(row.curve, c.str());
     };
 
     // A plane design compiled, checked and rendered as `mirage compile` and `make render` do.
@@ -351,7 +370,7 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
             << num(r.povray_seconds) << "," << num(r.povray_trace_seconds) << ","
             << r.max_trace_level << "," << r.curve << "\n";
     res.csv_path = (dir / "study.csv").string();
-    if (auto s = write_file_atomic(res.csv_path, csv.str()); !s) return s.error();
+    if (auto s = put("study.csv", csv.str()); !s) return s.error();
 
     // Plots: the error over the continuum against elevation, and p95 against crossings.
     res.plot_elevation = (dir / "error_vs_elevation.png").string();
@@ -389,10 +408,10 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
        << "'study.csv' using 4:(strcol(2) eq \"planes\" ? $7 : 1/0):1 every ::1 with labels offset "
           "0,1 "
           "font ',8' notitle\n";
-    if (auto s = write_file_atomic((dir / "study.gp").string(), gp.str()); !s) return s.error();
+    if (auto s = put("study.gp", gp.str()); !s) return s.error();
     if (find_program(opt.gnuplot)) {
-        auto run =
-            run_process({opt.gnuplot, "study.gp"}, dir.string(), (dir / "gnuplot.log").string());
+        auto run = run_process({opt.gnuplot, "study.gp"}, staging.string(),
+                               (staging / "gnuplot.log").string());
         res.plotted = run && run->exit_code == 0;
         if (!res.plotted) res.notes.push_back("gnuplot failed: see gnuplot.log");
     } else {
@@ -436,7 +455,16 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
     for (const auto& n : res.notes) md << "\n- " << n;
     md << "\n";
     res.summary_path = (dir / "summary.md").string();
-    if (auto s = write_file_atomic(res.summary_path, md.str()); !s) return s.error();
+    if (auto s = put("summary.md", md.str()); !s) return s.error();
+
+    OutputSet outputs({fs::absolute(opt.scene).string()});
+    for (const auto& e : fs::recursive_directory_iterator(staging, ec)) {
+        if (!e.is_regular_file()) continue;
+        const fs::path rel = fs::relative(e.path(), staging);
+        if (auto s = outputs.adopt(e.path().string(), (dir / rel).string()); !s) return s.error();
+    }
+    if (ec) return make_error(staging.string() + ": cannot list: " + ec.message());
+    if (auto s = outputs.commit(); !s) return s.error();
     return res;
 }
 

@@ -100,7 +100,6 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
 
 std::string layers_csv(const LayerStack& s, double camera_y) {
     const int k_cam = s.layer_at(camera_y);
-    const double n_cam = s.index(k_cam);
     std::ostringstream out;
     out << "layer,bottom,top,index,eta2_minus_eta0_2,ior_as_emitted,object\n";
     const int N = s.boundaries();

@@ -69,6 +69,25 @@ sphere { <2.5, 1.6, 14>, 1 pigment { color rgb <0.8, 0.2, 0.1> } }
     auto md = read_file(r->summary_path);
     ASSERT_TRUE(md.ok());
     EXPECT_NE(md->find("| uniform 64 | 64 |"), std::string::npos) << *md;
+    // Nothing of the staging left behind.
+    for (const auto& e : fs::directory_iterator(r->out_dir))
+        EXPECT_NE(e.path().filename().string().rfind(".staging", 0), 0u) << e.path();
+
+    // All or none: a directory where the summary goes fails the study, and none of its other
+    // results is put in place.
+    const fs::path out2 = dir / "out2";
+    fs::create_directories(out2 / "summary.md");
+    o.out_dir = out2.string();
+    o.uniform_counts = {4};
+    o.graded_levels = {};
+    auto bad = run_design_study(o);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.message().find("summary.md"), std::string::npos) << bad.message();
+    EXPECT_FALSE(fs::exists(out2 / "study.csv"));
+    EXPECT_FALSE(fs::exists(out2 / "study.gp"));
+    EXPECT_FALSE(fs::exists(out2 / "curves" / "uniform_4.csv"));
+    for (const auto& e : fs::directory_iterator(out2))
+        EXPECT_NE(e.path().filename().string().rfind(".staging", 0), 0u) << e.path();
 }
 
 }  // namespace

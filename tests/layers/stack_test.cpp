@@ -79,7 +79,9 @@ TEST(BandTrace, InvariantTraceAgreesWithTheVectorTrace) {
         EXPECT_NEAR(b.y, t.scene_point.y, 1e-9) << e;
         EXPECT_NEAR(b.dz, t.scene_point.z, 1e-9 * b.dz) << e;
         EXPECT_EQ(b.sky, t.sky) << e;
-        if (b.sky) EXPECT_NEAR(std::atan(b.final_slope), std::asin(t.final_dir.y), 1e-10) << e;
+        if (b.sky) {
+            EXPECT_NEAR(std::atan(b.final_slope), std::asin(t.final_dir.y), 1e-10) << e;
+        }
     }
 }
 
