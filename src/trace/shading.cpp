@@ -142,6 +142,7 @@ void TraceCounters::add(const TraceCounters& o) {
     reflected_rays += o.reflected_rays;
     shadow_rays += o.shadow_rays;
     segments += o.segments;
+    segment_queries += o.segment_queries;
     trace_level_cutoffs += o.trace_level_cutoffs;
 }
 
@@ -261,6 +262,7 @@ glm::dvec3 Shader::trace_ray(const RayStart& start, double weight, int level,
     const Propagator& propagator = in_air ? *propagator_ : straight_;
     const PathHit path = propagator.propagate(*accel_, start);
     counters.segments += static_cast<std::uint64_t>(path.segments);
+    counters.segment_queries += static_cast<std::uint64_t>(path.queries);
     const int shade_level = continued ? level : level + 1;
     glm::dvec3 colour = path.hit ? shade_hit(path, start.origin, weight, shade_level, inside,
                                              start.travelled + path.length, counters, band)
