@@ -25,13 +25,6 @@ namespace {
 constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 constexpr double kHalfPi = 1.57079632679489661923;
 
-std::string place(const FileLoc& loc) {
-    if (loc.file.empty()) return "";
-    std::ostringstream out;
-    out << loc.file << ":" << loc.line << ":" << loc.column << ": ";
-    return out.str();
-}
-
 inline double max3(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 inline bool is_black(const glm::dvec3& c) {
     return std::fabs(c.x) < kEpsilon && std::fabs(c.y) < kEpsilon && std::fabs(c.z) < kEpsilon;
