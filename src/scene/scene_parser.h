@@ -418,6 +418,11 @@ class SceneParser {
     int macro_depth_ = 0;
 
     int nesting_ = 0;
+    // The lowest stack address the parse may reach before a Nested refuses to go deeper
+    // (set by parse(); 0: not known, only max_nesting applies).  The level count alone does
+    // not bound the stack: a level's frames are some hundred bytes in an optimized build and
+    // over 100 KiB with AddressSanitizer, and threads have smaller stacks than the main one.
+    std::uintptr_t stack_floor_ = 0;
     std::vector<ActiveDirective> directives_;  // innermost last
     std::uint64_t cond_serial_ = 0;
     std::int64_t loop_passes_ = 0;
