@@ -200,9 +200,10 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         if (ctx.profile.kind == ProfileKind::Inferior)
             rep.left_out.push_back("layers below y = " + sig(rep.lowest, 4) +
                                    ": no camera ray turns lower");
-        rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
-                               ": the index is within 1% of eta(infinity), or no camera ray "
-                               "reaches higher");
+        if (!ctx.air)
+            rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
+                                   ": the index is within 1% of eta(infinity), or no camera ray "
+                                   "reaches higher");
         rep.left_out.push_back("the layers beyond " + sig(reach, 4) +
                                " units from the camera: every camera ray has left them by then");
     }
@@ -249,6 +250,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         // The exact paths a twentieth of a pixel from the truth: errors read to that.
         ps.exact_tolerance_rad = 0.05 * finest;
         ps.progress = opt.progress;
+        ps.general = ctx.air;
+        ps.max_dz = ctx.air_max_dz;
         const PixelCheck pc =
             check_pixels(rendered, ctx.profile, ctx.scene, *ctx.accel, object_query(*ctx.accel),
                          rays.direction, rays.pixel_rad, cut_off, ps);

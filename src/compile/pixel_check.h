@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "atmosphere/profile.h"
@@ -17,6 +18,8 @@
 
 namespace mirage {
 
+class Atmosphere;  // atmosphere/exact_path.h
+
 struct PixelCheckSettings {
     int width = 0, height = 0;          // the image; rays are row-major from the top row
     glm::dvec3 eye{0.0};                // where every camera ray starts
@@ -25,6 +28,10 @@ struct PixelCheckSettings {
     double exact_tolerance_rad = 1e-5;  // sampling tolerance of the exact paths
     int max_bounces = 4;                // reflections followed, while their weight shows
     bool progress = false;              // a progress bar on stderr (on a terminal)
+    // Real air: the exact rays follow this model as the tracer's do (CurvedSettings::general,
+    // ::max_dz), not `profile`.
+    std::shared_ptr<const Atmosphere> general;
+    double max_dz = 0.0;
 };
 
 struct PixelCheck {

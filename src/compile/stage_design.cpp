@@ -7,6 +7,7 @@
 
 #include "atmosphere/exact_ray.h"
 #include "compile/stages.h"
+#include "layers/air_bands.h"
 #include "layers/fit.h"
 #include "layers/outcome.h"
 #include "layers/revolution.h"
@@ -56,6 +57,79 @@ double top_reached(const CompileContext& ctx, const CameraRays& rays) {
     return std::min(
         t, std::max(ctx.eye_y * 1.001,
                     height_of_excess(ctx.profile, eta_sq_excess(ctx.profile, kInf) * 0.99)));
+}
+
+// The same in real air, no higher than the model's top (above it n no longer changes).
+double air_top_reached(const CompileContext& ctx, const CameraRays& rays) {
+    std::vector<double> top(rays.size(), ctx.eye_y);
+    parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        top[i] = exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], rays.exit_dz[i]).y;
+    });
+    const double t = *std::max_element(top.begin(), top.end());
+    return std::max(std::min(t, air_constant_above(*ctx.air)), ctx.eye_y * 1.001);
+}
+
+// POV-Ray needs the camera off a boundary.
+void move_off_camera(std::vector<double>& heights, double eye_y) {
+    for (double& h : heights)
+        if (std::fabs(h - eye_y) < 1e-9 * std::max(1.0, eye_y)) h += 1e-6 * std::max(1.0, eye_y);
+}
+
+// Layers for real air, from n(y) alone (layers/air_bands.h): equal heights (Mirage_Layers
+// "uniform" with a count) or, by default, equal steps of the index; the designs fitted to the
+// camera's rays need the exponential closed forms and are refused.
+Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& rays) {
+    const AtmosphereSettings& st = ctx.settings;
+    const Atmosphere& air = *ctx.air;
+    Design d;
+    d.stack = air_layers(air, {});
+    const bool adaptive_asked =
+        st.layers == LayerMode::Adaptive &&
+        (ctx.options.layers || ctx.scene.symbols.count("Mirage_Layers") > 0);
+    if (adaptive_asked)
+        return make_error(ctx.scene.file + ": adaptive layers (the fit to the camera's rays) " +
+                          "need the exponential profiles' closed forms, and this atmosphere is " +
+                          "real air (" + st.profile_label +
+                          "): leave Mirage_Layers out for layers at equal steps of the index, or "
+                          "ask for uniform layers (--layers uniform --count N)");
+    if (!air_has_gradient(air)) {
+        d.mode = "none";
+        d.left_out.push_back("every layer: the index does not change with height");
+        return d;
+    }
+    const double top = air_top_reached(ctx, rays);
+    const bool uniform = st.layers == LayerMode::Uniform;
+    if (uniform && st.layer_count < 1)
+        return make_error(ctx.scene.file +
+                          ": uniform layers need a count: --count N or Mirage_Layer_Count");
+    d.mode = uniform ? "uniform" : "index steps";
+    // POV-Ray ignores a hit closer than 1e-4 units to a ray's origin: along the steepest ray,
+    // every layer (and gap) must be thicker than that.
+    const double min_thickness = ctx.gaps ? 3.0 * ctx.gap : 1.5e-4 * ctx.steepest_sine;
+    int count = uniform ? st.layer_count : (st.layer_count > 0 ? st.layer_count : 64);
+    for (int attempt = 0; attempt < 12; ++attempt) {
+        std::vector<double> h = uniform ? equal_height_boundaries(top, count)
+                                        : equal_index_boundaries(air, top, count, min_thickness);
+        move_off_camera(h, ctx.eye_y);
+        d.stack = merge_invisible_boundaries(air_layers(air, h), ctx.eye_y);
+        d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
+        if (uniform || d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
+        const int fewer = std::max(
+            2, std::min(count - 1,
+                        static_cast<int>(count * double(kMaxTraceLevel - 1) / d.max_trace_level)));
+        d.warnings.push_back("a camera ray with its reflections reached trace level " +
+                             std::to_string(d.max_trace_level) + " with " + std::to_string(count) +
+                             " index steps; redesigned with " + std::to_string(fewer));
+        count = fewer;
+    }
+    if (d.max_trace_level > kMaxTraceLevel)
+        d.warnings.push_back(
+            "some camera rays reach POV-Ray's trace-level ceiling with these layers: they "
+            "will render black");
+    d.left_out.push_back("layers above y = " + sig(top, 4) +
+                         ": no camera ray reaches higher inside the scene, or the index no "
+                         "longer changes");
+    return d;
 }
 
 }  // namespace
@@ -139,7 +213,9 @@ std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& r
             b.sky = !p.ground && p.direction.y > 0.0;
             b.final_slope = p.direction.y / p.direction.x;
         }
-        const BandOutcome e = exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], exit);
+        const BandOutcome e = ctx.air
+                                  ? exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], exit)
+                                  : exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], exit);
         err[i] = outcome_error_rad(ctx.eye_y, e, b) / rays.pixel_rad[i];
     });
     if (max_crossings)
@@ -163,6 +239,7 @@ double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const
 }
 
 Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) {
+    if (ctx.air) return design_air_layers(ctx, rays);
     Design d;
     const AtmosphereSettings& st = ctx.settings;
     d.stack.profile = ctx.profile;

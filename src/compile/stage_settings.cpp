@@ -2,10 +2,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "compile/stages.h"
 #include "load/mirage_scene.h"
 #include "scene/camera.h"
+#include "trace/curved_propagator.h"
 #include "util/format.h"
 #include "util/output_set.h"
 
@@ -14,6 +16,8 @@ namespace fs = std::filesystem;
 namespace mirage {
 
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 std::string place(const FileLoc& loc, const std::string& file) {
     return (loc.file.empty() ? file : to_string(loc)) + ": ";
@@ -80,10 +84,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
         ctx.settings.declared = true;
     }
 
-    if (ctx.settings.air && !opt.profile)
-        return make_error(opt.scene + ": real air (" + ctx.settings.profile_label +
-                          ") is traced by `mirage trace`; the layer compiler fits the "
-                          "exponential profiles only so far (docs/atmospheres.md)");
+    if (opt.profile) ctx.settings.air.reset();  // the replacement is exponential
     const Scene& scene = ctx.scene;
     ctx.camera = scene.camera;
     ctx.eye_y = ctx.camera.location.y;
@@ -134,13 +135,29 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     ctx.layers_box = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
 
     ctx.profile = profile_in_scene_units(ctx.settings);
+    if (ctx.settings.air) {
+        // Real air: the tracer's model, fitted for exact paths a twentieth of a pixel from the
+        // truth (the pixel check's), followed as far as the tracer follows them.
+        const double px = pixel_angle_rad(ctx.camera, opt.width, opt.height);
+        auto air = scene_atmosphere(ctx.settings, 0.05 * ctx.settings.tolerance_px * px);
+        if (!air) return make_error(opt.scene + ": " + air.message());
+        ctx.air = std::make_shared<const Atmosphere>(std::move(*air));
+        ctx.air_max_dz =
+            ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
+    }
     // The layout: nested planes, or slabs with gaps where the index steps are so small that
     // POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
     if (opt.layout == "gaps") {
         ctx.gaps = true;
     } else if (opt.layout == "auto") {
-        ctx.gaps =
-            std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
+        if (ctx.air) {
+            double lo, hi;
+            ctx.air->n_range(0.0, kInfinity, lo, hi);
+            ctx.gaps = hi - lo < 1e-3 * lo;
+        } else {
+            ctx.gaps =
+                std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
+        }
     } else if (opt.layout != "nested") {
         return make_error("--layout " + opt.layout + ": expected nested, gaps or auto");
     }

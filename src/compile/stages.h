@@ -43,6 +43,11 @@ struct CompileContext {
     Scene scene;
     AtmosphereSettings settings;
     Profile profile;  // in scene units
+    // Real air (a sounding, the temperature forms, the curved Earth): the general engine's
+    // model in scene units (the flattened profile n* on the curved Earth), which the layers
+    // band and the pixel check's exact rays follow; `profile` is then not used.
+    std::shared_ptr<const Atmosphere> air;
+    double air_max_dz = 0.0;  // how far the tracer follows real air's paths (CurvedSettings)
     std::string name;
     Camera camera;
     double eye_y = 0.0;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "atmosphere/exact_path.h"
 #include "atmosphere/exact_ray.h"
 #include "util/check.h"
 
@@ -22,6 +23,26 @@ BandOutcome exact_outcome(const Profile& profile, double y0, double elevation, d
     out.slope = slope_at(*ray, scene_dz);
     out.sky = !ray->hits_ground;
     out.final_slope = out.sky ? asymptotic_slope(*ray) : 0.0;
+    MIRAGE_CHECK(std::isfinite(out.y) && std::isfinite(out.slope));
+    return out;
+}
+
+BandOutcome exact_outcome(const Atmosphere& air, double y0, double elevation, double scene_dz) {
+    BandOutcome out;
+    auto path = ExactPath::make(air, y0, M_PI / 2 - elevation);
+    MIRAGE_CHECK(path.ok());
+    if (path->hits_ground() && path->dz_ground() < scene_dz) {
+        out.ground = true;
+        out.dz = path->dz_ground();
+        out.y = 0.0;
+        return out;
+    }
+    out.dz = scene_dz;
+    out.y = path->height_at(scene_dz);
+    out.slope = path->slope_at(scene_dz);
+    out.sky = !path->hits_ground() && path->fate() != PathFate::Ducted;
+    const double a = path->asymptotic_slope();
+    out.final_slope = out.sky ? (std::isfinite(a) ? a : out.slope) : 0.0;
     MIRAGE_CHECK(std::isfinite(out.y) && std::isfinite(out.slope));
     return out;
 }

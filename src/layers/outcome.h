@@ -7,10 +7,15 @@
 
 namespace mirage {
 
+class Atmosphere;  // atmosphere/exact_path.h
+
 /// The exact path's outcome, in the terms of trace_band: the ground hit if it lies before
 /// scene_dz, else the height and slope at scene_dz; whether it then goes to the sky (never
 /// meets the ground) and its final (asymptotic) slope.
 BandOutcome exact_outcome(const Profile& profile, double y0, double elevation, double scene_dz);
+/// The same in any atmosphere, by its exact path (atmosphere/exact_path.h); a ray trapped in a
+/// duct never reaches the sky, and its final slope is its slope at scene_dz.
+BandOutcome exact_outcome(const Atmosphere& air, double y0, double elevation, double scene_dz);
 
 /// Angle (rad) between where a model's ray ends and where the exact ray ends, seen from the
 /// eye at height y0: the angle between the eye's lines of sight to the two end points in the

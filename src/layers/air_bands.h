@@ -1,0 +1,39 @@
+// Bands for any stratified atmosphere (real air: soundings, temperature forms, the flattened
+// profile of the curved Earth), from n(y) alone: equal-height layers, or layers placed where
+// the index changes by equal steps.  Each layer holds the mean of n^2 over its heights, the
+// half-space above the last boundary n^2 there.  No closed form of the exponential profiles is
+// used: the designs of fit.h need those and are not for real air.
+#pragma once
+
+#include <vector>
+
+#include "layers/stack.h"
+
+namespace mirage {
+
+class Atmosphere;  // atmosphere/exact_path.h
+
+/// Whether n changes with height anywhere.
+bool air_has_gradient(const Atmosphere& air);
+
+/// The height above which n no longer changes (the fitted model's top; +inf for the
+/// exponential profiles).
+double air_constant_above(const Atmosphere& air);
+
+/// The stack with the given boundaries (strictly ascending, > 0): layer k holds the mean of
+/// n^2 over (heights[k-1], heights[k]) (heights[-1] = 0), the top half-space n^2 at the last
+/// boundary.  Its eta0 is n(0).
+LayerStack air_layers(const Atmosphere& air, const std::vector<double>& heights);
+
+/// `count` equal layers from the ground to `top`.
+std::vector<double> equal_height_boundaries(double top, int count);
+
+/// Boundaries where n crosses the levels n_lo + k (n_hi - n_lo) / count, k = 1 .. count - 1,
+/// n_lo and n_hi the extremes of n over [0, top]: every crossing of every level (a profile
+/// that is not monotonic crosses a level more than once), boundaries closer than
+/// `min_thickness` to the one below (or to the ground) left out.  Empty when n does not
+/// change over [0, top].
+std::vector<double> equal_index_boundaries(const Atmosphere& air, double top, int count,
+                                           double min_thickness);
+
+}  // namespace mirage
