@@ -64,12 +64,25 @@ TEST(AirBands, EachLayerHoldsTheProfileWithinItsOwnVariation) {
     }
 }
 
-CompileOptions hot_road(const std::string& name) {
+// scenes/hot_road.pov with its sounding, on flat ground (the shipped scene has the Earth's
+// radius, whose bands miss the flattened profile above them: docs/atmospheres.md).
+CompileOptions hot_road(const std::string& name, bool flat = true) {
     const fs::path d = testing::test_temp_path("mirage_air_compile_" + name);
     fs::remove_all(d);
     fs::create_directories(d);
+    const fs::path scenes = fs::path(MIRAGE_SOURCE_DIR) / "scenes";
+    fs::copy_file(scenes / "hot_road.csv", d / "hot_road.csv");
+    std::ifstream in(scenes / "hot_road.pov");
+    std::ofstream out(d / "hot_road.pov");
+    for (std::string line; std::getline(in, line);) {
+        out << line << "\n";
+        if (flat && line.rfind("#declare Mirage_Sounding", 0) == 0)
+            out << "#declare Mirage_Earth_Radius = 0;\n";
+    }
+    out.close();
     CompileOptions o;
-    o.scene = (fs::path(MIRAGE_SOURCE_DIR) / "scenes" / "hot_road.pov").string();
+    o.scene = (d / "hot_road.pov").string();
+    o.library_paths = {scenes.string()};
     o.width = 48;
     o.height = 36;
     o.out_dir = (d / "out").string();
@@ -90,18 +103,21 @@ TEST(AirCompile, HotRoadPixelErrorFallsAsTheLayersMultiply) {
         EXPECT_EQ(r->layout, "gaps");
         EXPECT_GT(r->layers, 0);
         EXPECT_LE(r->max_trace_level, 255);
-        ASSERT_TRUE(std::isfinite(r->max_seen_error_px)) << count;
+        ASSERT_TRUE(std::isfinite(r->max_error_px)) << count;
         ASSERT_TRUE(std::isfinite(r->p95_seen_error_px)) << count;
-        // The road's mirage bends rays by many pixels: the coarsest bands miss it visibly.
+        // Measured at 48x36: design max 14.3, 1.24, 0.845 px; seen p95 2.51, 0.633, 0.49 px.
         if (count == 4) {
-            EXPECT_GT(r->max_seen_error_px, 1.0);
+            EXPECT_GT(r->max_error_px, 5.0);
+        } else {
+            EXPECT_LT(r->max_error_px, previous_max) << count;
+            EXPECT_LT(r->p95_seen_error_px, previous_p95) << count;
         }
-        if (count > 4) {
-            EXPECT_LT(r->max_seen_error_px, previous_max) << count;
-            EXPECT_LE(r->p95_seen_error_px, previous_p95) << count;
+        if (count == 64) {
+            EXPECT_LT(r->max_error_px, 1.0);
+            EXPECT_LT(r->p95_seen_error_px, 0.6);
         }
         previous_p95 = r->p95_seen_error_px;
-        previous_max = r->max_seen_error_px;
+        previous_max = r->max_error_px;
     }
     // Equal heights work from n(y) too.
     CompileOptions o = hot_road("uniform");
