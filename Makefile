@@ -26,9 +26,9 @@ JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 NAME    := $(basename $(notdir $(SCENE)))
 
 # Debian 12 packages the build, the tests and the renders need.
-PACKAGES := g++ make cmake pkg-config povray povray-includes libopenimageio-dev openimageio-tools \
-            libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev gnuplot-nox \
-            fonts-dejavu-core
+PACKAGES := g++ make cmake pkg-config povray povray-includes povray-examples libopenimageio-dev \
+            openimageio-tools libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev \
+            gnuplot-nox fonts-dejavu-core
 
 .PHONY: all deps configure build test render trace bench compare clean
 
