@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "scene/scene.h"
@@ -25,6 +26,7 @@ struct ObjectNode {
     bool inverse = false;
     std::vector<ObjectNode> children;  // Union
     PointLight light;                  // Light
+    std::string unknown;               // Empty: what the lenient parser left out, for messages
     FileLoc loc;
 };
 

@@ -370,6 +370,7 @@ Numeric SceneParser::parse_identifier_value(const Token& t) {
         if (!e) fail(at, "element of the array '" + t.text() + "' used before it is set");
         value = e.get();
     }
+    value = &use_value(t, *sym, *value);  // an opaque value's use fails here, naming its reason
     if (auto* n = std::get_if<Numeric>(&value->data)) return *n;
     fail(t, "expected a numeric expression, got " + value_type_name(*value) + " identifier '" +
                 t.text() + "'");

@@ -136,6 +136,8 @@ bool SceneParser::starts_object(const Token& t) const {
             }
             return false;
         }
+        if (auto* opaque = std::get_if<OpaqueValue>(&sym->value.data))
+            return opaque->what == "object";
         return std::holds_alternative<ObjectNode>(sym->value.data);
     }
     return false;
@@ -165,6 +167,7 @@ std::optional<ObjectNode> SceneParser::parse_object() {
         ObjectNode empty;
         empty.kind = ObjectNode::Kind::Empty;
         empty.loc = kw.loc();
+        empty.unknown = "object '" + w + "'";
         return empty;
     }
     return parse_shape(kw);

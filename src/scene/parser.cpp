@@ -245,8 +245,14 @@ void SceneParser::export_symbols() {
 // Lenient mode
 
 void SceneParser::unsupported(const Token& at, const std::string& description) {
-    if (options_.strict) fail(at, "unsupported " + description);
-    scene_.skipped.push_back(Skipped{description, at.loc()});
+    if (opaque_capture_ && !opaque_capture_->captured) {
+        // Inside a declaration: the declared value becomes opaque (see OpaqueValue).
+        opaque_capture_->captured = true;
+        opaque_capture_->reason = "unsupported " + description;
+        opaque_capture_->loc = at.loc();
+    }
+    if (options_.strict && !opaque_capture_) fail(at, "unsupported " + description);
+    if (!options_.strict) scene_.skipped.push_back(Skipped{description, at.loc()});
 }
 
 void SceneParser::skip_block() {

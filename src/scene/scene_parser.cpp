@@ -37,6 +37,15 @@ std::string parent_directory(const std::string& path) {
     return std::filesystem::path(path).parent_path().generic_string();
 }
 
+// A punctuation mark that continues an expression after an identifier.
+bool continues_expression(const Token& t) {
+    if (t.kind() != TokenKind::Punct) return false;
+    for (const char* p : {"+", "-", "*", "/", ".", "[", "?", "<", ">", "=", "!", "&", "|"}) {
+        if (t.text() == p) return true;
+    }
+    return false;
+}
+
 std::string join_path(const std::string& dir, const std::string& name) {
     if (dir.empty()) return name;
     return (std::filesystem::path(dir) / name).lexically_normal().generic_string();
@@ -86,7 +95,8 @@ void SceneParser::fail_at(const SourceFile& file, int line, int column,
                           const std::shared_ptr<const FrameContext>& context,
                           const std::string& message) const {
     throw ParseFailure{format_diagnostic(file.path, line, column, message, context_lines(context),
-                                         file.line_text(line))};
+                                         file.line_text(line)),
+                       message, FileLoc{file.path, line, column}};
 }
 
 void SceneParser::fail(const Token& at, const std::string& message) const {
@@ -216,9 +226,13 @@ bool SceneParser::is_identifier(const Token& t) const {
     return t.kind() == TokenKind::Identifier && !is_reserved_word(t.text());
 }
 
-void SceneParser::reject_unknown_word(const Token& t) const {
-    if (is_identifier(t) && !t.symbol && !lookup(t.text()))
-        fail(t, "unknown keyword '" + t.text() + "'");
+void SceneParser::reject_unknown_word(const Token& t) {
+    if (!is_identifier(t)) return;
+    auto sym = t.symbol ? t.symbol : lookup(t.text());
+    if (!sym) fail(t, "unknown keyword '" + t.text() + "'");
+    // An opaque value where a block's item belongs: its use is what fails.
+    if (auto* opaque = std::get_if<OpaqueValue>(&sym->value.data))
+        fail_opaque_use(t, *sym, *opaque);
 }
 
 void SceneParser::resolve(Token& t) {
@@ -308,6 +322,8 @@ const Token& SceneParser::peek(std::size_t ahead) {
 Token SceneParser::next() {
     Token t = peek(0);
     lookahead_.pop_front();
+    if (t.kind() == TokenKind::Punct)
+        brace_balance_ += t.text() == "{" ? 1 : t.text() == "}" ? -1 : 0;
     return t;
 }
 
@@ -809,7 +825,7 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
         element = &index_array(std::get<ArrayValue>(sym->value.data), name);
     }
     expect_punct("=", "after '" + name.text() + "'");
-    Value value = parse_rvalue(name, false);
+    Value value = parse_declared_value(name);
     if (element) {
         *element = std::make_shared<Value>(std::move(value));
     } else {
@@ -951,7 +967,7 @@ const Value* SceneParser::peek_identifier_value(std::size_t ahead) {
             return nullptr;
         }
     }
-    return &sym->value;
+    return &use_value(t, *sym, sym->value);
 }
 
 std::shared_ptr<Value>& SceneParser::index_array(ArrayValue& array, const Token& name) {
@@ -978,10 +994,10 @@ Value SceneParser::identifier_value(const Token& name) {
             Token at = peek(0);
             std::shared_ptr<Value>& e = index_array(*a, name);
             if (!e) fail(at, "element of the array '" + name.text() + "' used before it is set");
-            return deep_copy(*e);
+            return deep_copy(use_value(name, *sym, *e));
         }
     }
-    return deep_copy(sym->value);
+    return deep_copy(use_value(name, *sym, sym->value));
 }
 
 Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
@@ -1015,12 +1031,22 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
     };
 
     if (is_identifier(t)) {
-        const Value* v = peek_identifier_value(0);
+        // A copy keeps an opaque value opaque; one used in an expression is a use.
+        const Value* v;
+        {
+            ScopedFlag copying(copying_value_, true);
+            v = peek_identifier_value(0);
+        }
         if (!v && !t.symbol && !lookup(t.text())) {
             fail(t, "undefined identifier '" + t.text() + "'");
         }
         if (v && std::holds_alternative<Numeric>(v->data)) return numeric();
+        if (v && std::holds_alternative<OpaqueValue>(v->data)) {
+            ScopedFlag defer(defer_directives_, true);
+            if (continues_expression(peek(1))) return numeric();
+        }
         Token name = next();
+        ScopedFlag copying(copying_value_, true);
         return finish_other(identifier_value(name));
     }
     if (starts_string(t)) return finish_other(Value{parse_string(false)});
@@ -1114,7 +1140,7 @@ Value SceneParser::parse_unsupported_value(const Token& keyword) {
         expect_punct(")", "after the function parameters");
     }
     if (peek_punct("{")) skip_block();
-    return Value{UnsupportedValue{keyword.text()}};
+    return Value{OpaqueValue{keyword.text(), "", FileLoc{}}};
 }
 
 Value SceneParser::parse_array_declaration(const Token& keyword) {

@@ -33,6 +33,9 @@ namespace mirage::scene_detail {
 /// A complete, formatted error message, thrown from deep in the parser.
 struct ParseFailure {
     std::string message;
+    std::string reason;        // the message alone, without its place (for opaque values)
+    FileLoc loc;               // its place
+    bool from_opaque = false;  // a use of an opaque value (see OpaqueValue)
 };
 
 /// Why a file is being read: the main file, an #include, or a macro body.  Chained to the
@@ -186,7 +189,7 @@ class SceneParser {
     bool is_identifier(const Token& t) const;
     /// Ends the parse at `t` when it is a word that is neither a keyword nor declared: a
     /// typo where a block's item or its closing brace belongs.
-    void reject_unknown_word(const Token& t) const;
+    void reject_unknown_word(const Token& t);
 
     void push_frame(std::shared_ptr<const SourceFile> file, std::size_t begin, std::size_t end,
                     FrameContext::Kind kind, const std::string& macro_name, const Token& at);
@@ -247,6 +250,30 @@ class SceneParser {
         ScopedFlag defer(defer_directives_, true);
         return peek_punct("[", ahead);
     }
+
+    // ---- opaque values (parse_opaque.cpp) ----
+    /// Collects the first reason a declaration cannot be evaluated (see OpaqueValue).
+    struct OpaqueCapture {
+        bool captured = false;
+        std::string reason;
+        FileLoc loc;
+    };
+    /// The right-hand side of a #declare or #local: parse_rvalue, kept as an OpaqueValue when
+    /// something in it is unsupported (strict and lenient) or cannot be read (lenient).
+    Value parse_declared_value(const Token& name);
+    /// What the value of the identifier `name` stands for when it is used: the value itself,
+    /// or for an opaque value its lenient stand-in; fails at the use (with the opaque value's
+    /// reason) when there is none.  Inside a declaration the use makes that one opaque too.
+    const Value& use_value(const Token& name, const Symbol& symbol, const Value& value);
+    [[noreturn]] void fail_opaque_use(const Token& name, const Symbol& symbol,
+                                      const OpaqueValue& value);
+    /// After a failure in a statement that began with brace balance `balance`: skips to its end
+    /// (the braces opened since closed, or the ';' of a value without braces).
+    void recover_statement(int balance);
+    OpaqueCapture* opaque_capture_ = nullptr;
+    bool copying_value_ = false;  // parse_rvalue copies an identifier: opaque values stay so
+    int brace_balance_ = 0;       // '{' minus '}' read by next()
+    std::map<std::string, Value> stand_ins_;
 
     // ---- expressions (parse_expressions.cpp) ----
     Numeric parse_express();
