@@ -322,6 +322,7 @@ const Token& SceneParser::peek(std::size_t ahead) {
 Token SceneParser::next() {
     Token t = peek(0);
     lookahead_.pop_front();
+    ++tokens_read_;
     if (t.kind() == TokenKind::Punct)
         brace_balance_ += t.text() == "{" ? 1 : t.text() == "}" ? -1 : 0;
     return t;

@@ -271,8 +271,9 @@ class SceneParser {
     /// (the braces opened since closed, or the ';' of a value without braces).
     void recover_statement(int balance);
     OpaqueCapture* opaque_capture_ = nullptr;
-    bool copying_value_ = false;  // parse_rvalue copies an identifier: opaque values stay so
-    int brace_balance_ = 0;       // '{' minus '}' read by next()
+    bool copying_value_ = false;   // parse_rvalue copies an identifier: opaque values stay so
+    int brace_balance_ = 0;        // '{' minus '}' read by next()
+    std::size_t tokens_read_ = 0;  // tokens read by next()
     std::map<std::string, Value> stand_ins_;
 
     // ---- expressions (parse_expressions.cpp) ----
@@ -307,8 +308,15 @@ class SceneParser {
     bool starts_object(const Token& t) const;
     bool is_unsupported_object_keyword(const Token& t) const;
     std::optional<ObjectNode> parse_object();
+    std::optional<ObjectNode> parse_object_unguarded();
     ObjectNode parse_shape(const Token& keyword);
     ObjectNode parse_union(const Token& keyword);
+    ObjectNode parse_csg(const Token& keyword);
+    ObjectNode parse_unknown_object(const Token& keyword);
+    void parse_bound_or_clip(ObjectNode& object);
+    // ---- shapes (parse_shapes.cpp) ----
+    static bool is_shape_keyword(const std::string& word);
+    Shape parse_shape_arguments(const Token& keyword);
     ObjectNode parse_object_statement(const Token& keyword);
     ObjectNode parse_light_source(const Token& keyword);
     void parse_object_modifiers(ObjectNode& object, const Token& keyword);
@@ -327,6 +335,7 @@ class SceneParser {
 
     // ---- the scene (parser.cpp) ----
     void parse_top_level();
+    bool parse_top_level_item();  // false at the end of the file
     void parse_global_settings(const Token& keyword);
     void parse_background(const Token& keyword);
     void parse_sky_sphere(const Token& keyword);

@@ -92,14 +92,27 @@ sphere { 0, B }
     EXPECT_EQ(testing::float_symbol(s, "B"), 5.0);
 }
 
-TEST(Opaque, LenientUseOfAnUnreadNumberIsAnErrorAtItsUse) {
-    const std::string e = parse_error(R"(
+TEST(Opaque, LenientObjectThatUsesAnUnreadNumberBecomesAnUnknownObject) {
+    // Its extent needs the number: it is recorded, with the reason, as an object the
+    // compiler cannot bound; the next object is read as usual.
+    Scene s = parse_ok(R"(
 #declare A = 2 * no_such_function(3, 4);
 sphere { 0, A }
+sphere { x, 1 }
 )",
-                                      lenient());
-    EXPECT_EQ(e.rfind("scene.pov:3:13:", 0), 0u) << e;
-    EXPECT_NE(e.find("no_such_function"), std::string::npos) << e;
+                       lenient());
+    ASSERT_EQ(s.primitives.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.primitives[0].shape).center, glm::dvec3(1, 0, 0));
+    ASSERT_EQ(s.unknown_objects.size(), 1u);
+    EXPECT_EQ(s.unknown_objects[0].loc.line, 3);
+    EXPECT_NE(s.unknown_objects[0].what.find("no_such_function"), std::string::npos)
+        << s.unknown_objects[0].what;
+}
+
+TEST(Opaque, StrictUseOfAnUnreadNumberIsAnErrorAtItsUse) {
+    // Strict mode keeps only what is unsupported: an unknown function is an error at once.
+    const std::string e = parse_error("#declare A = 2 * no_such_function(3, 4);\n");
+    EXPECT_EQ(e.rfind("scene.pov:1:18:", 0), 0u) << e;
 }
 
 TEST(Opaque, AnExpressionOfAnOpaqueValueIsOpaqueToo) {
