@@ -169,7 +169,7 @@ def survey_scene(rel, args):
     row["ground_height"] = ""
     if status == "error":
         hint = GROUND_HINT.search(err)
-        if hint and "below the ground" in err:
+        if hint and "not above the ground" in err:
             ground = hint.group(1)
             wrap_g = os.path.join(work, name + "_ground.pov")
             with open(wrap_g, "w") as f:
@@ -181,7 +181,7 @@ def survey_scene(rel, args):
     row["compile"] = status
     row["compile_error"] = "" if status == "ok" else (
         mirage_reason(err) if status == "error" else status)
-    row["camera_below_ground"] = "1" if status == "error" and "below the ground" in err else "0"
+    row["camera_below_ground"] = "1" if status == "error" and "not above the ground" in err else "0"
 
     # (b) trace and POV-Ray at 160x120.
     trace_png = os.path.join(work, "trace.png")

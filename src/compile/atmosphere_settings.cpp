@@ -23,6 +23,7 @@ const char* const kKnown[] = {
     "Mirage_Tolerance",
     "Mirage_Extent",
     "Mirage_Unit",
+    "Mirage_Ground_Height",
     "Mirage_Layers",
     "Mirage_Layer_Count",
     // mirage.inc's own and the compiled layers' names
@@ -192,6 +193,8 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
                               " must be > 0 (metres per unit)");
         s.unit_m = *unit;
     }
+    MIRAGE_TRY(ground, r.number("Mirage_Ground_Height"));
+    if (ground) s.ground_height = *ground;
     MIRAGE_TRY(mode, r.text("Mirage_Layers", "adaptive"));
     if (mode) {
         if (*mode == "adaptive") {

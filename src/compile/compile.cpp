@@ -18,8 +18,10 @@
 #include "layers/outcome.h"
 #include "pov/emit_layers.h"
 #include "scene/camera.h"
+#include "scene/ground.h"
 #include "scene/parser.h"
 #include "trace/scene_accel.h"
+#include "trace/scene_extent.h"
 #include "util/atomic_file.h"
 #include "util/check.h"
 #include "util/format.h"
@@ -142,10 +144,13 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     po.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
     auto parsed = parse_scene_file(opt.scene, po);
     if (!parsed) return parsed.error();
-    const Scene& scene = *parsed;
-    auto settings_r = read_atmosphere_settings(scene);
+    auto settings_r = read_atmosphere_settings(*parsed);
     if (!settings_r) return settings_r.error();
     AtmosphereSettings settings = *settings_r;
+    // Heights above the atmosphere's ground from here on (scene/ground.h).
+    const Scene as_parsed = settings.ground_height != 0.0 ? *parsed : Scene{};
+    lower_scene(*parsed, settings.ground_height);
+    const Scene& scene = *parsed;
     if (opt.tolerance_px) {
         if (!(*opt.tolerance_px > 0.0))
             return make_error("--tolerance " + shortest(*opt.tolerance_px) +
@@ -167,33 +172,44 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
 
     const Camera& cam = scene.camera;
     const double eye_y = cam.location.y;
-    if (!(eye_y > 0.0)) {
-        const std::string at = cam.loc.file.empty()
+    const std::string cam_at = cam.loc.file.empty()
                                    ? scene.file + ": "
                                    : cam.loc.file + ":" + std::to_string(cam.loc.line) + ":" +
                                          std::to_string(cam.loc.column) + ": ";
-        return make_error(at + "the camera is at y = " + shortest(eye_y) +
-                          ": it must be above the ground (y = 0) for an atmosphere over it");
-    }
-
-    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
+    if (!camera_has_one_viewpoint(cam))
+        return make_error(cam_at + "the " + camera_type_name(cam.type) +
+                          " camera's rays start at different points: mirage compile fits the "
+                          "layers to the rays of one eye point");
     auto accel_r = SceneAccel::build(scene);
     if (!accel_r) return accel_r.error();
     const SceneAccel& accel = *accel_r;
+    if (!(eye_y > 0.0)) {
+        std::optional<double> lowest;
+        if (!accel.finite_bounds().empty())
+            lowest = accel.finite_bounds().lo.y + settings.ground_height;
+        return make_error(camera_below_ground_message(
+            settings.ground_height != 0.0 ? as_parsed : scene, settings.ground_height, lowest));
+    }
+
+    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
     double extent = 0.0;
     if (settings.extent) {
         extent = *settings.extent;
         rep.left_out.push_back("the atmosphere reaches " + sig(extent, 4) +
                                " units from the camera (Mirage_Extent)");
     } else {
-        const Aabb& b = accel.finite_bounds();
+        const SceneExtent objects = scene_extent(scene, accel);
+        for (const auto& note : objects.bounded) rep.left_out.push_back(note);
+        for (const auto& note : objects.unbounded) rep.warnings.push_back(note);
+        const Aabb& b = objects.finite;
         if (b.empty() || !b.finite()) {
-            if (settings.declared && !scene.skipped.empty())
-                return make_error(scene.skipped.front().loc.file + ":" +
-                                  std::to_string(scene.skipped.front().loc.line) + ":" +
-                                  std::to_string(scene.skipped.front().loc.column) + ": " +
-                                  scene.skipped.front().what +
-                                  " has no extent mirage can compute; declare Mirage_Extent");
+            if (settings.declared && objects.first_unbounded)
+                return make_error(objects.first_unbounded->file + ":" +
+                                  std::to_string(objects.first_unbounded->line) + ":" +
+                                  std::to_string(objects.first_unbounded->column) + ": " +
+                                  objects.first_unbounded_what +
+                                  " has no extent mirage can compute, nor has any other object; "
+                                  "declare Mirage_Extent (units from the camera)");
             if (settings.declared)
                 return make_error(scene.file +
                                   ": the scene has no finite object to take the atmosphere's "
@@ -204,11 +220,6 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                 extent = std::max(extent, std::hypot(x - cam.location.x, z - cam.location.z));
             }
             extent *= 1.25;
-            if (!scene.skipped.empty())
-                rep.warnings.push_back("objects mirage does not know (" +
-                                       scene.skipped.front().what +
-                                       ", ...) were left out of the extent; declare Mirage_Extent "
-                                       "if they lie farther away");
         }
     }
     if (extent <= 0.0) extent = 100.0 * eye_y;
@@ -500,6 +511,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     LayerEmitSettings es;
     es.camera_y = eye_y;
     es.extent = emitted_box;
+    es.ground_height = settings.ground_height;
     es.layout = gaps ? LayerLayout::Gaps : LayerLayout::Nested;
     es.gap = gap;
     es.header = {"mirage_layers.inc: the banded atmosphere of " + rep.name + " at " +

@@ -10,6 +10,7 @@
 #include "compile/library_paths.h"
 #include "image/image_io.h"
 #include "scene/camera.h"
+#include "scene/ground.h"
 #include "scene/parser.h"
 #include "trace/curved_propagator.h"
 #include "util/format.h"
@@ -67,9 +68,11 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     po.strict = true;  // the tracer renders every object: none may be left out silently
     auto parsed = parse_scene_file(opt.scene, po);
     if (!parsed) return parsed.error();
-    const Scene& scene = *parsed;
-    auto settings = read_atmosphere_settings(scene);
+    auto settings = read_atmosphere_settings(*parsed);
     if (!settings) return settings.error();
+    // Heights above the atmosphere's ground (scene/ground.h); straight rays need no ground.
+    if (opt.atmosphere && settings->declared) lower_scene(*parsed, settings->ground_height);
+    const Scene& scene = *parsed;
 
     TraceReport report;
     report.scene = opt.scene;
