@@ -63,10 +63,6 @@ CameraRay camera_ray(const Camera& camera, double x, double y, int width, int he
     }
     CameraRay ray{camera.location, glm::normalize(camera.direction), true};
     const double angle_rad = camera.angle_deg * kPi / 180.0;
-    const auto no_ray = [&]() {
-        ray.traced = false;
-        return ray;
-    };
     glm::dvec3 d(0.0);
     switch (camera.type) {
         case CameraType::Perspective:
@@ -93,8 +89,10 @@ CameraRay camera_ray(const Camera& camera, double x, double y, int width, int he
             } else {
                 fy /= aspect;
             }
+            // Outside the unit circle POV-Ray traces no ray; the direction the mapping would
+            // give is kept (distinct per pixel, for callers that need one for every pixel).
             const double rad = std::sqrt(fx * fx + fy * fy);
-            if (rad > 1.0) return no_ray();
+            if (rad > 1.0) ray.traced = false;
             double phi = 0.0;
             if (rad != 0.0) phi = fx < 0.0 ? kPi - std::asin(fy / rad) : std::asin(fy / rad);
             const double theta = camera.type == CameraType::Fisheye
@@ -105,7 +103,7 @@ CameraRay camera_ray(const Camera& camera, double x, double y, int width, int he
             const double cy = std::cos(theta), sy = std::sin(theta);
             if (camera.type == CameraType::Omnimax &&
                 sx * sy < std::tan(135.0 * kPi / 180.0) * cy) {
-                return no_ray();
+                ray.traced = false;
             }
             d = cx * sy * right + sx * sy * up + cy * direction;
             break;

@@ -15,8 +15,8 @@ namespace mirage {
 struct CameraRay {
     glm::dvec3 origin{0.0};
     glm::dvec3 direction{0.0, 0.0, 1.0};  // normalised
-    bool traced = true;  // false where the projection has no ray (outside a fisheye's circle):
-                         // POV-Ray shows black there; direction is then the camera's
+    bool traced = true;  // false where POV-Ray traces no ray (outside a fisheye's circle) and
+                         // shows black; the direction continues the projection's mapping
 };
 
 /// The primary ray POV-Ray 3.7 traces for image position (x, y) in pixels of a width x height

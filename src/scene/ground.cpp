@@ -67,9 +67,11 @@ std::string camera_below_ground_message(const Scene& scene, double ground_height
                  ", " + place(planes.lowest->loc) + ")";
         }
     } else if (lowest_object_y && *lowest_object_y < cam.location.y) {
-        m += "; the scene has no horizontal plane below the camera: declare Mirage_Ground_Height "
-             "below it (its objects reach down to y = " +
-             sig(*lowest_object_y, 6) + ")";
+        m += "; the scene has no horizontal plane below the camera; its objects reach down to "
+             "y = " +
+             sig(*lowest_object_y, 6) +
+             ": #declare Mirage_Ground_Height = " + sig(*lowest_object_y, 6) +
+             "; puts the ground there";
     } else {
         m += "; the scene has no horizontal plane below the camera: declare Mirage_Ground_Height "
              "below it";

@@ -200,7 +200,7 @@ void SceneParser::parse_pigment_body(Pigment& p, const Token& kw) {
                 if (p.kind != PigmentKind::Gradient) {
                     // POV-Ray refuses it too; in lenient mode the pattern may have been skipped.
                     std::string what = p.kind == PigmentKind::Solid ? "plain colour" : "checker";
-                    if (options_.strict) {
+                    if (options_.strict && !opaque_capture_) {
                         fail(item, "color_map needs a pattern such as gradient (a " + what +
                                        " has none)");
                     }

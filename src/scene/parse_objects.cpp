@@ -240,9 +240,13 @@ ObjectNode SceneParser::parse_shape(const Token& kw) {
         return copy;
     }
     ObjectNode node;
-    node.kind = ObjectNode::Kind::Shape;
-    node.loc = kw.loc();
-    node.shape = parse_shape_arguments(kw);
+    if (kw.is_word("mesh") || kw.is_word("mesh2")) {
+        node = parse_mesh(kw);
+    } else {
+        node.kind = ObjectNode::Kind::Shape;
+        node.loc = kw.loc();
+        node.shape = parse_shape_arguments(kw);
+    }
     parse_object_modifiers(node, kw);
     return node;
 }

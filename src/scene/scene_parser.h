@@ -317,6 +317,9 @@ class SceneParser {
     // ---- shapes (parse_shapes.cpp) ----
     static bool is_shape_keyword(const std::string& word);
     Shape parse_shape_arguments(const Token& keyword);
+    Shape parse_polygon(const Token& keyword);
+    ObjectNode parse_mesh(const Token& keyword);
+    std::optional<Texture> parse_mesh_triangle_texture();
     ObjectNode parse_object_statement(const Token& keyword);
     ObjectNode parse_light_source(const Token& keyword);
     void parse_object_modifiers(ObjectNode& object, const Token& keyword);

@@ -67,25 +67,27 @@ struct Superellipsoid {
     double e = 1.0;  // east-west exponent
     double n = 1.0;  // north-south exponent
 };
-/// A triangle mesh (mesh, mesh2, and a single triangle or smooth_triangle).
+/// A triangle mesh (mesh, mesh2, and a single triangle or smooth_triangle).  A mesh with
+/// textures on its triangles is parsed into one Mesh per texture.
 struct MeshData {
     std::vector<glm::dvec3> vertices;
-    std::vector<glm::dvec3> normals;  // per vertex of a face (smooth faces)
+    std::vector<glm::dvec3> normals;  // unit vertex normals of smooth faces
     struct Face {
         int v[3] = {0, 0, 0};
         int n[3] = {-1, -1, -1};  // indices into normals; -1: flat
-        int texture = -1;         // index into Mesh::textures; -1: the mesh's own
     };
     std::vector<Face> faces;
     glm::dvec3 inside_vector{0.0};  // zero: the mesh has no inside
+    bool single_precision = true;   // POV-Ray holds meshes in floats, single triangles not
 };
 struct Mesh {
     std::shared_ptr<const MeshData> data;
 };
-/// A polygon in the xy plane of its own space (POV-Ray transforms its points there).
+/// A polygon in the xy plane of its own space (POV-Ray's Compute_Polygon puts it there).
 struct Polygon {
     std::vector<glm::dvec2> points;  // the outline(s), closed sub-polygons one after another
-    glm::dmat4 to_plane{1.0};        // from the polygon's points (as written) to its xy plane
+    glm::dmat4 plane_to_shape{1.0};  // from its plane to the points as written
+    bool degenerate = false;         // collinear or not coplanar points: POV-Ray ignores it
 };
 enum class SplineKind : std::uint8_t { Linear, Quadratic, Cubic, Bezier };
 struct Prism {  // the profile in the xz plane, swept along y from height1 to height2

@@ -110,8 +110,9 @@ sphere { <0, 0, 20>, 1 pigment { rgb 1 } }
 )");
     auto r = compile_scene(options(scene, dir + "/out"));
     ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.message().find("no horizontal plane below the camera: declare "
-                               "Mirage_Ground_Height below it (its objects reach down to y = -1)"),
+    EXPECT_NE(r.message().find("no horizontal plane below the camera; its objects reach down "
+                               "to y = -1: #declare Mirage_Ground_Height = -1; puts the ground "
+                               "there"),
               std::string::npos)
         << r.message();
 }

@@ -2,6 +2,9 @@
 
 #include <sstream>
 
+#include "trace/shapes/mesh.h"
+#include "trace/shapes/poly.h"
+
 namespace mirage {
 
 std::string primitive_place(const Primitive& p) {
@@ -11,6 +14,11 @@ std::string primitive_place(const Primitive& p) {
 }
 
 Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitive& primitive) {
+    if (const auto* m = std::get_if<Mesh>(&primitive.shape)) return prepare_mesh(*m, primitive);
+    if (const auto* q = std::get_if<Polynomial>(&primitive.shape)) return prepare_poly(*q, primitive);
+    if (const auto* p = std::get_if<Polygon>(&primitive.shape)) {
+        return prepare_polygon(*p, primitive);
+    }
     return make_error(primitive_place(primitive) + "the tracer cannot render a " +
                       shape_keyword(primitive.shape) + " yet");
 }
