@@ -246,6 +246,8 @@ ObjectNode SceneParser::parse_shape(const Token& kw) {
         node.kind = ObjectNode::Kind::Shape;
         node.loc = kw.loc();
         node.shape = parse_shape_arguments(kw);
+        // POV-Ray turns text by 0.001 degrees about each axis, against cracks along the axes.
+        if (kw.is_word("text")) transform_object(node, make_rotation(glm::dvec3(0.001)));
     }
     parse_object_modifiers(node, kw);
     return node;

@@ -1,11 +1,13 @@
 // The arguments of each shape, after POV-Ray 3.7's parse.cpp (Parse_Sphere, Parse_Cone...):
 // what comes between a shape's '{' and its object modifiers.
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <optional>
 
 #include "scene/scene_parser.h"
 #include "scene/transform.h"
+#include "scene/truetype.h"
 
 namespace mirage::scene_detail {
 namespace {
@@ -16,9 +18,9 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 
 // The shapes parse_shape_arguments (or parse_mesh) reads.
 const char* const kShapeKeywords[] = {
-    "sphere",   "plane",           "box",     "cylinder", "disc",  "cone",  "torus",
-    "quadric",  "triangle",        "smooth_triangle",     "polygon", "mesh", "mesh2",
-    "poly",     "cubic",           "quartic",
+    "sphere", "plane",   "box",      "cylinder",        "disc",    "cone",
+    "torus",  "quadric", "triangle", "smooth_triangle", "polygon", "mesh",
+    "mesh2",  "poly",    "cubic",    "quartic",         "text",
 };
 
 bool SceneParser::is_shape_keyword(const std::string& word) {
@@ -145,6 +147,7 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
         return Mesh{data};
     }
     if (w == "polygon") return parse_polygon(kw);
+    if (w == "text") return parse_text(kw);
     if (w == "poly" || w == "cubic" || w == "quartic") {
         Polynomial poly;
         Token at = peek(0);
@@ -174,6 +177,68 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
         return poly;
     }
     fail(kw, "expected an object, got " + describe(kw));
+}
+
+std::string SceneParser::find_scene_file(const std::string& name,
+                                         const std::string& extension) const {
+    namespace fs = std::filesystem;
+    std::vector<std::string> dirs;
+    if (!frames_.empty())
+        dirs.push_back(fs::path(frames_.back().file->path).parent_path().string());
+    for (const std::string& lib : options_.library_paths) dirs.push_back(lib);
+    for (const std::string& candidate : {name, name + extension}) {
+        std::error_code ec;
+        if (fs::path(candidate).is_absolute()) {
+            if (fs::is_regular_file(candidate, ec)) return candidate;
+            continue;
+        }
+        for (const std::string& d : dirs) {
+            const fs::path p = d.empty() ? fs::path(candidate) : fs::path(d) / candidate;
+            if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
+        }
+    }
+    return "";
+}
+
+Shape SceneParser::parse_text(const Token& kw) {
+    // text { ttf "font" "string" thickness, offset }
+    if (!peek_word("ttf")) {
+        Token t = peek(0);
+        if (t.is_word("internal")) {
+            next();
+            unsupported(t, "text with an internal font");
+            parse_float();
+            accept_comma();
+            parse_string(false);
+            accept_comma();
+            parse_float();
+            accept_comma();
+            parse_vector();
+            return Text{};
+        }
+        fail(t, "expected 'ttf' after 'text {', got " + describe(t));
+    }
+    next();
+    Token at = peek(0);
+    const std::string font_name = parse_string(true);
+    accept_comma();
+    const std::string string = parse_string(false);
+    accept_comma();
+    const double thickness = parse_float();
+    accept_comma();
+    const glm::dvec3 offset = parse_vector();
+    const std::string path = find_scene_file(font_name, ".ttf");
+    if (path.empty()) fail(at, "cannot find the font file '" + font_name + "'");
+    auto& font = fonts_[path];
+    if (!font) {
+        auto loaded = load_truetype_font(path);
+        if (!loaded) fail(at, loaded.message());
+        font = *loaded;
+    }
+    auto text = layout_text(*font, string, thickness, offset);
+    if (!text) fail(at, text.message());
+    (void)kw;
+    return *text;
 }
 
 Shape SceneParser::parse_polygon(const Token& kw) {

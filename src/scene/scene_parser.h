@@ -28,6 +28,10 @@
 #include "scene/scene.h"
 #include "scene/value.h"
 
+namespace mirage {
+class TrueTypeFont;
+}
+
 namespace mirage::scene_detail {
 
 /// A complete, formatted error message, thrown from deep in the parser.
@@ -319,6 +323,11 @@ class SceneParser {
     Shape parse_shape_arguments(const Token& keyword);
     Shape parse_polygon(const Token& keyword);
     ObjectNode parse_mesh(const Token& keyword);
+    Shape parse_text(const Token& keyword);
+    /// A file the scene names (a font, an image), looked up as POV-Ray does: as given, in the
+    /// including file's directory, then the library paths, each also with `extension` added.
+    std::string find_scene_file(const std::string& name, const std::string& extension) const;
+    std::map<std::string, std::shared_ptr<TrueTypeFont>> fonts_;
     std::optional<Texture> parse_mesh_triangle_texture();
     ObjectNode parse_object_statement(const Token& keyword);
     ObjectNode parse_light_source(const Token& keyword);

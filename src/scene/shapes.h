@@ -149,18 +149,26 @@ struct Isosurface {
     bool all_intersections = false;
     bool open = false;
 };
-/// Text: glyph outlines (quadratic Bezier contours, em units) extruded along z from 0 to
-/// thickness, placed along x with the font's advances.
+/// A TrueType glyph as POV-Ray's truetype.cpp holds it: its contours in em units (font units
+/// over unitsPerEm), each with its first point repeated at the end, and the glyph header's
+/// extent in font units.
 struct GlyphData {
     struct Contour {
-        std::vector<glm::dvec2> points;  // on- and off-curve points as the font gives them
-        std::vector<bool> on_curve;
+        std::vector<double> x, y;           // count + 1 points
+        std::vector<unsigned char> on_curve;
     };
     std::vector<Contour> contours;
-    glm::dvec2 offset{0.0};  // where the glyph's origin lies in the string
+    int x_min = 0, y_min = 0, x_max = 0, y_max = 0;  // font units
+    int units_per_em = 2048;
 };
+/// Text: glyphs extruded along z from 0 to thickness, each moved to its place in the string
+/// (POV-Ray's ProcessNewTTF: advances, left side bearings, kerning, the offset vector).
 struct Text {
-    std::vector<std::shared_ptr<const GlyphData>> glyphs;
+    struct Placed {
+        std::shared_ptr<const GlyphData> glyph;
+        glm::dvec3 offset{0.0};
+    };
+    std::vector<Placed> glyphs;
     double thickness = 1.0;
 };
 

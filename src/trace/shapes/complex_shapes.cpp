@@ -4,6 +4,7 @@
 
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/poly.h"
+#include "trace/shapes/text.h"
 
 namespace mirage {
 
@@ -16,6 +17,7 @@ std::string primitive_place(const Primitive& p) {
 Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitive& primitive) {
     if (const auto* m = std::get_if<Mesh>(&primitive.shape)) return prepare_mesh(*m, primitive);
     if (const auto* q = std::get_if<Polynomial>(&primitive.shape)) return prepare_poly(*q, primitive);
+    if (const auto* t = std::get_if<Text>(&primitive.shape)) return prepare_text(*t, primitive);
     if (const auto* p = std::get_if<Polygon>(&primitive.shape)) {
         return prepare_polygon(*p, primitive);
     }
