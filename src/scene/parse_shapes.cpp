@@ -18,9 +18,9 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 
 // The shapes parse_shape_arguments (or parse_mesh) reads.
 const char* const kShapeKeywords[] = {
-    "sphere", "plane",   "box",      "cylinder",        "disc",    "cone",
-    "torus",  "quadric", "triangle", "smooth_triangle", "polygon", "mesh",
-    "mesh2",  "poly",    "cubic",    "quartic",         "text",
+    "sphere",   "plane",           "box",     "cylinder", "disc",  "cone", "torus", "quadric",
+    "triangle", "smooth_triangle", "polygon", "mesh",     "mesh2", "poly", "cubic", "quartic",
+    "text",     "prism",           "lathe",   "sor",
 };
 
 bool SceneParser::is_shape_keyword(const std::string& word) {
@@ -148,6 +148,92 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
     }
     if (w == "polygon") return parse_polygon(kw);
     if (w == "text") return parse_text(kw);
+    if (w == "lathe") {
+        Lathe lathe;
+        if (accept_word("linear_spline")) {
+            lathe.spline = SplineKind::Linear;
+        } else if (accept_word("quadratic_spline")) {
+            lathe.spline = SplineKind::Quadratic;
+        } else if (accept_word("cubic_spline")) {
+            lathe.spline = SplineKind::Cubic;
+        } else if (accept_word("bezier_spline")) {
+            lathe.spline = SplineKind::Bezier;
+        }
+        Token at = peek(0);
+        const double n = parse_float();
+        const int minimum = lathe.spline == SplineKind::Linear      ? 2
+                            : lathe.spline == SplineKind::Quadratic ? 3
+                                                                    : 4;
+        if (n < minimum || n > 1e7 ||
+            (lathe.spline == SplineKind::Bezier && (static_cast<int>(n) & 3) != 0)) {
+            fail(at, "a lathe with these splines needs at least " + std::to_string(minimum) +
+                         " points (four per Bezier segment)");
+        }
+        for (int i = 0; i < static_cast<int>(n); ++i) {
+            accept_comma();
+            Token pt = peek(0);
+            const glm::dvec3 v = parse_vector();
+            if (i > 0 && i < static_cast<int>(n) - 1 && v.x < 0.0) {
+                fail(pt, "incorrect point in lathe: a negative radius");
+            }
+            lathe.points.emplace_back(v.x, v.y);
+        }
+        return lathe;
+    }
+    if (w == "sor") {
+        Sor sor;
+        Token at = peek(0);
+        const double n = parse_float();
+        if (n < 4.0 || n > 1e7) fail(at, "a surface of revolution needs at least four points");
+        for (int i = 0; i < static_cast<int>(n); ++i) {
+            accept_comma();
+            Token pt = peek(0);
+            const glm::dvec3 v = parse_vector();
+            if (v.x < 0.0 || (i > 1 && i < static_cast<int>(n) - 1 && v.y <= sor.points.back().y)) {
+                fail(pt,
+                     "incorrect point in surface of revolution (radii >= 0, heights "
+                     "increasing)");
+            }
+            sor.points.emplace_back(v.x, v.y);
+        }
+        if (accept_word("open")) sor.open = true;
+        return sor;
+    }
+    if (w == "prism") {
+        Prism prism;
+        while (true) {
+            if (accept_word("linear_spline")) {
+                prism.spline = SplineKind::Linear;
+            } else if (accept_word("quadratic_spline")) {
+                prism.spline = SplineKind::Quadratic;
+            } else if (accept_word("cubic_spline")) {
+                prism.spline = SplineKind::Cubic;
+            } else if (accept_word("bezier_spline")) {
+                prism.spline = SplineKind::Bezier;
+            } else if (accept_word("linear_sweep")) {
+                prism.conic = false;
+            } else if (accept_word("conic_sweep")) {
+                prism.conic = true;
+            } else {
+                break;
+            }
+        }
+        prism.height1 = parse_float();
+        accept_comma();
+        prism.height2 = parse_float();
+        accept_comma();
+        if (prism.height1 > prism.height2) std::swap(prism.height1, prism.height2);
+        Token at = peek(0);
+        const double n = parse_float();
+        if (n < 3.0 || n > 1e7) fail(at, "a prism needs at least three points");
+        for (int i = 0; i < static_cast<int>(n); ++i) {
+            accept_comma();
+            const glm::dvec3 v = parse_vector();
+            prism.points.emplace_back(v.x, v.y);
+        }
+        if (accept_word("open")) prism.open = true;
+        return prism;
+    }
     if (w == "poly" || w == "cubic" || w == "quartic") {
         Polynomial poly;
         Token at = peek(0);

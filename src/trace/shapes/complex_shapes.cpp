@@ -2,8 +2,10 @@
 
 #include <sstream>
 
+#include "trace/shapes/lathe_sor.h"
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/poly.h"
+#include "trace/shapes/prism.h"
 #include "trace/shapes/text.h"
 
 namespace mirage {
@@ -16,8 +18,12 @@ std::string primitive_place(const Primitive& p) {
 
 Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitive& primitive) {
     if (const auto* m = std::get_if<Mesh>(&primitive.shape)) return prepare_mesh(*m, primitive);
-    if (const auto* q = std::get_if<Polynomial>(&primitive.shape)) return prepare_poly(*q, primitive);
+    if (const auto* q = std::get_if<Polynomial>(&primitive.shape))
+        return prepare_poly(*q, primitive);
     if (const auto* t = std::get_if<Text>(&primitive.shape)) return prepare_text(*t, primitive);
+    if (const auto* r = std::get_if<Prism>(&primitive.shape)) return prepare_prism(*r, primitive);
+    if (const auto* l = std::get_if<Lathe>(&primitive.shape)) return prepare_lathe(*l, primitive);
+    if (const auto* o = std::get_if<Sor>(&primitive.shape)) return prepare_sor(*o, primitive);
     if (const auto* p = std::get_if<Polygon>(&primitive.shape)) {
         return prepare_polygon(*p, primitive);
     }

@@ -227,7 +227,8 @@ class PolyShape final : public ComplexShape {
 
 int polynomial_term_count(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; }
 
-Result<std::shared_ptr<const ComplexShape>> prepare_poly(const Polynomial& poly, const Primitive& p) {
+Result<std::shared_ptr<const ComplexShape>> prepare_poly(const Polynomial& poly,
+                                                         const Primitive& p) {
     if (poly.order < 1 || poly.order > kMaxPolynomialOrder ||
         static_cast<int>(poly.coefficients.size()) != polynomial_term_count(poly.order)) {
         return make_error(primitive_place(p) + "poly: order " + std::to_string(poly.order) +
