@@ -40,6 +40,9 @@ constexpr int kMaxLevel = 255;
 // How far the layers reach beyond the scene, in scene extents: far enough that the camera's
 // rays leave them through the top (towards the sky, with eta(infinity)) or reach the ground.
 constexpr double kLayersExtentFactor = 1000.0;
+// The reach of the atmosphere when no object bounds the scene (only planes and the like), in
+// camera heights above the ground.
+constexpr double kUnboundedSceneExtent = 1000.0;
 
 std::string scene_name(const std::string& path) { return fs::path(path).stem().string(); }
 
@@ -203,17 +206,14 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         for (const auto& note : objects.unbounded) rep.warnings.push_back(note);
         const Aabb& b = objects.finite;
         if (b.empty() || !b.finite()) {
-            if (settings.declared && objects.first_unbounded)
-                return make_error(objects.first_unbounded->file + ":" +
-                                  std::to_string(objects.first_unbounded->line) + ":" +
-                                  std::to_string(objects.first_unbounded->column) + ": " +
-                                  objects.first_unbounded_what +
-                                  " has no extent mirage can compute, nor has any other object; "
-                                  "declare Mirage_Extent (units from the camera)");
+            // Nothing bounds the scene (planes, objects taken as unbounded): the atmosphere
+            // reaches far, and the report says how far.
+            extent = kUnboundedSceneExtent * eye_y;
             if (settings.declared)
-                return make_error(scene.file +
-                                  ": the scene has no finite object to take the atmosphere's "
-                                  "extent from; declare Mirage_Extent (units from the camera)");
+                rep.warnings.push_back(
+                    "no object bounds the scene: the atmosphere reaches " + sig(extent, 4) +
+                    " units (" + sig(kUnboundedSceneExtent, 4) +
+                    " camera heights) from the camera; declare Mirage_Extent to choose");
         } else {
             for (int i = 0; i < 4; ++i) {
                 const double x = (i & 1) ? b.hi.x : b.lo.x, z = (i & 2) ? b.hi.z : b.lo.z;

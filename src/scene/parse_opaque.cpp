@@ -20,12 +20,56 @@ bool one_of(const std::string& w, std::initializer_list<const char*> words) {
 
 }  // namespace
 
+void SceneParser::directive_file_io(const Token& keyword) {
+    // POV-Ray's #fopen, #fclose, #read and #write.  Strict: refused.  Lenient: their arguments
+    // are read and nothing is written; #read declares its variables as opaque (nothing read).
+    const std::string& w = keyword.text();
+    unsupported(keyword, "directive '#" + w + "' (file input and output)");
+    if (w == "fopen") {
+        next();                // the file identifier
+        parse_string(true);    // the file name
+        if (is_keyword(peek(0))) next();  // read, write or append
+        return;
+    }
+    if (w == "fclose") {
+        next();
+        return;
+    }
+    expect_punct("(", "after '#" + w + "'");
+    next();  // the file identifier
+    while (accept_punct(",")) {
+        if (w == "read") {
+            Token name = next();
+            if (!is_identifier(name)) fail(name, "expected a variable in #read, got " + describe(name));
+            declare(name, Value{OpaqueValue{"value", "not read: #read is not supported", name.loc()}},
+                    false);
+            continue;
+        }
+        // #write items: strings, numbers, vectors; parse_rvalue-like skipping of one item.
+        const Token& t = peek(0);
+        if (starts_string(t)) {
+            parse_string(false);
+        } else {
+            parse_express();
+        }
+    }
+    expect_punct(")", "after the arguments of '#" + w + "'");
+}
+
 void SceneParser::recover_statement(int balance) {
     // The statement opened braces: read until they are closed again (the failure may lie
     // anywhere inside them).  Without braces: read to its ';' (floats, vectors and colours
     // need one), stopping before what starts the next statement.
     const bool had_braces = brace_balance_ > balance;
+    int failures = 0;
     while (true) {
+        // A directive met on the way may fail as well (it ran as its tokens were read).
+        try {
+            peek(0);
+        } catch (const ParseFailure&) {
+            if (++failures > 1000) throw;
+            continue;
+        }
         const Token& t = peek(0);
         if (t.is_eof()) return;
         if (brace_balance_ <= balance) {

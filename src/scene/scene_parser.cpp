@@ -62,6 +62,14 @@ SceneParser::SceneParser(const ParseOptions& options) : options_(options) {
         sym->loc = FileLoc{"<command line>", 0, 0};
         tables_[0][name] = sym;
     }
+    // What POV-Ray declares for a still image (its animation options' defaults).
+    for (const char* name : {"frame_number", "initial_frame", "final_frame", "initial_clock",
+                             "final_clock", "clock_delta"}) {
+        auto sym = std::make_shared<Symbol>();
+        sym->value.data = Numeric::scalar(0.0);
+        sym->loc = FileLoc{"<image size>", 0, 0};
+        tables_[0][name] = sym;
+    }
     for (const char* name : {"image_width", "image_height"}) {
         auto sym = std::make_shared<Symbol>();
         double v =
@@ -505,7 +513,7 @@ void SceneParser::handle_directive(const Token& hash) {
     }
     if (w == "default") return directive_default(keyword);
     if (w == "fopen" || w == "fclose" || w == "read" || w == "write") {
-        fail(keyword, "unsupported directive '#" + w + "' (file input and output)");
+        return directive_file_io(keyword);
     }
     // '#' before a macro call is allowed, as in POV-Ray.
     if (is_identifier(keyword)) {

@@ -218,6 +218,7 @@ class SceneParser {
     void directive_version(const Token& keyword);
     void directive_message(const Token& hash, const Token& keyword);
     void directive_default(const Token& keyword);
+    void directive_file_io(const Token& keyword);  // parse_opaque.cpp
     void push_cond(Cond type, const Token& hash, const Token& keyword);
     void skip_tokens(Cond type);
     double parse_cond_param();

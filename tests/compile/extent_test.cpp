@@ -62,16 +62,17 @@ TEST(Extent, WithoutABoundItIsTakenAsUnboundedAndTheReportSaysSo) {
     EXPECT_TRUE(any_contains(r->warnings, "taken as unbounded"));
 }
 
-TEST(Extent, OnlyAnUnboundedUnknownObjectNeedsMirageExtent) {
-    auto r = compile_text("alone", std::string(kJulia) + "translate <0, 1, 300> }\n");
-    ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.message().find(":5:1: object 'julia_fractal' has no extent mirage can compute"),
-              std::string::npos)
-        << r.message();
-    EXPECT_NE(r.message().find("declare Mirage_Extent"), std::string::npos);
-    auto ok = compile_text("alone_extent", std::string("#declare Mirage_Extent = 400;\n") + kJulia +
-                                               "translate <0, 1, 300> }\n");
-    EXPECT_TRUE(ok.ok()) << ok.message();
+TEST(Extent, WithNothingBoundingTheSceneTheAtmosphereReachesFarAndSaysSo) {
+    auto r = compile_text("alone", std::string(kJulia) + "translate <0, 1, 300> }\n" +
+                                       "plane { y, 0 pigment { rgb 1 } }\n");
+    ASSERT_TRUE(r.ok()) << r.message();
+    EXPECT_DOUBLE_EQ(r->extent, 1500.0);  // 1000 camera heights
+    EXPECT_TRUE(any_contains(r->warnings, "no object bounds the scene"));
+    EXPECT_TRUE(any_contains(r->warnings, "object 'julia_fractal'"));
+    auto declared = compile_text("alone_extent", std::string("#declare Mirage_Extent = 400;\n") +
+                                                     kJulia + "translate <0, 1, 300> }\n");
+    ASSERT_TRUE(declared.ok()) << declared.message();
+    EXPECT_DOUBLE_EQ(declared->extent, 400.0);
 }
 
 TEST(Extent, WhatTheCompilerDoesNotNeedIsNoError) {
