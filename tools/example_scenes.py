@@ -22,7 +22,12 @@ the main failure reasons (first error line, without its place, grouped), and wri
 OUT/results.csv and OUT/summary.md.  Work files go to OUT/work/FOLDER/SCENE/.
 
     tools/example_scenes.py [--mirage build/mirage] [--out build/example_scenes] [--jobs 2]
-                            [--only SUBSTRING ...] [--timeout 20]
+                            [--only SUBSTRING ...] [--timeout 20] [--check SAMPLE.csv]
+
+With --check, only the scenes of SAMPLE.csv (columns scene, compile, match: 1 when the
+scene must be accepted by mirage compile, and must match POV-Ray at PSNR >= 35 dB) are run,
+and the exit status says whether every expectation held (0), some did not (1) or the example
+scenes are not installed (77, a skip for CTest).
 """
 
 import argparse
@@ -319,14 +324,27 @@ def main():
     ap.add_argument("--only", nargs="*", default=[], help="scenes whose path contains one of these")
     ap.add_argument("--reasons", type=int, default=12, help="reasons listed per kind")
     ap.add_argument("--keep", action="store_true", help="keep the compiled scenes")
+    ap.add_argument("--check", help="a CSV of scenes with their expectations (see above)")
     args = ap.parse_args()
     args.mirage = os.path.abspath(args.mirage)
     args.out = os.path.abspath(args.out)
     if not os.path.isdir(EXAMPLES):
-        sys.exit("no example scenes in %s: apt-get install povray-examples" % EXAMPLES)
+        print("no example scenes in %s: apt-get install povray-examples" % EXAMPLES,
+              file=sys.stderr)
+        sys.exit(77 if args.check else 1)
     if not os.access(args.mirage, os.X_OK):
         sys.exit("%s: not built (make build)" % args.mirage)
-    scenes = find_scenes(EXAMPLES, args.only)
+    expectations = {}
+    if args.check:
+        with open(args.check, newline="") as f:
+            for r in csv.DictReader(l for l in f if not l.startswith("#")):
+                expectations[r["scene"]] = r
+        scenes = sorted(expectations)
+        missing = [s for s in scenes if not os.path.exists(os.path.join(EXAMPLES, s))]
+        if missing:
+            sys.exit("%s: not among the example scenes: %s" % (args.check, ", ".join(missing)))
+    else:
+        scenes = find_scenes(EXAMPLES, args.only)
     os.makedirs(args.out, exist_ok=True)
     start = time.monotonic()
     rows = []
@@ -353,6 +371,21 @@ def main():
         f.write(md)
     os.replace(tmp, os.path.join(args.out, "summary.md"))
     print(md)
+    if args.check:
+        failures = []
+        for r in rows:
+            e = expectations[r["scene"]]
+            if e["compile"] == "1" and r["compile"] != "ok":
+                failures.append("%s: mirage compile: %s" % (r["scene"], r["compile_error"]))
+            if r["compile"].startswith("crash") or r["trace"].startswith("crash"):
+                failures.append("%s: a command crashed" % r["scene"])
+            if e["match"] == "1" and r["match"] != "1":
+                failures.append("%s: no match with POV-Ray (PSNR %s; %s)" % (
+                    r["scene"], r["psnr_db"] or "-", reason_of_mismatch(r)))
+        for f in failures:
+            print("FAILED " + f, file=sys.stderr)
+        print("%d scenes, %d expectations failed" % (len(rows), len(failures)), file=sys.stderr)
+        sys.exit(1 if failures else 0)
 
 
 if __name__ == "__main__":

@@ -18,9 +18,11 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 
 // The shapes parse_shape_arguments (or parse_mesh) reads.
 const char* const kShapeKeywords[] = {
-    "sphere",   "plane",           "box",     "cylinder", "disc",  "cone", "torus", "quadric",
-    "triangle", "smooth_triangle", "polygon", "mesh",     "mesh2", "poly", "cubic", "quartic",
-    "text",     "prism",           "lathe",   "sor",
+    "sphere",         "plane", "box",     "cylinder", "disc",
+    "cone",           "torus", "quadric", "triangle", "smooth_triangle",
+    "polygon",        "mesh",  "mesh2",   "poly",     "cubic",
+    "quartic",        "text",  "prism",   "lathe",    "sor",
+    "superellipsoid",
 };
 
 bool SceneParser::is_shape_keyword(const std::string& word) {
@@ -148,6 +150,15 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
     }
     if (w == "polygon") return parse_polygon(kw);
     if (w == "text") return parse_text(kw);
+    if (w == "superellipsoid") {
+        Superellipsoid s;
+        Token at = peek(0);
+        const glm::dvec3 v = parse_vector();
+        s.e = v.x;
+        s.n = v.y;
+        if (!(s.e > 0.0 && s.n > 0.0)) fail(at, "superellipsoid exponents must be > 0");
+        return s;
+    }
     if (w == "lathe") {
         Lathe lathe;
         if (accept_word("linear_spline")) {

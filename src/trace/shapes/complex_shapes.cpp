@@ -6,6 +6,7 @@
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/poly.h"
 #include "trace/shapes/prism.h"
+#include "trace/shapes/superellipsoid.h"
 #include "trace/shapes/text.h"
 
 namespace mirage {
@@ -24,6 +25,9 @@ Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitiv
     if (const auto* r = std::get_if<Prism>(&primitive.shape)) return prepare_prism(*r, primitive);
     if (const auto* l = std::get_if<Lathe>(&primitive.shape)) return prepare_lathe(*l, primitive);
     if (const auto* o = std::get_if<Sor>(&primitive.shape)) return prepare_sor(*o, primitive);
+    if (const auto* e = std::get_if<Superellipsoid>(&primitive.shape)) {
+        return prepare_superellipsoid(*e, primitive);
+    }
     if (const auto* p = std::get_if<Polygon>(&primitive.shape)) {
         return prepare_polygon(*p, primitive);
     }
