@@ -602,7 +602,10 @@ Numeric SceneParser::parse_function(const Token& name) {
     }
     if (f == "defined") return scalar(parse_ifdef_param() ? 1.0 : 0.0);
 
-    if (one_of(f, {"inside", "now", "trace", "min_extent", "max_extent", "vturbulence"})) {
+    if (one_of(f, {"inside", "trace", "min_extent", "max_extent"})) {
+        return parse_object_function(name);  // parse_queries.cpp
+    }
+    if (one_of(f, {"now", "vturbulence"})) {
         fail(name, "unsupported function '" + f + "'");
     }
     if (is_string_function(f)) {

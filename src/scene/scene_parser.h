@@ -290,6 +290,7 @@ class SceneParser {
     Numeric parse_num_factor();
     Numeric parse_factor_body();
     Numeric parse_function(const Token& name);
+    Numeric parse_object_function(const Token& name);  // trace, inside, min/max_extent
     Numeric parse_identifier_value(const Token& t);
     Numeric apply_period(const Numeric& value, const Token& dot);
     double parse_float();
