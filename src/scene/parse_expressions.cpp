@@ -122,9 +122,15 @@ bool SceneParser::starts_float(const Token& t) const {
             return true;
         case TokenKind::Punct:
             return t.is_punct("(") || t.is_punct("+") || t.is_punct("-") || t.is_punct("!");
-        case TokenKind::Identifier:
+        case TokenKind::Identifier: {
             if (is_keyword(t)) return is_float_function(t.text());
-            return identifier_numeric_size(t.symbol ? t.symbol : lookup(t.text())) == 1;
+            auto sym = t.symbol ? t.symbol : lookup(t.text());
+            if (sym &&
+                std::holds_alternative<std::shared_ptr<const FunctionCode>>(sym->value.data)) {
+                return true;  // a call of a user function
+            }
+            return identifier_numeric_size(sym) == 1;
+        }
         default:
             return false;
     }
@@ -372,6 +378,9 @@ Numeric SceneParser::parse_identifier_value(const Token& t) {
     }
     value = &use_value(t, *sym, *value);  // an opaque value's use fails here, naming its reason
     if (auto* n = std::get_if<Numeric>(&value->data)) return *n;
+    if (auto* f = std::get_if<std::shared_ptr<const FunctionCode>>(&value->data)) {
+        return Numeric::scalar(call_function_value(t, **f));  // parse_functions.cpp
+    }
     fail(t, "expected a numeric expression, got " + value_type_name(*value) + " identifier '" +
                 t.text() + "'");
 }

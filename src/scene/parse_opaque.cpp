@@ -26,8 +26,8 @@ void SceneParser::directive_file_io(const Token& keyword) {
     const std::string& w = keyword.text();
     unsupported(keyword, "directive '#" + w + "' (file input and output)");
     if (w == "fopen") {
-        next();                // the file identifier
-        parse_string(true);    // the file name
+        next();                           // the file identifier
+        parse_string(true);               // the file name
         if (is_keyword(peek(0))) next();  // read, write or append
         return;
     }
@@ -40,8 +40,10 @@ void SceneParser::directive_file_io(const Token& keyword) {
     while (accept_punct(",")) {
         if (w == "read") {
             Token name = next();
-            if (!is_identifier(name)) fail(name, "expected a variable in #read, got " + describe(name));
-            declare(name, Value{OpaqueValue{"value", "not read: #read is not supported", name.loc()}},
+            if (!is_identifier(name))
+                fail(name, "expected a variable in #read, got " + describe(name));
+            declare(name,
+                    Value{OpaqueValue{"value", "not read: #read is not supported", name.loc()}},
                     false);
             continue;
         }
@@ -106,6 +108,8 @@ Value SceneParser::parse_declared_value(const Token& name) {
             if (sym) {
                 what = value_type_name(sym->value);
                 if (what == "light source") what = "object";
+                // F(...) of a function is a float.
+                if (what == "function" && peek(1).is_punct("(")) what = "value";
             }
         } else if (is_keyword(t)) {
             const std::string& w = t.text();

@@ -1050,9 +1050,14 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
             fail(t, "undefined identifier '" + t.text() + "'");
         }
         if (v && std::holds_alternative<Numeric>(v->data)) return numeric();
+        if (v && std::holds_alternative<std::shared_ptr<const FunctionCode>>(v->data)) {
+            ScopedFlag defer(defer_directives_, true);
+            if (peek(1).is_punct("(")) return numeric();  // F(...): a call, not a copy
+        }
         if (v && std::holds_alternative<OpaqueValue>(v->data)) {
             ScopedFlag defer(defer_directives_, true);
-            if (continues_expression(peek(1))) return numeric();
+            // An operator after it, or '(' (a call of a function kept opaque): a use.
+            if (continues_expression(peek(1)) || peek(1).is_punct("(")) return numeric();
         }
         Token name = next();
         ScopedFlag copying(copying_value_, true);
@@ -1125,6 +1130,10 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
         if (w == "array") {
             Token kw = next();
             return finish_other(parse_array_declaration(kw));
+        }
+        if (w == "function") {
+            Token kw = next();
+            return finish_other(parse_function_value(kw));
         }
         static const char* const kUnsupportedValues[] = {
             "normal",     "interior",    "material",  "media",       "density",

@@ -291,6 +291,15 @@ class SceneParser {
     Numeric parse_factor_body();
     Numeric parse_function(const Token& name);
     Numeric parse_object_function(const Token& name);  // trace, inside, min/max_extent
+    // ---- user functions (parse_functions.cpp) ----
+    /// After 'function': [( parameters )] { expression | internal(n) }.
+    Value parse_function_value(const Token& keyword);
+    std::shared_ptr<const FunctionCode> parse_function_block(const Token& keyword,
+                                                             std::vector<std::string> parameters);
+    /// A call F(a, b, ...) of a function value in a float expression.
+    double call_function_value(const Token& name, const FunctionCode& f);
+    int parse_function_expression(FunctionCode& f, int level);
+    int parse_function_primary(FunctionCode& f);
     Numeric parse_identifier_value(const Token& t);
     Numeric apply_period(const Numeric& value, const Token& dot);
     double parse_float();

@@ -85,6 +85,9 @@ std::string value_type_name(const Value& value) {
         std::string operator()(const std::shared_ptr<const MacroDef>&) const { return "macro"; }
         std::string operator()(const UnsupportedValue& u) const { return u.what; }
         std::string operator()(const SkySphere&) const { return "sky_sphere"; }
+        std::string operator()(const std::shared_ptr<const FunctionCode>&) const {
+            return "function";
+        }
     };
     return std::visit(Namer{}, value.data);
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/camera.h"
+#include "scene/function.h"
 #include "scene/lexer.h"
 #include "scene/object_tree.h"
 #include "scene/scene.h"
@@ -84,7 +85,7 @@ using UnsupportedValue = OpaqueValue;
 struct Value {
     std::variant<Numeric, std::string, ObjectNode, Texture, Pigment, Finish, Transform,
                  ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
-                 UnsupportedValue, SkySphere>
+                 UnsupportedValue, SkySphere, std::shared_ptr<const FunctionCode>>
         data;
 };
 
