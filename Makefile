@@ -12,6 +12,9 @@
 #   make compare         band models against the continuous tracer: error against run time
 #                        (build/compare/NAME/: results.csv, error_vs_time.png, contact_sheet.png,
 #                        summary.md; SCENE, and W H or CW CH, default 320x240: a few minutes)
+#   make animate         every frame of an animated scene (default scenes/walk.pov, FRAMES=24,
+#                        320x240 unless W H are given, MODEL=bands or trace) into
+#                        build/animate/NAME/: NAME.mp4, NAME.gif, vanishing.png, summary.md
 #   make clean
 
 BUILD   ?= build
@@ -24,13 +27,20 @@ CW      ?= $(if $(filter command line,$(origin W)),$(W),320)
 CH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 NAME    := $(basename $(notdir $(SCENE)))
+# make animate: its own default scene and size.
+ASCENE  := $(if $(filter command line,$(origin SCENE)),$(SCENE),scenes/walk.pov)
+ANAME   := $(basename $(notdir $(ASCENE)))
+FRAMES  ?= 24
+MODEL   ?= bands
+AW      ?= $(if $(filter command line,$(origin W)),$(W),320)
+AH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 
 # Debian 12 packages the build, the tests and the renders need.
 PACKAGES := g++ make cmake pkg-config povray povray-includes povray-examples libopenimageio-dev \
             openimageio-tools libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev \
-            gnuplot-nox fonts-dejavu-core
+            gnuplot-nox fonts-dejavu-core ffmpeg parallel munge slurmctld slurmd slurm-client
 
-.PHONY: all deps configure build test render trace bench compare clean
+.PHONY: all deps configure build test render trace bench compare animate clean
 
 all: build
 
@@ -64,6 +74,10 @@ trace: build
 
 compare: build
 	$(BUILD)/mirage compare $(SCENE) -W $(CW) -H $(CH) -o $(BUILD)/compare/$(NAME)
+
+animate: build
+	$(BUILD)/mirage animate $(ASCENE) --frames $(FRAMES) -W $(AW) -H $(AH) --model $(MODEL) \
+	    $(if $(TOL),--tolerance $(TOL)) -o $(BUILD)/animate/$(ANAME)
 
 bench: build
 	$(BUILD)/mirage_bench

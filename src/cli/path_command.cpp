@@ -12,6 +12,7 @@
 #include "atmosphere/path_batch.h"
 #include "atmosphere/profile.h"
 #include "atmosphere/sampler.h"
+#include "atmosphere/vanishing.h"
 #include "cli/commands.h"
 #include "report/ray_diagram.h"
 #include "util/atomic_file.h"
@@ -39,6 +40,7 @@ struct PathOptions {
     double fan_from_deg = kNaN, fan_to_deg = kNaN;
     int fan_count = 13;
     std::string batch;
+    double object_distance = kNaN, object_height = kNaN;  // the vanishing of a point's mirage
 };
 
 [[noreturn]] void fail(const std::string& message) {
@@ -133,6 +135,64 @@ void write_svg(const PathOptions& o, const Profile& profile, const std::string& 
     auto svg = ray_diagram_svg(st);
     if (!svg) fail(svg.message());
     if (auto s = write_file_atomic(o.svg, *svg); !s) fail(s.message());
+}
+
+// `--object-height H [--object-distance D]`: from which eye distances the point has a mirrored
+// image (atmosphere/vanishing.h), and whether it has one from D.
+void run_vanishing(const PathOptions& o) {
+    std::string label;
+    const Profile profile = resolve_profile(o, label);
+    if (std::isnan(o.eye_height)) fail("give the eye height with --eye-height M");
+    if (std::isnan(o.object_height)) fail("give the point's height with --object-height M");
+    if (!std::isnan(o.elevation_deg) || !std::isnan(o.i_rad))
+        fail(
+            "--object-height asks for the rays that reach the point: give no --elevation-deg or "
+            "--i-rad");
+    if (!std::isnan(o.object_distance) &&
+        !(o.object_distance > 0.0 && std::isfinite(o.object_distance)))
+        fail("--object-distance " + g(o.object_distance) + ": must be a distance > 0 m");
+    auto reach = mirror_reach(profile, o.eye_height, o.object_height);
+    if (!reach) fail(reach.message());
+    const double elev_deg = reach->nearest_elevation_rad * 180.0 / M_PI;
+    const bool has_d = !std::isnan(o.object_distance);
+    const bool seen =
+        has_d && o.object_distance >= reach->nearest && o.object_distance <= reach->farthest;
+    if (o.json) {
+        nlohmann::json j;
+        j["profile"] = {{"kind", profile_kind_name(profile.kind)},
+                        {"eta0", profile.eta0},
+                        {"eta1", profile.eta1},
+                        {"alpha", profile.alpha}};
+        j["eye_height"] = o.eye_height;
+        j["object_height"] = o.object_height;
+        j["nearest_eye_distance"] = reach->nearest;
+        j["farthest_eye_distance"] = reach->farthest;
+        j["nearest_turn_height"] = reach->nearest_turn_height;
+        j["nearest_elevation_deg"] = elev_deg;
+        j["grazing"] = reach->grazing;
+        if (has_d) {
+            j["object_distance"] = o.object_distance;
+            j["mirrored"] = seen;
+        }
+        std::cout << j.dump(2) << "\n";
+        return;
+    }
+    std::cout << "profile     " << label << ": eta0 = " << shortest(profile.eta0)
+              << ", eta1 = " << shortest(profile.eta1) << ", alpha = " << shortest(profile.alpha)
+              << " /m\n";
+    std::cout << "eye         y0 = " << g(o.eye_height) << " m\n";
+    std::cout << "point       y = " << g(o.object_height) << " m\n";
+    std::cout << "vanishing   nearest eye distance with a mirrored image " << g(reach->nearest)
+              << " m (the ray turning at y = " << g(reach->nearest_turn_height) << " m"
+              << (reach->grazing ? ", grazing the ground" : "") << ", elevation " << g(elev_deg)
+              << " deg)\n";
+    std::cout << "            farthest " << g(reach->farthest) << " m\n";
+    if (has_d)
+        std::cout
+            << "at " << g(o.object_distance) << " m    "
+            << (seen ? "mirrored: rays from the eye reach the point after turning"
+                     : "no mirrored image: no ray from the eye reaches the point after turning")
+            << "\n";
 }
 
 void run_single(const PathOptions& o) {
@@ -243,8 +303,17 @@ void setup_path_command(CLI::App& app) {
     sub->add_option("--fan-count", o->fan_count, "rays in the fan")->capture_default_str();
     sub->add_option("--batch", o->batch,
                     "evaluate the rays of a CSV (reference columns) and print a CSV");
+    sub->add_option("--object-height", o->object_height,
+                    "height of an object point, m: the eye distances at which it has a "
+                    "mirrored image (the vanishing of the inferior mirage)");
+    sub->add_option("--object-distance", o->object_distance,
+                    "horizontal distance from the eye to that point, m: is it mirrored from here?");
     sub->callback([o] {
-        if (!o->batch.empty()) {
+        if (!std::isnan(o->object_height) || !std::isnan(o->object_distance)) {
+            if (std::isnan(o->object_height))
+                fail("--object-distance needs the point's height: --object-height M");
+            run_vanishing(*o);
+        } else if (!o->batch.empty()) {
             run_batch(*o);
         } else {
             run_single(*o);

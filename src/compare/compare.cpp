@@ -180,6 +180,9 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     c.out_dir = dir.string();
     c.image = image.string();
     c.library_paths = sw.opt.library_paths;
+    // The renders compared are not antialiased: the check of the pixel centres is enough.
+    c.samples_per_side = 1;
+    c.progress = false;
     if (model == CompareModel::UniformBands) {
         c.layers = LayerMode::Uniform;
         c.layer_count = static_cast<int>(std::lround(setting));
@@ -302,6 +305,8 @@ Status run_straight(Sweep& sw) {
     c.out_dir = dir.string();
     c.image = (dir / "povray.png").string();
     c.library_paths = sw.opt.library_paths;
+    c.samples_per_side = 1;
+    c.progress = false;
     c.profile = Profile{};  // ProfileKind::None: no layers at all
     c.profile_label = "none (straight rays)";
     auto rep = compile_scene(c);

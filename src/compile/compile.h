@@ -1,8 +1,9 @@
 // `mirage compile`: a .pov template becomes a POV-Ray scene with a banded refraction
-// medium.  Reads the scene (camera, atmosphere, objects for the extent), fits horizontal
-// layers to the camera's rays at the render's size, measures every pixel centre's error with
-// an independent band tracer, keeps the trace-level budget of every camera ray and its
-// reflections, and writes the layers include, the .ini and the layer table.
+// medium.  A short pipeline of named stages (compile/stages.h): settings (the scene, its
+// atmosphere and extent), rays (every pixel centre and a grid of sub-pixel samples), design
+// (layers fitted to the camera's rays, within POV-Ray's trace-level budget), emit (the
+// layers include, the .ini, the layer table), check (what every pixel and sample shows,
+// against the exact paths, with an independent band tracer) and report.
 #pragma once
 
 #include <optional>
@@ -32,6 +33,16 @@ struct CompileOptions {
     std::string error_map;
     std::optional<Profile> profile;  // replaces the scene's atmosphere (what-if runs, tests)
     std::string profile_label;       // names the replacement in the report
+    int samples_per_side = 3;        // the check's sub-pixel samples: a grid of this many per
+                                     // side in every pixel (1: pixel centres only)
+    bool progress = true;            // a progress bar on stderr, shown only on a terminal
+};
+
+/// An image row or column and the worst errors of its pixels and samples.
+struct LineError {
+    int index = 0;
+    double max_seen_error_px = 0.0;  // over the line's pixel centres and samples
+    int samples_over = 0;            // samples (centres included) over the tolerance
 };
 
 /// A camera row whose worst pixel exceeds the tolerance.
@@ -62,6 +73,14 @@ struct CompileReport {
     double p95_seen_error_px = 0.0, max_seen_error_px = 0.0;
     double p95_shift_rows = 0.0, max_shift_rows = 0.0;  // over the pixels shown somewhere
     int pixels_not_shown = 0;  // pixels showing what no row of their column shows
+    // The same over every sub-pixel sample (samples_per_side^2 per pixel, centres included):
+    // what an antialiased render, or any ray between pixel centres, meets.
+    int samples_per_side = 1;
+    double p95_seen_error_px_samples = 0.0, max_seen_error_px_samples = 0.0;
+    double p95_shift_rows_samples = 0.0, max_shift_rows_samples = 0.0;
+    int samples_not_shown = 0;
+    std::vector<LineError> worst_rows, worst_columns;  // by seen error, worst first (5 each)
+    std::vector<std::pair<std::string, double>> stage_seconds;  // the pipeline's stages
     int pixels = 0, pixels_over = 0;
     int max_crossings = 0;    // boundary events of a camera ray in the layers
     int max_trace_level = 0;  // with its reflections, as POV-Ray counts levels

@@ -9,6 +9,8 @@
 #include "scene/camera.h"
 #include "trace/curved_propagator.h"
 #include "util/check.h"
+#include "util/parallel.h"
+#include "util/progress.h"
 
 namespace mirage {
 
@@ -18,6 +20,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Where a ray ends: the surface it meets, or the direction it leaves in.
 struct RayEnd {
+    bool cut_off = false;  // the band tracer gave up on it (a ray skimming along a layer)
     bool hit = false;
     glm::dvec3 point{0.0};      // on the surface
     glm::dvec3 direction{0.0};  // unit, of travel there (or when leaving)
@@ -70,6 +73,7 @@ RayEnd band_end(const LayerStack& stack, const ObjectQuery& objects, double came
     const Trace3dOutcome t =
         trace_layers_3d(stack, origin, dir, box, box, Trace3dOptions{100000, &objects, camera_y});
     RayEnd e;
+    e.cut_off = t.cut_off;
     if (t.ground) {  // the ground where no object is: the exact ray ends there too
         e.hit = true;
         e.point = t.scene_point;
@@ -97,6 +101,7 @@ double reflection_weight(const Scene& scene, int primitive) {
 // One pixel's rays: where the camera rays end as seen from the eye, and the reflections'
 // error.
 struct PixelEnds {
+    bool cut_off = false;
     glm::dvec3 band_seen{0.0}, exact_seen{0.0};
     double camera_error_rad = 0.0;
     double reflection_error_rad = 0.0;
@@ -108,6 +113,7 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, dir, s.layers);
     RayEnd e = exact_end(exact, accel, s.eye, dir, 0.0);
     PixelEnds p;
+    p.cut_off = b.cut_off;
     p.band_seen = seen_from(s.eye, b);
     p.exact_seen = seen_from(s.eye, e);
     p.camera_error_rad = end_error_rad(s.eye, 0.0, b, e);
@@ -137,20 +143,6 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     return p;
 }
 
-/// Runs body(k) for k in [0, n) on all cores, in any order.
-template <class Body>
-void parallel_for(int n, const Body& body) {
-    std::atomic<int> next{0};
-    auto work = [&] {
-        for (int k = next++; k < n; k = next++) body(k);
-    };
-    const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> workers;
-    for (int t = 1; t < std::min(threads, n); ++t) workers.emplace_back(work);
-    work();
-    for (auto& w : workers) w.join();
-}
-
 }  // namespace
 
 PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, const Scene& scene,
@@ -167,58 +159,68 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
     const CurvedPropagator exact(cs);
 
     std::vector<PixelEnds> ends(n);
-    parallel_for(H, [&](int row) {
-        for (size_t i = static_cast<size_t>(row) * W; i < static_cast<size_t>(row + 1) * W; ++i)
-            if (!cut_off[i])
-                ends[i] = pixel_ends(rendered, scene, accel, objects, exact, s, directions[i]);
-    });
+    ProgressBar bar("check", H, s.progress);
+    parallel_for(
+        H,
+        [&](long row) {
+            for (size_t i = static_cast<size_t>(row) * W; i < static_cast<size_t>(row + 1) * W; ++i)
+                if (!cut_off[i])
+                    ends[i] = pixel_ends(rendered, scene, accel, objects, exact, s, directions[i]);
+            bar.advance();
+        },
+        0, 1);
+    bar.finish();
 
     PixelCheck out;
     out.seen_error_px.assign(n, 0.0f);
     out.shift_rows.assign(n, 0.0f);
     out.reflection_error_px.assign(n, 0.0f);
-    parallel_for(W, [&](int col) {
-        // Each exact ray's reach: the angle to the farther of its neighbours' ends in the
-        // column, at least a hundredth of a pixel.  A band end within it is what that row
-        // shows (between two rows' samples, or on an edge between them).
-        std::vector<double> reach_cos(H);
-        for (int row = 0; row < H; ++row) {
-            const size_t i = static_cast<size_t>(row) * W + col;
-            double reach = 0.01 * pixel_rad[i];
-            for (int nb : {row - 1, row + 1}) {
-                if (nb < 0 || nb >= H) continue;
-                const size_t j = static_cast<size_t>(nb) * W + col;
-                reach = std::max(reach, angle_between(ends[i].exact_seen, ends[j].exact_seen));
+    parallel_for(
+        W,
+        [&](long col) {
+            // Each exact ray's reach: the angle to the farther of its neighbours' ends in the
+            // column, at least a hundredth of a pixel.  A band end within it is what that row
+            // shows (between two rows' samples, or on an edge between them).
+            std::vector<double> reach_cos(H);
+            for (int row = 0; row < H; ++row) {
+                const size_t i = static_cast<size_t>(row) * W + col;
+                double reach = 0.01 * pixel_rad[i];
+                for (int nb : {row - 1, row + 1}) {
+                    if (nb < 0 || nb >= H) continue;
+                    const size_t j = static_cast<size_t>(nb) * W + col;
+                    reach = std::max(reach, angle_between(ends[i].exact_seen, ends[j].exact_seen));
+                }
+                reach_cos[row] = std::cos(std::min(reach, M_PI));
             }
-            reach_cos[row] = std::cos(std::min(reach, M_PI));
-        }
-        for (int row = 0; row < H; ++row) {
-            const size_t i = static_cast<size_t>(row) * W + col;
-            if (cut_off[i]) {
-                out.seen_error_px[i] = out.shift_rows[i] = static_cast<float>(kInf);
-                continue;
-            }
-            const PixelEnds& p = ends[i];
-            out.seen_error_px[i] = static_cast<float>(
-                std::max(p.camera_error_rad, p.reflection_error_rad) / pixel_rad[i]);
-            out.reflection_error_px[i] = static_cast<float>(p.reflection_error_rad / pixel_rad[i]);
-            // The nearest row whose exact ray ends where this band ray does: outward from the
-            // pixel's own row, up and down alternately.
-            double shift = kInf;
-            for (int d = 0; d < H && !std::isfinite(shift); ++d) {
-                for (int q : {row - d, row + d}) {
-                    if (q < 0 || q >= H) continue;
-                    const size_t j = static_cast<size_t>(q) * W + col;
-                    if (cut_off[j]) continue;
-                    if (glm::dot(ends[j].exact_seen, p.band_seen) >= reach_cos[q]) {
-                        shift = d;
-                        break;
+            for (int row = 0; row < H; ++row) {
+                const size_t i = static_cast<size_t>(row) * W + col;
+                if (cut_off[i] || ends[i].cut_off) {
+                    out.seen_error_px[i] = out.shift_rows[i] = static_cast<float>(kInf);
+                    continue;
+                }
+                const PixelEnds& p = ends[i];
+                out.seen_error_px[i] = static_cast<float>(
+                    std::max(p.camera_error_rad, p.reflection_error_rad) / pixel_rad[i]);
+                out.reflection_error_px[i] =
+                    static_cast<float>(p.reflection_error_rad / pixel_rad[i]);
+                // The nearest row whose exact ray ends where this band ray does: outward from the
+                // pixel's own row, up and down alternately.
+                double shift = kInf;
+                for (int d = 0; d < H && !std::isfinite(shift); ++d) {
+                    for (int q : {row - d, row + d}) {
+                        if (q < 0 || q >= H) continue;
+                        const size_t j = static_cast<size_t>(q) * W + col;
+                        if (cut_off[j] || ends[j].cut_off) continue;
+                        if (glm::dot(ends[j].exact_seen, p.band_seen) >= reach_cos[q]) {
+                            shift = d;
+                            break;
+                        }
                     }
                 }
+                out.shift_rows[i] = static_cast<float>(shift);
             }
-            out.shift_rows[i] = static_cast<float>(shift);
-        }
-    });
+        },
+        0, 1);
     return out;
 }
 

@@ -24,6 +24,7 @@ struct PixelCheckSettings {
     HorizontalBox layers{};             // horizontal extent of the rendered layers
     double exact_tolerance_rad = 1e-5;  // sampling tolerance of the exact paths
     int max_bounces = 4;                // reflections followed, while their weight shows
+    bool progress = false;              // a progress bar on stderr (on a terminal)
 };
 
 struct PixelCheck {
@@ -39,8 +40,9 @@ struct PixelCheck {
     std::vector<float> reflection_error_px;
 };
 
-/// Checks every pixel centre's ray: `directions[i]` and `pixel_rad[i]` (the angle of pixel
-/// i) for the width x height pixels, `cut_off[i]` for rays the band tracer cut off.
+/// Checks every ray of a width x height grid (pixel centres, or sub-pixel samples):
+/// `directions[i]` and `pixel_rad[i]` (the angle of one pixel at ray i), `cut_off[i]` for
+/// rays known to be cut off (a band ray the tracer cuts off is found so anyway).
 /// `objects` stops band rays at the scene's surfaces (as POV-Ray does); `accel` holds the
 /// same surfaces for the exact rays.  Runs on all cores; the result does not depend on how
 /// many.

@@ -77,7 +77,8 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
             t_plane = (floor - p.y) / d.y;
             next = k - 1;  // -1: the ground
         }
-        const double hlen = std::hypot(d.x, d.z);
+        // Unit directions and scene-sized distances: no overflow for hypot to guard against.
+        const double hlen = std::sqrt(d.x * d.x + d.z * d.z);
         const double t_scene =
             in_scene && hlen > 0.0
                 ? distance_to_box_edge(scene, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
@@ -126,7 +127,8 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
             continue;
         }
         ++out.crossings;
-        out.last_event = std::hypot(p.x - origin.x, p.z - origin.z);
+        const double ex = p.x - origin.x, ez = p.z - origin.z;
+        out.last_event = std::sqrt(ex * ex + ez * ez);
         const glm::dvec3 normal(0.0, d.y > 0.0 ? -1.0 : 1.0, 0.0);  // facing the incoming ray
         const glm::dvec3 t = glm::refract(d, normal, eta);
         if (t == glm::dvec3(0.0)) {

@@ -403,7 +403,8 @@ Numeric SceneParser::parse_function(const Token& name) {
     if (f == "pi") return scalar(kPi);
     if (f == "true" || f == "yes" || f == "on") return scalar(1.0);
     if (f == "false" || f == "no" || f == "off") return scalar(0.0);
-    if (f == "clock" || f == "clock_on") return scalar(0.0);  // no animation
+    if (f == "clock") return scalar(animation_.clock);
+    if (f == "clock_on") return scalar(animation_.clock_on ? 1.0 : 0.0);
     if (f == "version") return scalar(std::round(language_version_ * 100.0) / 100.0);
     if (f == "x") return Numeric::vector3(glm::dvec3(1.0, 0.0, 0.0));
     if (f == "y") return Numeric::vector3(glm::dvec3(0.0, 1.0, 0.0));

@@ -13,10 +13,12 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "scene/animation_clock.h"
 #include "scene/scene.h"
 #include "util/result.h"
 
@@ -27,6 +29,9 @@ struct ParseOptions {
         library_paths;  // searched after the including file's directory, like +L
     std::map<std::string, double> declares;     // Declare=NAME=VALUE from the command line or .ini
     int image_width = 320, image_height = 240;  // for the image_width / image_height identifiers
+    // clock, clock_on, frame_number, ...: this frame's; unset, the thread's (a still unless a
+    // ScopedAnimationClock is in force: scene/animation_clock.h).
+    std::optional<AnimationClock> animation;
     // strict: anything outside the supported subset is an error naming it and its place.
     // lenient: unknown object kinds (and unsupported modifiers inside objects) are skipped
     // (brace-matched) and recorded in Scene::skipped; camera, lights, declarations still parsed.

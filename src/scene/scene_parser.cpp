@@ -53,7 +53,8 @@ std::string join_path(const std::string& dir, const std::string& name) {
 
 }  // namespace
 
-SceneParser::SceneParser(const ParseOptions& options) : options_(options) {
+SceneParser::SceneParser(const ParseOptions& options)
+    : options_(options), animation_(options.animation.value_or(thread_animation_clock())) {
     tables_.emplace_back();
     // POV-Ray's front end declares these two like Declare= options, after them.
     for (const auto& [name, value] : options_.declares) {
@@ -62,20 +63,24 @@ SceneParser::SceneParser(const ParseOptions& options) : options_(options) {
         sym->loc = FileLoc{"<command line>", 0, 0};
         tables_[0][name] = sym;
     }
-    // What POV-Ray declares for a still image (its animation options' defaults).
-    for (const char* name : {"frame_number", "initial_frame", "final_frame", "initial_clock",
-                             "final_clock", "clock_delta"}) {
-        auto sym = std::make_shared<Symbol>();
-        sym->value.data = Numeric::scalar(0.0);
-        sym->loc = FileLoc{"<image size>", 0, 0};
-        tables_[0][name] = sym;
-    }
     for (const char* name : {"image_width", "image_height"}) {
         auto sym = std::make_shared<Symbol>();
         double v =
             std::string(name) == "image_width" ? options_.image_width : options_.image_height;
         sym->value.data = Numeric::scalar(v);
         sym->loc = FileLoc{"<image size>", 0, 0};
+        tables_[0][name] = sym;
+    }
+    // Then, like POV-Ray's front end, the animation's six (vfe/vfe.cpp, animationprocessing.cpp).
+    const std::pair<const char*, double> frame_values[] = {
+        {"clock_delta", animation_.clock_delta},     {"final_clock", animation_.final_clock},
+        {"final_frame", animation_.final_frame},     {"frame_number", animation_.frame_number},
+        {"initial_clock", animation_.initial_clock}, {"initial_frame", animation_.initial_frame},
+    };
+    for (const auto& [name, value] : frame_values) {
+        auto sym = std::make_shared<Symbol>();
+        sym->value.data = Numeric::scalar(value);
+        sym->loc = FileLoc{"<animation>", 0, 0};
         tables_[0][name] = sym;
     }
 }

@@ -376,6 +376,7 @@ class SceneParser {
     void skip_unsupported(const Token& keyword, Arity arity, const std::string& description);
 
     const ParseOptions& options_;
+    const AnimationClock animation_;  // clock, clock_on and the frame identifiers
     Scene scene_;
 
     std::vector<Frame> frames_;

@@ -1,0 +1,218 @@
+// Stage "design" of mirage compile (compile/stages.h): the layers and their trace-level
+// budget.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include "atmosphere/exact_ray.h"
+#include "compile/stages.h"
+#include "layers/fit.h"
+#include "layers/outcome.h"
+#include "util/format.h"
+#include "util/parallel.h"
+
+namespace mirage {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+int trace_levels(const CompileContext& ctx, const LayerStack& stack, const ObjectQuery& objects,
+                 const glm::dvec3& origin, const glm::dvec3& dir, int level, double weight) {
+    const Trace3dOutcome t =
+        trace_layers_3d(stack, origin, dir, ctx.scene_box, ctx.layers_box,
+                        Trace3dOptions{4 * kMaxTraceLevel, &objects, ctx.eye_y});
+    level += t.crossings;
+    if (t.cut_off) return std::max(level, 4 * kMaxTraceLevel);
+    int deepest = level;
+    if (t.object) {
+        const Primitive& prim = ctx.scene.primitives[t.object->id];
+        const glm::dvec3 refl = prim.texture.finish.reflection;
+        const double r = std::max({refl.x, refl.y, refl.z});
+        if (r > 0.0 && weight * r >= 1.0 / 255.0) {
+            glm::dvec3 n = t.object->normal;
+            if (glm::dot(n, t.object_dir) > 0.0) n = -n;
+            const glm::dvec3 rd = glm::reflect(t.object_dir, n);
+            glm::dvec3 start = t.object_point + 1e-6 * n;
+            start.y = std::max(start.y, 0.0);
+            deepest = std::max(deepest,
+                               trace_levels(ctx, stack, objects, start, rd, level + 1, weight * r));
+        }
+    }
+    return deepest;
+}
+
+// The heights the camera's rays reach inside the scene, for Berger's layers.
+double top_reached(const CompileContext& ctx, const CameraRays& rays) {
+    std::vector<double> top(rays.size(), ctx.eye_y);
+    parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        auto ex = make_exact_ray(ctx.profile, ctx.eye_y, M_PI / 2 - rays.elevation[i]);
+        if (!ex) return;
+        top[i] = height_at(*ex, std::min(rays.exit_dz[i], ex->hits_ground ? ex->dz_ground : kInf));
+    });
+    double t = *std::max_element(top.begin(), top.end());
+    return std::min(
+        t, std::max(ctx.eye_y * 1.001,
+                    height_of_excess(ctx.profile, eta_sq_excess(ctx.profile, kInf) * 0.99)));
+}
+
+}  // namespace
+
+ObjectQuery object_query(const SceneAccel& accel) {
+    // Most pieces of a band path lie far from every finite object: a slab test against their
+    // common bounds spares the full query, leaving only the unbounded ones (planes) to test.
+    return [&accel](const glm::dvec3& o, const glm::dvec3& d,
+                    double t_max) -> std::optional<ObjectHit> {
+        const Aabb& b = accel.finite_bounds();
+        const bool near_finite = !b.empty() && slab_test(b, SlabRay(o, d), 1e-6, t_max);
+        if (near_finite) {
+            auto h = accel.closest_hit(o, d, 1e-6, t_max);
+            if (!h) return std::nullopt;
+            return ObjectHit{h->t, h->normal, h->primitive};
+        }
+        auto h = accel.closest_unbounded_hit(o, d, 1e-6, t_max);
+        if (!h) return std::nullopt;
+        return ObjectHit{h->t, h->normal, h->primitive};
+    };
+}
+
+int deepest_trace_level(const CompileContext& ctx, const LayerStack& rendered,
+                        const CameraRays& rays) {
+    const ObjectQuery objects = object_query(*ctx.accel);
+    std::vector<int> level(rays.size(), 0);
+    parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        level[i] =
+            trace_levels(ctx, rendered, objects, ctx.camera.location, rays.direction[i], 1, 1.0);
+    });
+    return rays.size() ? *std::max_element(level.begin(), level.end()) : 0;
+}
+
+std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& rendered,
+                                  const CameraRays& rays, int* max_crossings) {
+    const glm::dvec3& eye = ctx.camera.location;
+    std::vector<double> err(rays.size(), 0.0);
+    std::vector<int> cross(rays.size(), 0);
+    parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        const glm::dvec3& d = rays.direction[i];
+        Trace3dOptions to;
+        to.camera_y = ctx.eye_y;
+        const Trace3dOutcome t =
+            trace_layers_3d(rendered, eye, d, ctx.scene_box, ctx.layers_box, to);
+        BandOutcome b;
+        b.ground = t.ground;
+        const double hl = std::hypot(d.x, d.z);
+        b.dz = glm::length(glm::dvec2(t.scene_point.x - eye.x, t.scene_point.z - eye.z));
+        if (!t.ground && hl > 0.0) b.dz = rays.exit_dz[i];
+        b.y = t.scene_point.y;
+        const double sh = std::hypot(t.scene_dir.x, t.scene_dir.z);
+        b.slope = sh > 0.0 ? t.scene_dir.y / sh : 0.0;
+        b.sky = t.sky;
+        const double fh = std::hypot(t.final_dir.x, t.final_dir.z);
+        b.final_slope = fh > 0.0 ? t.final_dir.y / fh : 0.0;
+        const BandOutcome e =
+            exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], rays.exit_dz[i]);
+        err[i] = t.cut_off ? kInf : outcome_error_rad(ctx.eye_y, e, b) / rays.pixel_rad[i];
+        cross[i] = t.crossings;
+    });
+    if (max_crossings)
+        *max_crossings = cross.empty() ? 0 : *std::max_element(cross.begin(), cross.end());
+    return err;
+}
+
+double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const CameraRays& rays) {
+    const double cap = ctx.layers_box.x1 - ctx.camera.location.x;
+    if (rendered.boundaries() == 0) return 1.1 * ctx.extent;
+    std::vector<double> reach(rays.size(), 0.0);
+    parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        Trace3dOptions to;
+        to.camera_y = ctx.eye_y;
+        const Trace3dOutcome t = trace_layers_3d(rendered, ctx.camera.location, rays.direction[i],
+                                                 ctx.scene_box, ctx.layers_box, to);
+        if (!t.cut_off) reach[i] = 1.1 * t.last_event;
+    });
+    const double r = std::max(1.1 * ctx.extent, *std::max_element(reach.begin(), reach.end()));
+    return std::min(r, cap);
+}
+
+Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) {
+    Design d;
+    const AtmosphereSettings& st = ctx.settings;
+    d.stack.profile = ctx.profile;
+    d.stack.excess = {eta_sq_excess(ctx.profile, ctx.eye_y)};
+    if (!st.declared || ctx.profile.kind == ProfileKind::None) {
+        d.mode = "none";
+        d.left_out.push_back("every layer: the scene declares no atmosphere");
+        return d;
+    }
+    d.mode = st.layers == LayerMode::Uniform ? "uniform" : "adaptive";
+    if (st.layers == LayerMode::Uniform) {
+        if (st.layer_count < 1)
+            return make_error(ctx.scene.file +
+                              ": uniform layers need a count: --count N or Mirage_Layer_Count");
+        const double top = top_reached(ctx, rays);
+        d.stack = uniform_layers(ctx.profile, ctx.eye_y, st.layer_count, top);
+        // Berger's layers do not care where the camera is; POV-Ray needs it off a boundary.
+        for (double& h : d.stack.heights)
+            if (std::fabs(h - ctx.eye_y) < 1e-9 * std::max(1.0, ctx.eye_y))
+                h += 1e-6 * std::max(1.0, ctx.eye_y);
+        d.left_out.push_back("layers above y = " + sig(top, 4) +
+                             ": no camera ray reaches higher inside the scene");
+        d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
+        if (d.max_trace_level > kMaxTraceLevel)
+            d.warnings.push_back(
+                "some camera rays reach POV-Ray's trace-level ceiling with these layers: they "
+                "will render black");
+        return d;
+    }
+    // Errors of the homogeneous model: when no ray bends by the tolerance, no layers at all.
+    const std::vector<double> straight = design_errors(ctx, d.stack, rays);
+    const double straight_max = *std::max_element(straight.begin(), straight.end());
+    if (straight_max <= st.tolerance_px) {
+        d.left_out.push_back("every layer: no camera ray bends by " + sig(st.tolerance_px, 3) +
+                             " px (largest bend " + sig(straight_max, 3) + " px)");
+        return d;
+    }
+    // Fit to the rays of a few columns spread from the image's centre to its edge (their rows
+    // have other elevations), measure on every pixel.
+    const int W = rays.width, H = rays.height;
+    std::vector<DesignRay> design;
+    const int n_cols = std::max(1, std::min(ctx.options.fit_columns, (W + 1) / 2));
+    for (int k = 0; k < n_cols; ++k) {
+        const int col = n_cols == 1 ? W / 2 : W / 2 + (W - 1 - W / 2) * k / (n_cols - 1);
+        for (int row = 0; row < H; ++row) {
+            const size_t i = static_cast<size_t>(row) * W + col;
+            design.push_back({rays.elevation[i], rays.exit_dz[i], rays.pixel_rad[i], col, row});
+        }
+    }
+    FitSettings fs;
+    fs.tolerance_px = st.tolerance_px;
+    fs.layers_extent_factor = kLayersExtentFactor;
+    // The budget of one pass through the layers: a camera ray may meet a reflective object
+    // and pass through them again; measured below and tightened if needed.
+    fs.max_crossings = ctx.gaps ? (kMaxTraceLevel - 1) / 2 : kMaxTraceLevel - 1;
+    // POV-Ray ignores a hit closer than 1e-4 units to a ray's origin: along the steepest ray,
+    // every layer (and gap) must be thicker than that.
+    fs.min_thickness = ctx.gaps ? 3.0 * ctx.gap : 1.5e-4 * ctx.steepest_sine;
+    for (int attempt = 0; attempt < 12; ++attempt) {
+        FitResult f = fit_layers(ctx.profile, ctx.eye_y, design, fs);
+        d.max_error_px_fitted = f.quality.max_error_px;
+        d.stack = f.stack;
+        const int level = deepest_trace_level(ctx, ctx.rendered(f.stack), rays);
+        d.max_trace_level = level;
+        if (level <= kMaxTraceLevel) break;
+        // Over the ceiling: fewer crossings per pass, in proportion.
+        const int per_pass =
+            std::min(f.quality.max_crossings, fs.max_crossings) * (ctx.gaps ? 2 : 1);
+        fs.max_crossings =
+            std::max(4, std::min(per_pass - 1,
+                                 static_cast<int>(per_pass * double(kMaxTraceLevel - 1) / level)) /
+                            (ctx.gaps ? 2 : 1));
+        d.warnings.push_back("a camera ray with its reflections reached trace level " +
+                             std::to_string(level) + "; refitted within " +
+                             std::to_string(fs.max_crossings) + " crossings per pass");
+    }
+    return d;
+}
+
+}  // namespace mirage

@@ -1,0 +1,35 @@
+// Stage "emit" of mirage compile (compile/stages.h).
+#include <filesystem>
+
+#include "compile/stages.h"
+#include "pov/emit_layers.h"
+
+namespace mirage {
+
+EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, double reach,
+                        const std::string& out_dir, const std::string& image,
+                        const std::vector<std::string>& header) {
+    const glm::dvec3& eye = ctx.camera.location;
+    LayerEmitSettings es;
+    es.camera_y = ctx.eye_y;
+    es.ground_height = ctx.settings.ground_height;
+    es.extent = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
+    es.layout = ctx.gaps ? LayerLayout::Gaps : LayerLayout::Nested;
+    es.gap = ctx.gap;
+    es.header = header;
+    IniSettings ini;
+    ini.scene = std::filesystem::absolute(ctx.options.scene).string();
+    ini.output_image = image;
+    ini.width = ctx.options.width;
+    ini.height = ctx.options.height;
+    ini.library_paths.push_back(out_dir);
+    for (const auto& p : ctx.library_paths) ini.library_paths.push_back(p);
+    ini.antialias = ctx.options.antialias;
+    EmittedFiles f;
+    f.include = layers_include(stack, es);
+    f.csv = layers_csv(stack, ctx.eye_y);
+    f.ini = render_ini(ini);
+    return f;
+}
+
+}  // namespace mirage

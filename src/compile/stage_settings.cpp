@@ -1,0 +1,170 @@
+// Stage "settings" of mirage compile (compile/stages.h).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "compile/library_paths.h"
+#include "compile/stages.h"
+#include "scene/camera.h"
+#include "scene/ground.h"
+#include "scene/parser.h"
+#include "trace/scene_extent.h"
+#include "util/format.h"
+
+namespace fs = std::filesystem;
+
+namespace mirage {
+
+namespace {
+
+// The reach of the atmosphere when no object bounds the scene (only planes and the like), in
+// camera heights above the ground.
+constexpr double kUnboundedSceneExtent = 1000.0;
+
+std::string place(const FileLoc& loc, const std::string& file) {
+    if (loc.file.empty()) return file + ": ";
+    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": ";
+}
+
+// The |sin(elevation)| of the steepest ray POV-Ray may shoot through the image (antialiasing
+// samples reach the pixels' edges): over the image's edges and a grid inside, which holds
+// the steepest ray unless the camera looks nearly straight up or down.
+double steepest_sine(const Camera& cam, int W, int H) {
+    double s = 0.0;
+    auto take = [&](double x, double y) {
+        s = std::max(s, std::fabs(camera_ray(cam, x, y, W, H).direction.y));
+    };
+    constexpr int kSteps = 256;
+    for (int i = 0; i <= kSteps; ++i) {
+        const double x = W * double(i) / kSteps, y = H * double(i) / kSteps;
+        take(x, 0.0), take(x, H), take(0.0, y), take(W, y);
+        for (int j = 1; j < 32; ++j) take(x, H * j / 32.0);
+    }
+    return s;
+}
+
+}  // namespace
+
+LayerStack CompileContext::rendered(const LayerStack& stack) const {
+    return gaps && stack.boundaries() > 0 ? with_gaps(stack, eye_y, gap) : stack;
+}
+
+Result<CompileContext> compile_settings(const CompileOptions& opt) {
+    if (opt.width < 1 || opt.height < 1 || opt.width > 20000 || opt.height > 20000)
+        return make_error("image size " + std::to_string(opt.width) + "x" +
+                          std::to_string(opt.height) + " must be 1 to 20000 pixels each way");
+    if (opt.samples_per_side < 1 || opt.samples_per_side > 5)
+        return make_error("sub-pixel samples " + std::to_string(opt.samples_per_side) +
+                          " per side: must be 1 to 5");
+    CompileContext ctx;
+    ctx.options = opt;
+    ctx.name = fs::path(opt.scene).stem().string();
+
+    ParseOptions po;
+    po.library_paths = opt.library_paths;
+    for (const auto& p : default_library_paths(opt.scene)) po.library_paths.push_back(p);
+    po.image_width = opt.width;
+    po.image_height = opt.height;
+    po.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    auto parsed = parse_scene_file(opt.scene, po);
+    if (!parsed) return parsed.error();
+    ctx.scene = std::move(*parsed);
+    for (const auto& p : po.library_paths) ctx.library_paths.push_back(fs::absolute(p).string());
+
+    auto settings = read_atmosphere_settings(ctx.scene);
+    if (!settings) return settings.error();
+    ctx.settings = *settings;
+    // Heights above the atmosphere's ground from here on (scene/ground.h).
+    const double ground = ctx.settings.ground_height;
+    const Scene as_parsed = ground != 0.0 ? ctx.scene : Scene{};
+    lower_scene(ctx.scene, ground);
+    if (opt.tolerance_px) {
+        if (!(*opt.tolerance_px > 0.0) || !std::isfinite(*opt.tolerance_px))
+            return make_error("--tolerance " + shortest(*opt.tolerance_px) +
+                              ": must be a positive number of pixels");
+        ctx.settings.tolerance_px = *opt.tolerance_px;
+    }
+    if (opt.profile) {
+        ctx.settings.profile = *opt.profile;
+        ctx.settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
+        ctx.settings.declared = true;
+    }
+    if (opt.layers) ctx.settings.layers = *opt.layers;
+    if (opt.layer_count) ctx.settings.layer_count = *opt.layer_count;
+    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
+        return make_error("--error-map " + opt.error_map +
+                          ": the error map is written as OpenEXR, name it .exr");
+
+    const Scene& scene = ctx.scene;
+    ctx.camera = scene.camera;
+    ctx.eye_y = ctx.camera.location.y;
+    if (!camera_has_one_viewpoint(ctx.camera))
+        return make_error(place(ctx.camera.loc, scene.file) + "the " +
+                          camera_type_name(ctx.camera.type) +
+                          " camera's rays start at different points: mirage compile fits the "
+                          "layers to the rays of one eye point");
+    auto accel = SceneAccel::build(scene);
+    if (!accel) return accel.error();
+    ctx.accel = std::make_shared<const SceneAccel>(std::move(*accel));
+    if (!(ctx.eye_y > 0.0)) {
+        // Named with the scene's own heights, and its planes as the likely ground.
+        std::optional<double> lowest;
+        if (!ctx.accel->finite_bounds().empty()) lowest = ctx.accel->finite_bounds().lo.y + ground;
+        return make_error(
+            camera_below_ground_message(ground != 0.0 ? as_parsed : scene, ground, lowest));
+    }
+
+    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
+    const glm::dvec3& eye = ctx.camera.location;
+    double extent = 0.0;
+    if (ctx.settings.extent) {
+        extent = *ctx.settings.extent;
+        ctx.left_out.push_back("the atmosphere reaches " + sig(extent, 4) +
+                               " units from the camera (Mirage_Extent)");
+    } else {
+        const SceneExtent objects = scene_extent(scene, *ctx.accel);
+        for (const auto& note : objects.bounded) ctx.left_out.push_back(note);
+        for (const auto& note : objects.unbounded) ctx.warnings.push_back(note);
+        const Aabb& b = objects.finite;
+        if (b.empty() || !b.finite()) {
+            // Nothing bounds the scene (planes, objects taken as unbounded): the atmosphere
+            // reaches far, and the report says how far.
+            extent = kUnboundedSceneExtent * ctx.eye_y;
+            if (ctx.settings.declared)
+                ctx.warnings.push_back(
+                    "no object bounds the scene: the atmosphere reaches " + sig(extent, 4) +
+                    " units (" + sig(kUnboundedSceneExtent, 4) +
+                    " camera heights) from the camera; declare Mirage_Extent to choose");
+        } else {
+            for (int i = 0; i < 4; ++i) {
+                const double x = (i & 1) ? b.hi.x : b.lo.x, z = (i & 2) ? b.hi.z : b.lo.z;
+                extent = std::max(extent, std::hypot(x - eye.x, z - eye.z));
+            }
+            extent *= 1.25;
+        }
+    }
+    if (extent <= 0.0) extent = 100.0 * ctx.eye_y;
+    ctx.extent = extent;
+    ctx.scene_box = {eye.x - extent, eye.x + extent, eye.z - extent, eye.z + extent};
+    const double reach = kLayersExtentFactor * extent;
+    ctx.layers_box = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
+
+    ctx.profile = profile_in_scene_units(ctx.settings);
+    // The layout: nested planes, or slabs with gaps where the index steps are so small that
+    // POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
+    if (opt.layout == "gaps") {
+        ctx.gaps = true;
+    } else if (opt.layout == "auto") {
+        ctx.gaps =
+            std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
+    } else if (opt.layout != "nested") {
+        return make_error("--layout " + opt.layout + ": expected nested, gaps or auto");
+    }
+    // Gaps thick enough that POV-Ray sees both of their faces along the steepest camera ray
+    // (it ignores hits closer than MIN_ISECT_DEPTH = 1e-4 units to a ray's origin).
+    ctx.steepest_sine = steepest_sine(ctx.camera, opt.width, opt.height);
+    ctx.gap = std::max(1.5e-4 * ctx.steepest_sine, 1e-7 * ctx.eye_y);
+    return ctx;
+}
+
+}  // namespace mirage

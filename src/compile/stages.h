@@ -1,0 +1,137 @@
+// The stages of `mirage compile`, in the order the pipeline runs them (compile.cpp):
+//
+//   settings  the scene, its atmosphere in scene units, the camera, the scene's extent and
+//             the layout POV-Ray needs (compile_settings)
+//   rays      every pixel centre's ray and a grid of sub-pixel samples (camera_rays)
+//   design    the layers: none, Berger's equal layers or the fit to the camera's rays, refitted
+//             until every camera ray with its reflections keeps POV-Ray's trace-level budget
+//             (design_layers, which measures the budget with deepest_trace_level)
+//   emit      the layers include, the .ini and the layer table (emit_files)
+//   check     what every pixel centre and sample shows (compile/pixel_check.h)
+//   report    the report (compile.h) and every output written, all or none
+//
+// Each stage reads what the ones before it made and nothing else.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compile/atmosphere_settings.h"
+#include "compile/compile.h"
+#include "layers/band_tracer3d.h"
+#include "layers/stack.h"
+#include "scene/scene.h"
+#include "trace/scene_accel.h"
+#include "util/result.h"
+
+namespace mirage {
+
+/// POV-Ray counts a camera ray and every ray it spawns (refraction, reflection) as one more
+/// trace level; max_trace_level 256 is its ceiling and a ray that reaches it returns black.
+/// Staying at 255 or below keeps the statistics' "Max Level" under 256.
+inline constexpr int kMaxTraceLevel = 255;
+
+/// How far the layers may reach beyond the scene, in scene extents: far enough that the
+/// camera's rays leave them through the top (towards the sky, with eta(infinity)) or reach
+/// the ground.
+inline constexpr double kLayersExtentFactor = 1000.0;
+
+/// What every stage reads: the scene and its atmosphere as the compiler sees them.
+struct CompileContext {
+    CompileOptions options;
+    Scene scene;
+    AtmosphereSettings settings;
+    Profile profile;  // in scene units
+    std::string name;
+    Camera camera;
+    double eye_y = 0.0;
+    double extent = 0.0;                      // horizontal reach of the scene from the camera
+    HorizontalBox scene_box{};                // the scene, around the camera
+    HorizontalBox layers_box{};               // how far the layers may reach
+    bool gaps = false;                        // the gap layout (see pov/emit_layers.h)
+    double gap = 0.0;                         // its gap thickness
+    double steepest_sine = 0.0;               // |sin(elevation)| of the steepest camera ray
+    std::shared_ptr<const SceneAccel> accel;  // the scene's objects for the rays
+    std::vector<std::string> library_paths;   // as the .ini will list them (absolute)
+    std::vector<std::string> left_out, warnings;
+
+    /// The stack as POV-Ray renders it: with the gaps of the gap layout.
+    LayerStack rendered(const LayerStack& stack) const;
+};
+
+/// Stage "settings": parses the scene (leniently: the compiler needs the camera, the
+/// atmosphere and the objects' extent), reads its Mirage_ settings with the options'
+/// overrides, checks the camera and takes the scene's extent.
+Result<CompileContext> compile_settings(const CompileOptions& options);
+
+/// The camera's rays on a grid of per_side x per_side samples in every pixel, at the offsets
+/// (i + 1/2) / per_side, row-major from the top of the image: grid row 3 r + 1 (for per_side
+/// 3) is the row of pixel row r's centres.
+struct CameraRays {
+    int width = 0, height = 0;  // of the image, pixels
+    int per_side = 1;           // samples per pixel and side
+    std::vector<glm::dvec3> direction;
+    std::vector<double> elevation;  // rad, > 0 up
+    std::vector<double> exit_dz;    // horizontal distance at which it leaves the scene's box
+    std::vector<double> pixel_rad;  // angle of one pixel row at this sample, rad
+
+    int grid_width() const { return width * per_side; }
+    int grid_height() const { return height * per_side; }
+    size_t size() const { return direction.size(); }
+    /// The grid index of the sample at the centre of pixel (col, row) (per_side odd), or of
+    /// the sample nearest to it.
+    size_t centre(int col, int row) const;
+    /// The pixel centres alone, as rays of their own (per_side 1).
+    CameraRays centres() const;
+};
+
+/// Stage "rays".
+CameraRays camera_rays(const CompileContext& ctx, int per_side);
+
+/// A layer design and what it left out.
+struct Design {
+    LayerStack stack;                  // as designed; POV-Ray gets ctx.rendered(stack)
+    std::string mode;                  // "adaptive", "uniform" or "none"
+    double max_error_px_fitted = 0.0;  // over the rays the fit was fitted to
+    int max_trace_level = 0;           // of the camera rays with their reflections
+    std::vector<std::string> left_out, warnings;
+};
+
+/// The largest trace level POV-Ray reaches for any of `rays` through `rendered` (one level per
+/// boundary event in the layers and per reflection off an object, following every reflection
+/// whose weight stays above POV-Ray's adc_bailout); followed past the ceiling, to 4 times it,
+/// so that a design over it knows by how much.
+int deepest_trace_level(const CompileContext& ctx, const LayerStack& rendered,
+                        const CameraRays& rays);
+
+/// Every ray's error (pixels) of the design at the scene's edge against the exact path
+/// (layers/outcome.h), +inf for a ray the band tracer cut off, and the most boundary events
+/// of a ray.
+std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& rendered,
+                                  const CameraRays& rays, int* max_crossings = nullptr);
+
+/// Stage "design": the layers for the rays (the pixel centres).
+Result<Design> design_layers(const CompileContext& ctx, const CameraRays& centres);
+
+/// How far the rendered layers must reach: as far as the camera's rays still meet a boundary
+/// before they leave through the top or reach the ground, at least a tenth past the scene,
+/// at most ctx.layers_box.
+double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const CameraRays& rays);
+
+/// The texts of the outputs, by file name.
+struct EmittedFiles {
+    std::string include, csv, ini;
+};
+
+/// Stage "emit": the layers clipped to `reach` around the camera, the .ini that renders
+/// the template with them into `image` (finding the include in `out_dir`), the layer table.
+/// `header` lines open the include.
+EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, double reach,
+                        const std::string& out_dir, const std::string& image,
+                        const std::vector<std::string>& header);
+
+/// The rays POV-Ray's band render follows: stops band rays at the scene's surfaces.
+ObjectQuery object_query(const SceneAccel& accel);
+
+}  // namespace mirage

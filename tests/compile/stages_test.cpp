@@ -1,0 +1,225 @@
+#include "compile/stages.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "atmosphere/profile.h"
+#include "layers/fit.h"
+#include "scene/camera.h"
+
+namespace mirage {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string temp_dir(const std::string& name) {
+    const fs::path d = fs::path(::testing::TempDir()) / ("mirage_stages_" + name);
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d.string();
+}
+
+// The paper's desert in small: a level camera 1.5 m up, a sphere 14 m out (reflective), the
+// sand at y = 0.
+std::string scene_text(const std::string& atmosphere) {
+    return "#version 3.7;\n" + atmosphere + R"(
+#declare Mirage_Tolerance = 0.5;
+#include "mirage.inc"
+camera { location <0, 1.5, 0> look_at <0, 1.5, 10> right x * image_width / image_height angle 60 }
+light_source { <-30, 60, -20>, color rgb 1 }
+plane { y, 0 pigment { color rgb 0.7 } }
+sphere { <2.5, 1.6, 14>, 1 pigment { color rgb <0.8, 0.2, 0.1> } finish { reflection 0.25 } }
+)";
+}
+
+CompileOptions options_for(const std::string& name, const std::string& atmosphere, int w, int h) {
+    const std::string dir = temp_dir(name);
+    CompileOptions o;
+    o.scene = dir + "/" + name + ".pov";
+    std::ofstream(o.scene) << scene_text(atmosphere);
+    o.width = w;
+    o.height = h;
+    o.out_dir = dir + "/out";
+    o.progress = false;
+    return o;
+}
+
+const char* kPaper = "#declare Mirage_Preset = \"paper\";";
+
+TEST(CompileSettings, ReadsTheCameraTheExtentAndTheLayout) {
+    auto ctx = compile_settings(options_for("settings", kPaper, 40, 30));
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    EXPECT_DOUBLE_EQ(ctx->eye_y, 1.5);
+    // The sphere's far corner, 1.25 times: sqrt(3.5^2 + 15^2) * 1.25.
+    EXPECT_NEAR(ctx->extent, 1.25 * std::hypot(3.5, 15.0), 1e-6);
+    EXPECT_FALSE(ctx->gaps);  // the paper's index changes by 0.1: nested planes
+    EXPECT_NEAR(ctx->layers_box.x1, kLayersExtentFactor * ctx->extent, 1e-6);
+    // The steepest ray of a level camera: at the middle of the image's bottom edge (the
+    // corners look down less steeply).
+    const glm::dvec3 bottom = camera_ray(ctx->camera, 20.0, 30.0, 40, 30).direction;
+    EXPECT_NEAR(ctx->steepest_sine, std::fabs(bottom.y), 1e-12);
+    EXPECT_GT(ctx->steepest_sine,
+              std::fabs(camera_ray(ctx->camera, 0.5, 29.5, 40, 30).direction.y));
+
+    auto road = compile_settings(
+        options_for("settings_road", "#declare Mirage_Preset = \"hot-road\";", 40, 30));
+    ASSERT_TRUE(road.ok()) << road.message();
+    EXPECT_TRUE(road->gaps);  // real air: index steps too small for float quotients
+}
+
+TEST(CompileSettings, RefusesBadSizesAndSampleCounts) {
+    CompileOptions o = options_for("bad", kPaper, 0, 30);
+    auto r = compile_settings(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message(), "image size 0x30 must be 1 to 20000 pixels each way");
+    o.width = 40;
+    o.samples_per_side = 9;
+    r = compile_settings(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message(), "sub-pixel samples 9 per side: must be 1 to 5");
+}
+
+TEST(CameraRays, SamplesAGridInEveryPixelWithTheCentreAmongThem) {
+    auto ctx = compile_settings(options_for("rays", kPaper, 8, 6));
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    const CameraRays rays = camera_rays(*ctx, 3);
+    EXPECT_EQ(rays.grid_width(), 24);
+    EXPECT_EQ(rays.grid_height(), 18);
+    ASSERT_EQ(rays.size(), 24u * 18u);
+    for (int row = 0; row < 6; ++row)
+        for (int col = 0; col < 8; ++col) {
+            const glm::dvec3 want = camera_ray(ctx->camera, col + 0.5, row + 0.5, 8, 6).direction;
+            EXPECT_EQ(rays.direction[rays.centre(col, row)], want) << col << "," << row;
+        }
+    // A sample a third of a pixel left of and above the centre of pixel (2, 3).
+    const size_t s = rays.centre(2, 3) - rays.grid_width() - 1;
+    EXPECT_EQ(rays.direction[s], camera_ray(ctx->camera, 2 + 1.0 / 6, 3 + 1.0 / 6, 8, 6).direction);
+    const CameraRays c = rays.centres();
+    ASSERT_EQ(c.size(), 48u);
+    EXPECT_EQ(c.direction[3 * 8 + 2], rays.direction[rays.centre(2, 3)]);
+    EXPECT_EQ(c.elevation[3 * 8 + 2], rays.elevation[rays.centre(2, 3)]);
+    // Rows near the horizon of a level camera look up and down alike.
+    EXPECT_GT(c.elevation[0], 0.0);
+    EXPECT_LT(c.elevation[47], 0.0);
+    EXPECT_NEAR(c.elevation[0], -c.elevation[47], 1e-12);
+}
+
+TEST(DesignLayers, NoAtmosphereNoLayersAndNoBendNoLayers) {
+    auto plain = compile_settings(options_for("design_plain", "", 16, 12));
+    ASSERT_TRUE(plain.ok()) << plain.message();
+    auto d = design_layers(*plain, camera_rays(*plain, 1));
+    ASSERT_TRUE(d.ok()) << d.message();
+    EXPECT_EQ(d->mode, "none");
+    EXPECT_EQ(d->stack.boundaries(), 0);
+
+    auto flat = compile_settings(
+        options_for("design_flat",
+                    "#declare Mirage_Profile = \"inferior\"; #declare Mirage_Eta0 = 1.0003; "
+                    "#declare Mirage_Eta1 = 1e-9; #declare Mirage_Alpha = 2.3;",
+                    16, 12));
+    ASSERT_TRUE(flat.ok()) << flat.message();
+    d = design_layers(*flat, camera_rays(*flat, 1));
+    ASSERT_TRUE(d.ok()) << d.message();
+    EXPECT_EQ(d->mode, "adaptive");
+    EXPECT_EQ(d->stack.boundaries(), 0);
+    ASSERT_FALSE(d->left_out.empty());
+    EXPECT_NE(d->left_out.front().find("no camera ray bends"), std::string::npos);
+}
+
+TEST(DesignLayers, FitsWithinTheTraceLevelCeiling) {
+    auto ctx = compile_settings(options_for("design_fit", kPaper, 40, 30));
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    const CameraRays rays = camera_rays(*ctx, 1);
+    auto d = design_layers(*ctx, rays);
+    ASSERT_TRUE(d.ok()) << d.message();
+    EXPECT_EQ(d->mode, "adaptive");
+    EXPECT_GT(d->stack.boundaries(), 5);
+    EXPECT_TRUE(well_formed(d->stack));
+    EXPECT_LE(d->max_trace_level, kMaxTraceLevel);
+    EXPECT_EQ(d->max_trace_level, deepest_trace_level(*ctx, ctx->rendered(d->stack), rays));
+    // Better than no layers at all where the rays bend.
+    LayerStack none;
+    none.profile = ctx->profile;
+    none.excess = {eta_sq_excess(ctx->profile, ctx->eye_y)};
+    const auto with = design_errors(*ctx, ctx->rendered(d->stack), rays);
+    const auto without = design_errors(*ctx, none, rays);
+    double sum_with = 0.0, sum_without = 0.0;
+    for (size_t i = 0; i < rays.size(); ++i) sum_with += with[i], sum_without += without[i];
+    EXPECT_LT(sum_with, 0.2 * sum_without);
+}
+
+TEST(DesignLayers, UniformLayersAreBergersAndMeasured) {
+    CompileOptions o = options_for("design_uniform", kPaper, 16, 12);
+    o.layers = LayerMode::Uniform;
+    o.layer_count = 12;
+    auto ctx = compile_settings(o);
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    const CameraRays rays = camera_rays(*ctx, 1);
+    auto d = design_layers(*ctx, rays);
+    ASSERT_TRUE(d.ok()) << d.message();
+    EXPECT_EQ(d->mode, "uniform");
+    ASSERT_EQ(d->stack.boundaries(), 12);
+    for (int k = 1; k < 12; ++k)
+        EXPECT_NEAR(d->stack.heights[k] - d->stack.heights[k - 1],
+                    d->stack.heights[1] - d->stack.heights[0], 1e-9);
+    EXPECT_EQ(d->max_trace_level, deepest_trace_level(*ctx, d->stack, rays));
+    o.layer_count = 0;
+    ctx = compile_settings(o);
+    ASSERT_TRUE(ctx.ok());
+    EXPECT_FALSE(design_layers(*ctx, rays).ok());
+}
+
+TEST(DeepestTraceLevel, CountsBoundaryEventsAndReflections) {
+    // Two planes below the eye of a straight atmosphere-less stack: a ray down to the ground
+    // crosses both (2 events) on level 1; the ground is no mirror.
+    auto ctx = compile_settings(options_for("levels", kPaper, 8, 6));
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    LayerStack s;
+    s.profile = ctx->profile;
+    s.heights = {0.5, 1.0};
+    s.excess = {0.0, 0.01, eta_sq_excess(ctx->profile, ctx->eye_y)};
+    CameraRays down;
+    down.width = down.height = 1;
+    down.direction = {glm::normalize(glm::dvec3(0.0, -1.0, 0.2))};
+    down.elevation = {std::asin(down.direction[0].y)};
+    down.exit_dz = {ctx->extent};
+    down.pixel_rad = {1e-3};
+    EXPECT_EQ(deepest_trace_level(*ctx, s, down), 1 + 2);
+    // Near the top of the reflective sphere, above both planes: one more level for the
+    // reflection, and the reflected ray leaves upwards through no boundary.
+    CameraRays at_sphere = down;
+    at_sphere.direction = {glm::normalize(glm::dvec3(2.5, 1.05, 14.0))};
+    EXPECT_EQ(deepest_trace_level(*ctx, s, at_sphere), 2);
+}
+
+TEST(LayersReach, AtLeastPastTheSceneAtMostTheLayersBox) {
+    auto ctx = compile_settings(options_for("reach", kPaper, 16, 12));
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    const CameraRays rays = camera_rays(*ctx, 1);
+    auto d = design_layers(*ctx, rays);
+    ASSERT_TRUE(d.ok()) << d.message();
+    const double reach = layers_reach(*ctx, ctx->rendered(d->stack), rays);
+    EXPECT_GE(reach, 1.1 * ctx->extent);
+    EXPECT_LE(reach, ctx->layers_box.x1 - ctx->camera.location.x);
+}
+
+TEST(EmitFiles, TheIniFindsTheLayersFirstAndTheIncludeSplitsAtTheCamera) {
+    auto ctx = compile_settings(options_for("emit", kPaper, 16, 12));
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    auto d = design_layers(*ctx, camera_rays(*ctx, 1));
+    ASSERT_TRUE(d.ok()) << d.message();
+    const EmittedFiles f = emit_files(*ctx, d->stack, 100.0, "/out/dir", "/out/x.png", {"hello"});
+    const size_t out = f.ini.find("Library_Path=\"/out/dir\"");
+    ASSERT_NE(out, std::string::npos) << f.ini;
+    EXPECT_LT(out, f.ini.find("Library_Path=", out + 1));
+    EXPECT_NE(f.ini.find("Output_File_Name=\"/out/x.png\""), std::string::npos);
+    EXPECT_EQ(f.include.rfind("// hello\n", 0), 0u);
+    EXPECT_NE(f.include.find("plane { y, "), std::string::npos);   // below the camera
+    EXPECT_NE(f.include.find("plane { -y, "), std::string::npos);  // above it
+    EXPECT_NE(f.include.find("<-100, "), std::string::npos);       // clipped to the reach
+}
+
+}  // namespace
+}  // namespace mirage
