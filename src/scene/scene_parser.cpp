@@ -388,10 +388,10 @@ std::shared_ptr<Symbol> SceneParser::lookup(const std::string& name, int* depth)
     return nullptr;
 }
 
-void SceneParser::declare(const Token& name_token, Value value, bool local) {
+void SceneParser::declare(const Token& name_token, Value value, bool local, std::size_t scope) {
     const std::string& name = name_token.text();
     if (local) {
-        auto& table = tables_.back();
+        auto& table = scope > 0 && scope <= tables_.size() ? tables_[scope - 1] : tables_.back();
         auto it = table.find(name);
         if (it != table.end()) {
             it->second->value = std::move(value);
@@ -839,11 +839,14 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
         element = &index_array(std::get<ArrayValue>(sym->value.data), name);
     }
     expect_punct("=", "after '" + name.text() + "'");
+    // The value may end inside a macro's body (#local V = F(x) with F's last token a ';'),
+    // while that macro's table is still open: the identifier belongs to this scope.
+    const std::size_t scope = tables_.size();
     Value value = parse_declared_value(name);
     if (element) {
         *element = std::make_shared<Value>(std::move(value));
     } else {
-        declare(name, std::move(value), local);
+        declare(name, std::move(value), local, scope);
     }
 }
 

@@ -228,7 +228,9 @@ class SceneParser {
 
     // ---- symbols (scene_parser.cpp) ----
     std::shared_ptr<Symbol> lookup(const std::string& name, int* depth = nullptr) const;
-    void declare(const Token& name_token, Value value, bool local);
+    /// #local declares into the table `scope` levels deep (default: the innermost), the
+    /// scope the directive stands in even when its value ended inside a macro's body.
+    void declare(const Token& name_token, Value value, bool local, std::size_t scope = 0);
     std::shared_ptr<Symbol> array_element(const Token& name, const std::shared_ptr<Symbol>& array,
                                           bool for_assignment);
 
