@@ -15,6 +15,9 @@
 #   make animate         every frame of an animated scene (default scenes/walk.pov, FRAMES=24,
 #                        320x240 unless W H are given, MODEL=bands or trace) into
 #                        build/animate/NAME/: NAME.mp4, NAME.gif, vanishing.png, summary.md
+#   make fuzz            libFuzzer on the scene parser and the Mirage_ settings reader for
+#                        FUZZ_SECONDS (default 600), in build-fuzz/ with clang; installs
+#                        FUZZ_PACKAGES first (make test needs none of them)
 #   make clean
 
 BUILD   ?= build
@@ -26,6 +29,8 @@ TOL     ?=
 CW      ?= $(if $(filter command line,$(origin W)),$(W),320)
 CH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+FUZZ_SECONDS ?= 600
+FUZZ_BUILD   ?= build-fuzz
 NAME    := $(basename $(notdir $(SCENE)))
 # make animate: its own default scene and size.
 ASCENE  := $(if $(filter command line,$(origin SCENE)),$(SCENE),scenes/walk.pov)
@@ -39,8 +44,10 @@ AH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 PACKAGES := g++ make cmake pkg-config povray povray-includes povray-examples libopenimageio-dev \
             openimageio-tools libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev \
             gnuplot-nox fonts-dejavu-core ffmpeg parallel munge slurmctld slurmd slurm-client
+# What make fuzz needs besides: clang and its libFuzzer and sanitizer runtimes.
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev python3
 
-.PHONY: all deps configure build test render trace bench compare animate clean
+.PHONY: all deps configure build test render trace bench compare animate fuzz clean
 
 all: build
 
@@ -82,5 +89,19 @@ animate: build
 bench: build
 	$(BUILD)/mirage_bench
 
+# The corpus grows in $(FUZZ_BUILD)/corpus from run to run; a crashing input is written to
+# $(FUZZ_BUILD)/artifacts/ (and belongs in tests/fuzz/crashes/ once fixed).
+fuzz: deps
+	@sh tools/install-deps.sh $(FUZZ_PACKAGES)
+	@test -f $(FUZZ_BUILD)/CMakeCache.txt || cmake -S . -B $(FUZZ_BUILD) \
+	    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 -DMIRAGE_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target mirage_scene_fuzzer
+	@mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
+	python3 tools/fuzz_corpus.py $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/scene.dict
+	$(FUZZ_BUILD)/mirage_scene_fuzzer $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds \
+	    -dict=$(FUZZ_BUILD)/scene.dict -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	    -timeout=60 -rss_limit_mb=2048 -print_final_stats=1 \
+	    -artifact_prefix=$(FUZZ_BUILD)/artifacts/
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(FUZZ_BUILD)

@@ -10,7 +10,7 @@
 
 #include "trace/render.h"
 #include "trace/scene_accel.h"
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 namespace mirage {
 namespace {

@@ -20,9 +20,9 @@
 #include "animate/video.h"
 #include "compare/compare.h"
 #include "compile/compile.h"
-#include "compile/library_paths.h"
-#include "scene/parser.h"
-#include "trace/trace_scene.h"
+#include "load/mirage_scene.h"
+#include "trace/object_query.h"
+#include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
 #include "util/process.h"
@@ -541,18 +541,17 @@ std::string slurm_script(const Animation& a, const std::vector<int>& frames) {
 
 Result<std::vector<VanishingRow>> vanishing_rows(const Animation& a) {
     std::vector<VanishingRow> rows;
-    ParseOptions po;
-    po.library_paths = a.options.library_paths;
-    for (const auto& p : default_library_paths(a.options.scene)) po.library_paths.push_back(p);
-    po.image_width = a.options.width;
-    po.image_height = a.options.height;
-    po.strict = false;
+    // Each frame's scene read as compile and trace read it: load/mirage_scene.h.
+    SceneLoadOptions lo = scene_load_options(a.options.scene, a.options.width, a.options.height,
+                                             a.options.library_paths);
+    lo.strict = false;
+    lo.object_queries = tracer_object_queries();
     VanishingCache cache;
     for (const auto& f : a.plan.frames) {
-        po.animation = f.clock;
-        auto scene = parse_scene_file(a.options.scene, po);
-        if (!scene) return make_error(frame_label(f) + ": " + scene.message());
-        auto views = view_marked_spheres(*scene, a.options.width, a.options.height, &cache);
+        lo.animation = f.clock;
+        auto loaded = load_mirage_scene(lo);
+        if (!loaded) return make_error(frame_label(f) + ": " + loaded.message());
+        auto views = view_marked_spheres(loaded->scene, a.options.width, a.options.height, &cache);
         if (!views) return make_error(frame_label(f) + ": " + views.message());
         for (const auto& v : *views) rows.push_back({f.number, f.clock.clock, v});
     }

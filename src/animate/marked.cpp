@@ -5,7 +5,8 @@
 #include <tuple>
 
 #include "atmosphere/vanishing.h"
-#include "compile/atmosphere_settings.h"
+#include "load/atmosphere_settings.h"
+#include "scene/camera.h"
 #include "trace/curved_propagator.h"
 #include "util/format.h"
 
@@ -15,10 +16,7 @@ namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
-std::string where(const Declared& d) {
-    return d.loc.file + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
-           ": ";
-}
+std::string where(const Declared& d) { return to_string(d.loc) + ": "; }
 
 }  // namespace
 
@@ -79,8 +77,7 @@ Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int widt
     const glm::dvec3 eye = scene.camera.location;
     const double pixel_rad = pixel_angle_rad(scene.camera, width, height);
     for (const auto& m : *marked) {
-        const std::string at = m.loc.file + ":" + std::to_string(m.loc.line) + ":" +
-                               std::to_string(m.loc.column) + ": " + m.name + ": ";
+        const std::string at = to_string(m.loc) + ": " + m.name + ": ";
         const std::vector<double> key = {eye.y,
                                          m.centre.y,
                                          m.radius,

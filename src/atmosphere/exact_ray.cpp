@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "util/check.h"
+#include "util/format.h"
 
 // Derivations (notation of exact_ray.h; x = c dz).
 //
@@ -27,12 +27,7 @@ constexpr double kLn2 = 0.69314718055994530942;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string number(double v) {
-    std::ostringstream out;
-    out.precision(17);
-    out << v;
-    return out.str();
-}
+std::string number(double v) { return shortest(v); }
 
 double logaddexp(double a, double b) {
     if (a < b) std::swap(a, b);
@@ -199,7 +194,9 @@ double superior_ln_F(const ExactRay& r, double dz) {
         return x + std::log(ps / (2.0 * sigma)) + std::log1p(-E0 / (ps * ps) * std::exp(-2.0 * x));
     }
     if (sigma < 0.5 * r.P) return std::log(std::cosh(x) - r.P * r.gamma * dz * sinhc(x));
-    return std::log(ps / (2.0 * sigma)) - x + std::log1p(-E0 / (ps * ps) * std::exp(2.0 * x));
+    // E0 exp(2x) as one exponential: for a start far above the gradient (alpha y0 > 745) E0
+    // underflows to 0 while exp(2x) overflows on the way down.
+    return std::log(ps / (2.0 * sigma)) - x + std::log1p(-std::exp(2.0 * (x + r.ln_E)) / (ps * ps));
 }
 
 }  // namespace
@@ -242,8 +239,9 @@ std::string_view turn_kind_name(TurnKind k) {
 
 Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad) {
     if (auto s = validate(profile); !s) return s.error();
-    if (!std::isfinite(y0) || y0 < 0.0)
-        return make_error("start height y0 = " + number(y0) + " m must be finite and >= 0");
+    if (!(y0 >= 0.0 && y0 <= kMaxHeight))
+        return make_error("start height y0 = " + number(y0) + " m must be from 0 to " +
+                          number(kMaxHeight) + " m");
     if (!std::isfinite(i_rad) || i_rad <= 0.0 || i_rad >= M_PI)
         return make_error("angle from the vertical i = " + number(i_rad) +
                           " rad must lie strictly between 0 and pi (a vertical ray has no "

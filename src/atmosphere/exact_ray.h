@@ -76,8 +76,12 @@ struct ExactRay {
     double dz_ground = 0.0;  // first distance where y = 0 (+inf when never)
 };
 
-/// Builds the exact ray from height y0 (>= 0, m) at angle i (rad, strictly between 0 and pi:
-/// a vertical ray has no horizontal distance).  The profile must be valid.
+/// The highest start height make_exact_ray takes (m, or scene units): paths are followed
+/// about as far (atmosphere/sampler.cpp), and the stable forms stay finite below it.
+constexpr double kMaxHeight = 1e9;
+
+/// Builds the exact ray from height y0 (0 to kMaxHeight, m) at angle i (rad, strictly
+/// between 0 and pi: a vertical ray has no horizontal distance).  The profile must be valid.
 Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad);
 
 /// Height at horizontal distance dz >= 0 (meaningful up to dz_ground).

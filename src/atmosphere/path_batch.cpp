@@ -40,9 +40,9 @@ Result<std::string> run_path_batch(const CsvTable& table) {
     }
     std::string out = std::string(kPathBatchColumns) + "\n";
     for (const auto& row : table.rows) {
-        const std::string where = table.source + ":" + std::to_string(row.line);
+        auto place = [&](int j) { return to_string(row.places.at(static_cast<size_t>(col[j]))); };
         auto kind = parse_profile_kind(row.fields[col[1]]);
-        if (!kind) return make_error(where + ": column 'profile': " + kind.message());
+        if (!kind) return make_error(table.where(row, col[1]) + ": " + kind.message());
         double v[8];
         for (int j = 0; j < 8; ++j) {
             auto x = csv_number(table, row, col[j + 2]);
@@ -50,12 +50,17 @@ Result<std::string> run_path_batch(const CsvTable& table) {
             v[j] = *x;
         }
         const Profile profile{*kind, v[0], v[1], v[2]};
-        if (auto s = validate(profile); !s) return make_error(where + ": " + s.message());
-        if (!(v[3] > 0.0))
-            return make_error(where + ": column 'y0': eye height " + g17(v[3]) +
-                              " m must be above the ground");
+        const ProfileNames names{place(2) + ": eta0", place(3) + ": eta1", place(4) + ": alpha"};
+        if (auto s = validate(profile, names); !s) return s.error();
+        if (!(v[3] > 0.0 && v[3] <= kMaxHeight))
+            return make_error(place(5) + ": y0 = " + g17(v[3]) +
+                              " m: the eye must be above the ground and at most 1e+09 m");
         auto ray = make_exact_ray(profile, v[3], v[4]);
-        if (!ray) return make_error(where + ": column 'i_rad': " + ray.message());
+        if (!ray) return make_error(place(6) + ": i_rad: " + ray.message());
+        for (int j = 0; j < 3; ++j)
+            if (!(v[5 + j] >= 0.0 && std::isfinite(v[5 + j])))
+                return make_error(place(7 + j) + ": d" + std::to_string(j + 1) + " = " +
+                                  g17(v[5 + j]) + ": a distance must be finite and >= 0 (m)");
         std::string line = quoted(row.fields[col[0]]);
         auto add = [&](const std::string& s) { line += "," + s; };
         add(g17(ray->k2));

@@ -2,20 +2,10 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
+
+#include "util/format.h"
 
 namespace mirage {
-
-namespace {
-
-std::string number(double v) {
-    std::ostringstream out;
-    out.precision(17);
-    out << v;
-    return out.str();
-}
-
-}  // namespace
 
 int profile_sign(const Profile& p) {
     switch (p.kind) {
@@ -51,22 +41,22 @@ double height_of_excess(const Profile& p, double excess) {
     return -std::log1p(-f) / p.alpha;
 }
 
-Status validate(const Profile& p) {
-    if (p.kind == ProfileKind::None) {
-        if (!std::isfinite(p.eta0) || p.eta0 < 1.0)
-            return make_error("eta0 = " + number(p.eta0) + " is not a refractive index >= 1");
-        return Ok{};
-    }
-    if (!std::isfinite(p.eta0) || p.eta0 < 1.0)
-        return make_error("eta0 = " + number(p.eta0) + " must be a finite index >= 1");
-    if (!std::isfinite(p.eta1) || p.eta1 < 0.0)
-        return make_error("eta1 = " + number(p.eta1) + " must be finite and >= 0");
-    if (!std::isfinite(p.alpha) || p.alpha <= 0.0)
-        return make_error("alpha = " + number(p.alpha) + " must be finite and > 0 (1/m)");
+Status validate(const Profile& p, const ProfileNames& names) {
+    auto range = [](double v, double lo, double hi) { return v >= lo && v <= hi; };
+    if (!range(p.eta0, 1.0, kMaxEta))
+        return make_error(names.eta0 + " = " + shortest(p.eta0) +
+                          " must be a refractive index from 1 to " + shortest(kMaxEta));
+    if (p.kind == ProfileKind::None) return Ok{};
+    if (!(p.eta1 == 0.0 || range(p.eta1, kMinEta1, kMaxEta)))
+        return make_error(names.eta1 + " = " + shortest(p.eta1) + " must be 0 or from " +
+                          shortest(kMinEta1) + " to " + shortest(kMaxEta));
+    if (!range(p.alpha, kMinAlpha, kMaxAlpha))
+        return make_error(names.alpha + " = " + shortest(p.alpha) + " must be from " +
+                          shortest(kMinAlpha) + " to " + shortest(kMaxAlpha) + " (1/m)");
     if (p.kind == ProfileKind::Superior && !(p.eta0 * p.eta0 > p.eta1 * p.eta1))
-        return make_error("superior profile with eta0 = " + number(p.eta0) +
-                          " and eta1 = " + number(p.eta1) +
-                          ": eta0^2 must exceed eta1^2 (the index aloft would not be real)");
+        return make_error(names.eta1 + " = " + shortest(p.eta1) +
+                          ": a superior profile needs eta0^2 > eta1^2, and eta0 = " +
+                          shortest(p.eta0) + " (the index aloft would not be real)");
     return Ok{};
 }
 
@@ -116,15 +106,19 @@ Result<Profile> preset_profile(std::string_view name) {
 
 Result<Profile> air_profile(double t_aloft_k, double dt_ground_k, double scale_height_m,
                             double pressure_hpa) {
-    if (!std::isfinite(t_aloft_k) || t_aloft_k <= 0.0)
-        return make_error("air temperature aloft " + number(t_aloft_k) + " K must be > 0");
-    if (!std::isfinite(dt_ground_k) || t_aloft_k + dt_ground_k <= 0.0)
-        return make_error("ground temperature " + number(t_aloft_k + dt_ground_k) +
-                          " K must be > 0");
-    if (!std::isfinite(scale_height_m) || scale_height_m <= 0.0)
-        return make_error("scale height " + number(scale_height_m) + " m must be > 0");
-    if (!std::isfinite(pressure_hpa) || pressure_hpa <= 0.0)
-        return make_error("pressure " + number(pressure_hpa) + " hPa must be > 0");
+    auto range = [](double v, double lo, double hi) { return v >= lo && v <= hi; };
+    if (!range(t_aloft_k, 1.0, 1e4))
+        return make_error("air temperature aloft " + shortest(t_aloft_k) +
+                          " K must be from 1 to 10000 K");
+    if (!range(t_aloft_k + dt_ground_k, 1.0, 1e4))
+        return make_error("ground temperature " + shortest(t_aloft_k + dt_ground_k) +
+                          " K must be from 1 to 10000 K");
+    if (!range(scale_height_m, 1e-6, 1e6))
+        return make_error("scale height " + shortest(scale_height_m) +
+                          " m must be from 1e-06 to 1e+06 m");
+    if (!range(pressure_hpa, 1e-3, 1e6))
+        return make_error("pressure " + shortest(pressure_hpa) +
+                          " hPa must be from 0.001 to 1e+06 hPa");
     // Gladstone-Dale at 550 nm.
     auto excess = [&](double t) { return 2.93e-4 * (pressure_hpa / 1013.25) * (288.15 / t); };
     const double n_ground_m1 = excess(t_aloft_k + dt_ground_k);
@@ -132,7 +126,9 @@ Result<Profile> air_profile(double t_aloft_k, double dt_ground_k, double scale_h
     const double eta0 = 1.0 + n_ground_m1;
     // eta_aloft^2 - eta0^2 = (n_a - n_g)(2 + n_a + n_g), without cancellation.
     const double d = (n_aloft_m1 - n_ground_m1) * (2.0 + n_aloft_m1 + n_ground_m1);
-    if (d == 0.0) return Profile{ProfileKind::None, eta0, 0.0, 1.0 / scale_height_m};
+    // A difference too small to bend any ray (eta1 below kMinEta1) is no gradient at all.
+    if (std::sqrt(std::fabs(d)) < kMinEta1)
+        return Profile{ProfileKind::None, eta0, 0.0, 1.0 / scale_height_m};
     const ProfileKind kind = d > 0.0 ? ProfileKind::Inferior : ProfileKind::Superior;
     return make_profile(kind, eta0, std::sqrt(std::fabs(d)), 1.0 / scale_height_m);
 }

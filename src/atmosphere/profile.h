@@ -46,9 +46,24 @@ double eta_infinity(const Profile& p);
 /// +infinity when the excess is at or beyond the asymptote.
 double height_of_excess(const Profile& p, double excess);
 
-/// Checks the parameters: finite, eta0 >= 1, eta1 >= 0, alpha > 0, and for a superior
-/// profile eta0^2 > eta1^2 (the index must stay real).  The message names the bad value.
-Status validate(const Profile& p);
+/// The ranges validate() accepts: wide enough for real air (eta1 about 0.006, alpha a few
+/// per metre) and the paper's exaggerated profile (eta1 0.46), narrow enough that every
+/// exact ray and its samples stay finite in binary64 (docs/robustness.md).
+constexpr double kMaxEta = 10.0;    // eta0 and eta1 at most
+constexpr double kMinEta1 = 1e-10;  // a nonzero eta1 at least
+constexpr double kMinAlpha = 1e-9;  // per unit of height (1/m, or per scene unit)
+constexpr double kMaxAlpha = 1e9;
+
+/// How the parameters are named in validate's messages, with any place before the name
+/// ("scene.pov:3:10: Mirage_Eta1", "--eta1", "rays.csv:4:18: eta1").
+struct ProfileNames {
+    std::string eta0 = "eta0", eta1 = "eta1", alpha = "alpha";
+};
+
+/// Checks the parameters: eta0 from 1 to kMaxEta, eta1 0 or from kMinEta1 to kMaxEta, alpha
+/// from kMinAlpha to kMaxAlpha, and for a superior profile eta0^2 > eta1^2 (the
+/// index must stay real).  The message names the bad value as `names` says.
+Status validate(const Profile& p, const ProfileNames& names = {});
 
 /// Builds and validates a profile.
 Result<Profile> make_profile(ProfileKind kind, double eta0, double eta1, double alpha);
@@ -65,6 +80,7 @@ std::vector<std::string_view> preset_names();
 /// Realistic air over a heated or cooled ground, T(y) = t_aloft_k + dt_ground_k exp(-y / h),
 /// by Gladstone-Dale, n - 1 = 2.93e-4 (p / 1013.25 hPa) (288.15 K / T); fitted with the
 /// exact index at the ground and aloft and alpha = 1/h.  dt > 0 gives an inferior profile.
+/// Temperatures from 1 to 10000 K, h from 1e-6 to 1e6 m, p from 1e-3 to 1e6 hPa.
 Result<Profile> air_profile(double t_aloft_k, double dt_ground_k, double scale_height_m,
                             double pressure_hpa = 1013.25);
 

@@ -60,13 +60,7 @@ void setup_compile_command(CLI::App& app) {
         CompileOptions c = o->compile;
         if (*tol) c.tolerance_px = o->tolerance;
         if (*layers) c.layers = o->layers == "uniform" ? LayerMode::Uniform : LayerMode::Adaptive;
-        if (*count) {
-            if (o->count < 1) {
-                std::cerr << "mirage compile: --count " << o->count << ": must be at least 1\n";
-                throw CommandFailed{1};
-            }
-            c.layer_count = o->count;
-        }
+        if (*count) c.layer_count = o->count;
         auto report = compile_scene(c);
         if (!report) {
             std::cerr << "mirage compile: " << report.message() << "\n";

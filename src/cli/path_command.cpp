@@ -15,9 +15,9 @@
 #include "atmosphere/vanishing.h"
 #include "cli/commands.h"
 #include "report/ray_diagram.h"
-#include "util/atomic_file.h"
 #include "util/csv.h"
 #include "util/format.h"
+#include "util/output_set.h"
 
 namespace mirage {
 
@@ -81,7 +81,7 @@ Profile resolve_profile(const PathOptions& o, std::string& label) {
         }
         label = o.profile;
     }
-    if (auto s = validate(p); !s) fail(s.message());
+    if (auto s = validate(p, ProfileNames{"--eta0", "--eta1", "--alpha"}); !s) fail(s.message());
     return p;
 }
 
@@ -91,7 +91,8 @@ double resolve_angle(const PathOptions& o) {
     if (!std::isnan(o.i_rad)) return o.i_rad;
     if (!std::isnan(o.elevation_deg)) {
         if (!(std::fabs(o.elevation_deg) < 90.0))
-            fail("--elevation-deg " + g(o.elevation_deg) + ": must lie strictly between -90 and 90");
+            fail("--elevation-deg " + g(o.elevation_deg) +
+                 ": must lie strictly between -90 and 90");
         return M_PI / 2 - o.elevation_deg * M_PI / 180.0;
     }
     fail("give the ray's direction with --elevation-deg DEG (or --i-rad RAD)");
@@ -112,8 +113,10 @@ void write_svg(const PathOptions& o, const Profile& profile, const std::string& 
     st.profile_label = label;
     st.eye_height = o.eye_height;
     const double span = std::max(std::fabs(elev_deg), 1e-3);
-    st.elev_from_deg = std::isnan(o.fan_from_deg) ? (elev_deg < 0 ? 2.0 * elev_deg : -span) : o.fan_from_deg;
-    st.elev_to_deg = std::isnan(o.fan_to_deg) ? (elev_deg < 0 ? 0.25 * span : 2.0 * span) : o.fan_to_deg;
+    st.elev_from_deg =
+        std::isnan(o.fan_from_deg) ? (elev_deg < 0 ? 2.0 * elev_deg : -span) : o.fan_from_deg;
+    st.elev_to_deg =
+        std::isnan(o.fan_to_deg) ? (elev_deg < 0 ? 0.25 * span : 2.0 * span) : o.fan_to_deg;
     st.count = o.fan_count;
     st.tolerance_rad = o.tolerance_rad;
     st.tolerance_m = o.tolerance_m;
@@ -124,7 +127,8 @@ void write_svg(const PathOptions& o, const Profile& profile, const std::string& 
         double reach = 10.0 * o.eye_height;
         for (int j = 0; j < st.count; ++j) {
             const double t = st.count == 1 ? 0.5 : double(j) / (st.count - 1);
-            const double e = (st.elev_from_deg + t * (st.elev_to_deg - st.elev_from_deg)) * M_PI / 180;
+            const double e =
+                (st.elev_from_deg + t * (st.elev_to_deg - st.elev_from_deg)) * M_PI / 180;
             auto ray = make_exact_ray(profile, o.eye_height, M_PI / 2 - e);
             if (!ray) continue;
             if (ray->turn_kind == TurnKind::Ahead) reach = std::max(reach, 1.6 * ray->dz_turn);
@@ -134,7 +138,9 @@ void write_svg(const PathOptions& o, const Profile& profile, const std::string& 
     }
     auto svg = ray_diagram_svg(st);
     if (!svg) fail(svg.message());
-    if (auto s = write_file_atomic(o.svg, *svg); !s) fail(s.message());
+    OutputSet outputs;
+    if (auto s = outputs.write_text(o.svg, *svg); !s) fail(s.message());
+    if (auto s = outputs.commit(); !s) fail(s.message());
 }
 
 // `--object-height H [--object-distance D]`: from which eye distances the point has a mirrored
@@ -199,11 +205,19 @@ void run_single(const PathOptions& o) {
     std::string label;
     const Profile profile = resolve_profile(o, label);
     if (std::isnan(o.eye_height)) fail("give the eye height with --eye-height M");
-    if (!(o.eye_height > 0.0) || !std::isfinite(o.eye_height))
-        fail("--eye-height " + g(o.eye_height) + ": the eye must be above the ground (> 0 m)");
+    if (!(o.eye_height > 0.0 && o.eye_height <= kMaxHeight))
+        fail("--eye-height " + g(o.eye_height) +
+             ": the eye must be above the ground (> 0 m) and at most " + shortest(kMaxHeight) +
+             " m");
     const double i = resolve_angle(o);
-    if (!(o.tolerance_rad >= 0.0) || !(o.tolerance_m >= 0.0) ||
-        !(o.tolerance_rad > 0.0 || o.tolerance_m > 0.0))
+    if (!(o.tolerance_rad == 0.0 ||
+          (o.tolerance_rad >= kMinToleranceRad && o.tolerance_rad <= 1.0)))
+        fail("--tolerance " + g(o.tolerance_rad) + ": must be 0 or from " + g(kMinToleranceRad) +
+             " to 1 rad");
+    if (!(o.tolerance_m == 0.0 || (o.tolerance_m >= kMinToleranceM && o.tolerance_m <= 1e9)))
+        fail("--tolerance-m " + g(o.tolerance_m) + ": must be 0 or from " + g(kMinToleranceM) +
+             " to 1e+09 m");
+    if (!(o.tolerance_rad > 0.0 || o.tolerance_m > 0.0))
         fail("--tolerance " + g(o.tolerance_rad) + " and --tolerance-m " + g(o.tolerance_m) +
              ": need a positive tolerance");
     if (!(o.max_distance > 0.0)) fail("--max-distance " + g(o.max_distance) + ": must be > 0 m");
@@ -246,19 +260,21 @@ void run_single(const PathOptions& o) {
         std::cout << j.dump(2) << "\n";
     } else {
         std::cout << "profile     " << label << ": eta0 = " << shortest(profile.eta0)
-                  << ", eta1 = " << shortest(profile.eta1) << ", alpha = " << shortest(profile.alpha)
-                  << " /m\n";
+                  << ", eta1 = " << shortest(profile.eta1)
+                  << ", alpha = " << shortest(profile.alpha) << " /m\n";
         std::cout << "eye         y0 = " << g(o.eye_height) << " m, elevation " << g(elev_deg)
                   << " deg (i = " << shortest(i) << " rad)\n";
         std::cout << "invariant   beta = eta(y0) sin i = " << shortest(ray->beta)
-                  << " (eta(y0) = " << shortest(ray->eta_p) << ", k2 = " << shortest(ray->k2) << ")\n";
+                  << " (eta(y0) = " << shortest(ray->eta_p) << ", k2 = " << shortest(ray->k2)
+                  << ")\n";
         std::cout << "class       " << ray_class_name(ray->ray_class) << "\n";
         if (ray->turn_kind == TurnKind::None) {
             std::cout << "turning     none\n";
         } else {
             const char* what = ray->s > 0 ? "lowest point" : "apex";
-            std::cout << "turning     " << what << " y = " << g(ray->y_turn) << " m at dz = "
-                      << g(ray->dz_turn) << " m (" << turn_kind_name(ray->turn_kind) << ")\n";
+            std::cout << "turning     " << what << " y = " << g(ray->y_turn)
+                      << " m at dz = " << g(ray->dz_turn) << " m ("
+                      << turn_kind_name(ray->turn_kind) << ")\n";
         }
         if (ray->hits_ground)
             std::cout << "ground      hit at dz = " << g(ray->dz_ground) << " m\n";
@@ -270,8 +286,7 @@ void run_single(const PathOptions& o) {
         std::cout << "), then " << end_name;
         if (path.end != PathEnd::Ground) std::cout << " with slope " << g(path.end_slope);
         std::cout << "\n        dz (m)            y (m)\n";
-        for (const auto& p : path.points)
-            std::printf("  %14.8g  %14.8g\n", p.x, p.y);
+        for (const auto& p : path.points) std::printf("  %14.8g  %14.8g\n", p.x, p.y);
     }
     if (!o.svg.empty()) write_svg(o, profile, label, elev_deg);
 }
@@ -288,7 +303,8 @@ void setup_path_command(CLI::App& app) {
     sub->add_option("--eta1", o->eta1, "amplitude of eta^2's change");
     sub->add_option("--alpha", o->alpha, "decay rate, 1/m");
     sub->add_option("--eye-height", o->eye_height, "height of the eye, m");
-    sub->add_option("--elevation-deg", o->elevation_deg, "elevation of the ray, degrees (< 0 down)");
+    sub->add_option("--elevation-deg", o->elevation_deg,
+                    "elevation of the ray, degrees (< 0 down)");
     sub->add_option("--i-rad", o->i_rad, "angle from the upward vertical, rad (the paper's i)");
     sub->add_option("--tolerance", o->tolerance_rad,
                     "sampling tolerance: largest error as an angle seen from the eye, rad")
@@ -300,7 +316,9 @@ void setup_path_command(CLI::App& app) {
     sub->add_option("--svg", o->svg, "draw a ray diagram (a fan of rays) to this SVG file");
     sub->add_option("--fan-from-deg", o->fan_from_deg, "first elevation of the fan, degrees");
     sub->add_option("--fan-to-deg", o->fan_to_deg, "last elevation of the fan, degrees");
-    sub->add_option("--fan-count", o->fan_count, "rays in the fan")->capture_default_str();
+    sub->add_option("--fan-count", o->fan_count, "rays in the fan")
+        ->check(CLI::Range(1, kMaxFanRays))
+        ->capture_default_str();
     sub->add_option("--batch", o->batch,
                     "evaluate the rays of a CSV (reference columns) and print a CSV");
     sub->add_option("--object-height", o->object_height,

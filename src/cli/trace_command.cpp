@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 namespace mirage {
 

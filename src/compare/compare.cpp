@@ -19,10 +19,13 @@
 #include "compile/compile.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
+#include "load/mirage_scene.h"
 #include "report/contact_sheet.h"
-#include "trace/trace_scene.h"
+#include "trace/object_query.h"
+#include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
+#include "util/output_set.h"
 #include "util/process.h"
 
 namespace mirage {
@@ -31,9 +34,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kMaxCount = 4096;       // the largest uniform layer count a sweep tries
-constexpr int kFirstCount = 8;        // the default doubling starts here
-constexpr int kMaxImageSide = 20000;  // as the tracer
+constexpr int kMaxCount = kMaxLayerCount;  // the largest uniform layer count a sweep tries
+constexpr int kFirstCount = 8;             // the default doubling starts here
 
 std::string list_text(const std::vector<double>& values) {
     std::string s;
@@ -81,11 +83,16 @@ std::string temporary_image_name(const fs::path& path) {
 }
 
 /// The sweep's state: the options, the reference and what has been measured so far.
+///
+/// The results (results.csv, the plots, the contact sheet, summary.md, reference.png and
+/// renders/) are written under a staging directory inside the output directory and renamed
+/// into place together at the end, all or none; work/ holds what POV-Ray reads while the
+/// sweep runs (each design's compiled scene) and the logs, written as it goes.
 struct Sweep {
     CompareOptions opt;
-    fs::path out, renders, work;
-    std::string scene_abs;
-    Image reference;  // code values / 255
+    fs::path out, stage, renders, work;  // renders: the staged renders/
+    OutputSet outputs;                   // knows the scene's files: no result replaces one
+    Image reference;                     // code values / 255
     CompareResult result;
     std::vector<SheetTile> tiles;
     std::string povray_version;
@@ -99,14 +106,16 @@ struct Sweep {
         say(line);
     }
 
-    /// Refuses to replace the scene file with an output.
-    Status guard(const fs::path& output) const {
+    ~Sweep() {
         std::error_code ec;
-        if (fs::exists(output, ec) && fs::equivalent(scene_abs, output, ec))
-            return make_error(opt.scene + ": " + output.string() +
-                              " would overwrite the scene template");
-        return Ok{};
+        if (!stage.empty()) fs::remove_all(stage, ec);  // what was not committed
     }
+
+    /// Where a result is written until it is committed.
+    fs::path staged(const fs::path& result) const { return stage / fs::relative(result, out); }
+
+    /// Refuses an output that would replace a file the scene was read from.
+    Status guard(const fs::path& output) const { return outputs.check(output.string()); }
 
     /// Measures an image (code values / 255) against the reference.
     Result<ImageComparison> measure(const Image& codes) const {
@@ -170,7 +179,7 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     const std::string label =
         (model == CompareModel::UniformBands ? "uniform " : "adaptive ") + setting_label(row);
     const fs::path dir = sw.work / id;
-    const fs::path image = sw.renders / (id + ".png");
+    const fs::path image = sw.out / "renders" / (id + ".png");
     if (auto s = sw.guard(image); !s) return s.error();
 
     CompileOptions c;
@@ -204,13 +213,13 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     for (const auto& w : rep->warnings)
         if (sw.compile_warnings.insert(w).second) sw.note(label + ": mirage compile: " + w);
 
-    auto run = render_compiled(sw, rep->ini_path, dir, image.string());
+    auto run = render_compiled(sw, rep->ini_path, dir, sw.staged(image).string());
     if (!run) return run.error();
     if (!run->ok) {
         sw.note(label + ": skipped, " + run->failure + ":\n" + log_tail(run->log_path, 5));
         return BandOutcome::Skipped;
     }
-    auto codes = read_image(image.string());
+    auto codes = read_image(sw.staged(image).string());
     if (!codes) return codes.error();
     auto cmp = sw.measure(*codes);
     if (!cmp) return make_error(image.string() + ": " + cmp.message());
@@ -250,11 +259,11 @@ Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
     row.setting = tolerance;
     const std::string id = row_id(model, setting_text(row));
     const std::string label = model_name(model) + " " + setting_label(row);
-    const fs::path image = sw.renders / (id + ".png");
+    const fs::path image = sw.out / "renders" / (id + ".png");
     if (auto s = sw.guard(image); !s) return s;
     TraceOptions t;
     t.scene = sw.opt.scene;
-    t.output = image.string();
+    t.output = sw.staged(image).string();
     t.width = sw.opt.width;
     t.height = sw.opt.height;
     t.tolerance_px = tolerance;
@@ -352,12 +361,12 @@ Status plot(Sweep& sw) {
                 "with gnuplot to draw it)");
         return Ok{};
     }
-    const std::string png_tmp = temporary_image_name(r.plot_png);
-    const std::string svg_tmp = temporary_image_name(r.plot_svg);
+    const std::string png_tmp = temporary_image_name(sw.staged(r.plot_png));
+    const std::string svg_tmp = temporary_image_name(sw.staged(r.plot_svg));
     const std::string log = (sw.work / "gnuplot.log").string();
     const std::string vars = "png_out='" + fs::path(png_tmp).filename().string() + "'; svg_out='" +
                              fs::path(svg_tmp).filename().string() + "'";
-    auto run = run_process({sw.opt.gnuplot, "-e", vars, "error_vs_time.gp"}, sw.out.string(),
+    auto run = run_process({sw.opt.gnuplot, "-e", vars, "error_vs_time.gp"}, sw.stage.string(),
                            temporary_name_for(log));
     if (!run) return run.error();
     if (auto s = commit_file(temporary_name_for(log), log); !s) return s.error();
@@ -369,8 +378,8 @@ Status plot(Sweep& sw) {
                 "): no plot drawn");
         return Ok{};
     }
-    if (auto s = commit_file(png_tmp, r.plot_png); !s) return s;
-    if (auto s = commit_file(svg_tmp, r.plot_svg); !s) return s;
+    if (auto s = commit_file(png_tmp, sw.staged(r.plot_png).string()); !s) return s;
+    if (auto s = commit_file(svg_tmp, sw.staged(r.plot_svg).string()); !s) return s;
     r.plotted = true;
     return Ok{};
 }
@@ -417,24 +426,16 @@ MachineInfo read_machine_info() {
 
 Status validate_compare_options(const CompareOptions& o) {
     if (o.scene.empty()) return make_error("no scene given");
-    if (o.width < 1 || o.height < 1 || o.width > kMaxImageSide || o.height > kMaxImageSide)
-        return make_error("image size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
-                          " must be 1 to 20000 pixels each way");
-    auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-    if (!positive(o.reference_tolerance_px))
-        return make_error("--reference-tolerance " + shortest(o.reference_tolerance_px) +
-                          ": must be a positive number of pixels");
+    if (auto s = check_image_size(o.width, o.height); !s) return s;
+    if (auto s = check_tolerance_px(o.reference_tolerance_px, "--reference-tolerance"); !s)
+        return s;
     for (int n : o.counts)
-        if (n < 1 || n > kMaxCount)
-            return make_error("--counts " + std::to_string(n) + ": must be 1 to " +
-                              std::to_string(kMaxCount) + " layers");
+        if (auto s = check_layer_count(n, "--counts"); !s) return s;
     const std::pair<const char*, const std::vector<double>*> lists[] = {
         {"--tolerances", &o.tolerances}, {"--trace-tolerances", &o.trace_tolerances}};
     for (const auto& [flag, values] : lists)
         for (double t : *values)
-            if (!positive(t))
-                return make_error(std::string(flag) + " " + shortest(t) +
-                                  ": must be a positive number of pixels");
+            if (auto s = check_tolerance_px(t, flag); !s) return s;
     for (const auto& [flag, values] : lists)
         for (double t : *values)
             if (!(o.reference_tolerance_px < t))
@@ -481,9 +482,14 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         return make_error(opt.povray +
                           ": not found on PATH; the band models are rendered by POV-Ray 3.7 "
                           "(Debian: apt-get install povray)");
+    // The scene is read first: a scene that does not load fails here, with its place, and
+    // its files are the inputs no result may replace.
+    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    lo.object_queries = tracer_object_queries();
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    sw.outputs.protect(loaded->scene.files);
     std::error_code ec;
-    if (!fs::is_regular_file(opt.scene, ec))
-        return make_error(opt.scene + ": cannot open: no such file");
 
     CompareResult& r = sw.result;
     r.scene = opt.scene;
@@ -494,15 +500,17 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     r.reference_tolerance_px = opt.reference_tolerance_px;
     r.command = compare_command_line(options);
     r.machine = read_machine_info();
-    sw.scene_abs = fs::absolute(opt.scene).string();
     sw.out = fs::absolute(opt.out_dir.empty() ? fs::path("build/compare") / r.name
                                               : fs::path(opt.out_dir));
-    sw.renders = sw.out / "renders";
     sw.work = sw.out / "work";
-    for (const auto& d : {sw.out, sw.renders, sw.work}) {
+    for (const auto& d : {sw.out, sw.out / "renders", sw.work}) {
         fs::create_directories(d, ec);
         if (ec) return make_error(d.string() + ": cannot create: " + ec.message());
     }
+    sw.stage = sw.out / (".staging" + std::to_string(::getpid()));
+    sw.renders = sw.stage / "renders";
+    fs::create_directories(sw.renders, ec);
+    if (ec) return make_error(sw.renders.string() + ": cannot create: " + ec.message());
     r.out_dir = sw.out.string();
     r.csv_path = (sw.out / "results.csv").string();
     r.plot_script = (sw.out / "error_vs_time.gp").string();
@@ -530,7 +538,8 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     if (ref->mode == PathMode::Straight)
         return make_error(opt.scene + ": the scene declares no atmosphere (" + ref->atmosphere +
                           "): there is nothing to compare; declare one as mirage.inc describes");
-    if (auto s = write_png(ref->render.image, r.reference_path); !s) return s.error();
+    if (auto s = write_png(ref->render.image, sw.staged(r.reference_path).string()); !s)
+        return s.error();
     r.atmosphere = ref->atmosphere;
     r.reference_seconds = ref->render.stats.seconds;
     r.reference_threads = ref->render.stats.threads;
@@ -585,8 +594,10 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
             if (auto s = run_tracer(sw, CompareModel::Scanline, tol); !s) return s.error();
 
     r.povray_version = sw.povray_version;
-    if (auto s = write_file_atomic(r.csv_path, results_csv(r)); !s) return s.error();
-    if (auto s = write_file_atomic(r.plot_script, gnuplot_script(r)); !s) return s.error();
+    if (auto s = write_file_atomic(sw.staged(r.csv_path).string(), results_csv(r)); !s)
+        return s.error();
+    if (auto s = write_file_atomic(sw.staged(r.plot_script).string(), gnuplot_script(r)); !s)
+        return s.error();
     if (auto s = plot(sw); !s) return s.error();
     auto sheet = make_contact_sheet(sw.tiles);
     if (!sheet) return sheet.error();
@@ -595,8 +606,18 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         sw.note("contact sheet without captions: OpenImageIO found none of the fonts " +
                 std::string("DejaVuSans, LiberationSans-Regular, NotoSans-Regular, FreeSans ") +
                 "(Debian: apt-get install fonts-dejavu-core)");
-    if (auto s = write_png_codes(sheet->image, r.sheet_path); !s) return s.error();
-    if (auto s = write_file_atomic(r.summary_path, summary_markdown(r)); !s) return s.error();
+    if (auto s = write_png_codes(sheet->image, sw.staged(r.sheet_path).string()); !s)
+        return s.error();
+    if (auto s = write_file_atomic(sw.staged(r.summary_path).string(), summary_markdown(r)); !s)
+        return s.error();
+    // Everything staged goes into place together.
+    for (const auto& e : fs::recursive_directory_iterator(sw.stage, ec)) {
+        if (!e.is_regular_file()) continue;
+        const fs::path target = sw.out / fs::relative(e.path(), sw.stage);
+        if (auto s = sw.outputs.adopt(e.path().string(), target.string()); !s) return s.error();
+    }
+    if (ec) return make_error(sw.stage.string() + ": " + ec.message());
+    if (auto s = sw.outputs.commit(); !s) return s.error();
     return r;
 }
 

@@ -9,8 +9,8 @@
 #include "compile/pixel_check.h"
 #include "compile/stages.h"
 #include "image/image_io.h"
-#include "util/atomic_file.h"
 #include "util/format.h"
+#include "util/output_set.h"
 
 namespace fs = std::filesystem;
 
@@ -139,43 +139,6 @@ void summarize_check(const PixelCheck& pc, const CameraRays& rays, double tolera
     rep.worst_columns = worst(cols);
 }
 
-/// Writes every output or none: each to a temporary name first, renamed into place only
-/// when all of them were written.
-Status write_all(const std::vector<std::pair<std::string, std::string>>& files,
-                 const Image* error_map, const std::string& error_map_path) {
-    std::vector<std::pair<std::string, std::string>> staged;  // temporary, final
-    auto discard = [&] {
-        std::error_code ec;
-        for (const auto& [tmp, path] : staged) fs::remove(tmp, ec);
-    };
-    for (const auto& [path, text] : files) {
-        const std::string tmp = temporary_name_for(path);
-        staged.emplace_back(tmp, path);
-        if (auto s = write_file_atomic(tmp, text); !s) {
-            discard();
-            return s.error();
-        }
-    }
-    if (error_map) {
-        const std::string tmp =
-            fs::path(temporary_name_for(error_map_path)).replace_extension(".exr");
-        staged.emplace_back(tmp, error_map_path);
-        if (auto s = write_exr(*error_map, tmp); !s) {
-            discard();
-            return make_error(error_map_path + ": " + s.message());
-        }
-    }
-    for (size_t i = 0; i < staged.size(); ++i)
-        if (auto s = commit_file(staged[i].first, staged[i].second); !s) {
-            for (size_t j = i + 1; j < staged.size(); ++j) {
-                std::error_code ec;
-                fs::remove(staged[j].first, ec);
-            }
-            return s.error();
-        }
-    return Ok{};
-}
-
 }  // namespace
 
 Result<CompileReport> compile_scene(const CompileOptions& opt) {
@@ -186,6 +149,9 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     auto ctx_r = compile_settings(opt);
     if (!ctx_r) return ctx_r.error();
     const CompileContext& ctx = *ctx_r;
+    // Every output is written at the end, all or none, and none over a file the scene was
+    // read from (those the options name were refused by compile_settings already).
+    OutputSet outputs(ctx.scene.files);
     const AtmosphereSettings& st = ctx.settings;
     rep.scene = opt.scene;
     rep.name = ctx.name;
@@ -252,10 +218,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.report_path = (abs_dir / "report.json").string();
     rep.image_path = opt.image.empty() ? (abs_dir.parent_path() / (rep.name + ".png")).string()
                                        : fs::absolute(opt.image).string();
-    const std::string scene_abs = fs::absolute(opt.scene).string();
-    if (fs::equivalent(scene_abs, rep.include_path, ec) ||
-        fs::equivalent(scene_abs, rep.ini_path, ec))
-        return make_error(opt.scene + ": the outputs would overwrite the template");
+    if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
     const std::vector<std::string> header = {
         "mirage_layers.inc: the banded atmosphere of " + rep.name + " at " +
             std::to_string(opt.width) + "x" + std::to_string(opt.height) +
@@ -300,14 +263,16 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     clock.done("check");
 
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const Image map = opt.error_map.empty() ? Image() : error_map_image(rep);
-    if (auto s = write_all({{rep.include_path, files.include},
-                            {rep.csv_path, files.csv},
-                            {rep.ini_path, files.ini},
-                            {rep.report_path, report_json(rep)}},
-                           opt.error_map.empty() ? nullptr : &map, opt.error_map);
-        !s)
-        return s.error();
+    const std::pair<std::string, std::string> texts[] = {{rep.include_path, files.include},
+                                                         {rep.csv_path, files.csv},
+                                                         {rep.ini_path, files.ini},
+                                                         {rep.report_path, report_json(rep)}};
+    for (const auto& [path, text] : texts)
+        if (auto s = outputs.write_text(path, text); !s) return s.error();
+    if (!opt.error_map.empty()) {
+        if (auto s = write_exr(error_map_image(rep), opt.error_map, &outputs); !s) return s.error();
+    }
+    if (auto s = outputs.commit(); !s) return s.error();
     clock.done("report");
     return rep;
 }

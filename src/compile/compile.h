@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "atmosphere/profile.h"
-#include "compile/atmosphere_settings.h"
+#include "load/atmosphere_settings.h"
 #include "util/result.h"
 
 namespace mirage {

@@ -3,13 +3,14 @@
 #include <cmath>
 #include <filesystem>
 
-#include "compile/library_paths.h"
 #include "compile/stages.h"
+#include "load/mirage_scene.h"
 #include "scene/camera.h"
 #include "scene/ground.h"
-#include "scene/parser.h"
+#include "trace/object_query.h"
 #include "trace/scene_extent.h"
 #include "util/format.h"
+#include "util/output_set.h"
 
 namespace fs = std::filesystem;
 
@@ -22,8 +23,7 @@ namespace {
 constexpr double kUnboundedSceneExtent = 1000.0;
 
 std::string place(const FileLoc& loc, const std::string& file) {
-    if (loc.file.empty()) return file + ": ";
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": ";
+    return (loc.file.empty() ? file : to_string(loc)) + ": ";
 }
 
 // The |sin(elevation)| of the steepest ray POV-Ray may shoot through the image (antialiasing
@@ -50,50 +50,47 @@ LayerStack CompileContext::rendered(const LayerStack& stack) const {
 }
 
 Result<CompileContext> compile_settings(const CompileOptions& opt) {
-    if (opt.width < 1 || opt.height < 1 || opt.width > 20000 || opt.height > 20000)
-        return make_error("image size " + std::to_string(opt.width) + "x" +
-                          std::to_string(opt.height) + " must be 1 to 20000 pixels each way");
     if (opt.samples_per_side < 1 || opt.samples_per_side > 5)
         return make_error("sub-pixel samples " + std::to_string(opt.samples_per_side) +
                           " per side: must be 1 to 5");
+    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
+        return make_error("--error-map " + opt.error_map +
+                          ": the error map is written as OpenEXR, name it .exr");
     CompileContext ctx;
     ctx.options = opt;
     ctx.name = fs::path(opt.scene).stem().string();
 
-    ParseOptions po;
-    po.library_paths = opt.library_paths;
-    for (const auto& p : default_library_paths(opt.scene)) po.library_paths.push_back(p);
-    po.image_width = opt.width;
-    po.image_height = opt.height;
-    po.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
-    auto parsed = parse_scene_file(opt.scene, po);
-    if (!parsed) return parsed.error();
-    ctx.scene = std::move(*parsed);
-    for (const auto& p : po.library_paths) ctx.library_paths.push_back(fs::absolute(p).string());
-
-    auto settings = read_atmosphere_settings(ctx.scene);
-    if (!settings) return settings.error();
-    ctx.settings = *settings;
+    // The image size, the include paths, the parse, the Mirage_ settings with the options'
+    // replacements and the camera's place: load/mirage_scene.h.
+    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    lo.object_queries = tracer_object_queries();
+    lo.tolerance_px = opt.tolerance_px;
+    lo.layers = opt.layers;
+    lo.layer_count = opt.layer_count;
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    ctx.scene = std::move(loaded->scene);
+    // The outputs the options name may not replace a file the scene was read from: refused
+    // here, before any work (compile_scene writes them through an OutputSet of its own).
+    {
+        const OutputSet inputs(ctx.scene.files);
+        for (const std::string& named : {opt.error_map, opt.image})
+            if (!named.empty())
+                if (auto s = inputs.check(named); !s) return s.error();
+    }
+    for (const auto& p : loaded->parse_options.library_paths)
+        ctx.library_paths.push_back(fs::absolute(p).string());
+    ctx.settings = loaded->settings;
     // Heights above the atmosphere's ground from here on (scene/ground.h).
     const double ground = ctx.settings.ground_height;
     const Scene as_parsed = ground != 0.0 ? ctx.scene : Scene{};
     lower_scene(ctx.scene, ground);
-    if (opt.tolerance_px) {
-        if (!(*opt.tolerance_px > 0.0) || !std::isfinite(*opt.tolerance_px))
-            return make_error("--tolerance " + shortest(*opt.tolerance_px) +
-                              ": must be a positive number of pixels");
-        ctx.settings.tolerance_px = *opt.tolerance_px;
-    }
     if (opt.profile) {
         ctx.settings.profile = *opt.profile;
         ctx.settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
         ctx.settings.declared = true;
     }
-    if (opt.layers) ctx.settings.layers = *opt.layers;
-    if (opt.layer_count) ctx.settings.layer_count = *opt.layer_count;
-    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
-        return make_error("--error-map " + opt.error_map +
-                          ": the error map is written as OpenEXR, name it .exr");
 
     const Scene& scene = ctx.scene;
     ctx.camera = scene.camera;
@@ -111,7 +108,8 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
         std::optional<double> lowest;
         if (!ctx.accel->finite_bounds().empty()) lowest = ctx.accel->finite_bounds().lo.y + ground;
         return make_error(
-            camera_below_ground_message(ground != 0.0 ? as_parsed : scene, ground, lowest));
+            camera_below_ground_message(ground != 0.0 ? as_parsed : scene, ground, lowest) +
+            (scene.has_camera ? "" : " (the scene has no camera: POV-Ray's default is at y = 0)"));
     }
 
     // The scene's horizontal extent around the camera: declared, or the objects' with a margin.

@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "compile/atmosphere_settings.h"
 #include "compile/compile.h"
 #include "layers/band_tracer3d.h"
 #include "layers/stack.h"
+#include "load/atmosphere_settings.h"
 #include "scene/scene.h"
 #include "trace/scene_accel.h"
 #include "util/result.h"

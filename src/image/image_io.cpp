@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/fmath.h>
 #include <OpenImageIO/imageio.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,13 +31,25 @@ std::string lower_extension(const std::string& path) {
 std::string temporary_name(const std::string& path) {
     const std::filesystem::path p(path);
     std::string name(".");
-    name.append(p.stem().string()).append(".tmp").append(p.extension().string());
+    name.append(p.stem().string())
+        .append(".tmp")
+        .append(std::to_string(::getpid()))
+        .append(p.extension().string());
     return (p.parent_path() / name).string();
 }
 
+// Writes to `outputs`' temporary name for `path` (renamed when the set is committed), or
+// without a set to a temporary name of its own, renamed at once.
 Status write_through_temporary(const std::string& path, const OIIO::ImageSpec& spec,
-                               const OIIO::TypeDesc& format, const void* data) {
-    const std::string tmp = temporary_name(path);
+                               const OIIO::TypeDesc& format, const void* data, OutputSet* outputs) {
+    std::string tmp;
+    if (outputs) {
+        auto staged = outputs->stage(path);
+        if (!staged) return staged.error();
+        tmp = *staged;
+    } else {
+        tmp = temporary_name(path);
+    }
     auto out = OIIO::ImageOutput::create(path);
     if (!out) return make_error(path + ": cannot write images of this type: " + OIIO::geterror());
     if (!out->open(tmp, spec)) {
@@ -53,6 +66,7 @@ Status write_through_temporary(const std::string& path, const OIIO::ImageSpec& s
         std::remove(tmp.c_str());
         return make_error(message);
     }
+    if (outputs) return Ok{};
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
@@ -100,7 +114,7 @@ Image quantize_srgb8(const Image& linear) {
     return out;
 }
 
-Status write_png(const Image& linear, const std::string& path) {
+Status write_png(const Image& linear, const std::string& path, OutputSet* outputs) {
     if (auto s = check_image(linear, path); !s) return s;
     std::vector<std::uint8_t> bytes(linear.pixels.size());
     for (std::size_t i = 0; i < linear.pixels.size(); ++i) {
@@ -109,10 +123,10 @@ Status write_png(const Image& linear, const std::string& path) {
     OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("Software", "mirage");
-    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
 }
 
-Status write_png_codes(const Image& codes, const std::string& path) {
+Status write_png_codes(const Image& codes, const std::string& path, OutputSet* outputs) {
     if (auto s = check_image(codes, path); !s) return s;
     std::vector<std::uint8_t> bytes(codes.pixels.size());
     for (std::size_t i = 0; i < codes.pixels.size(); ++i) {
@@ -121,21 +135,22 @@ Status write_png_codes(const Image& codes, const std::string& path) {
     OIIO::ImageSpec spec(codes.width, codes.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("Software", "mirage");
-    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
 }
 
-Status write_exr(const Image& linear, const std::string& path) {
+Status write_exr(const Image& linear, const std::string& path, OutputSet* outputs) {
     if (auto s = check_image(linear, path); !s) return s;
     OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::FLOAT);
     spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("compression", "zip");
-    return write_through_temporary(path, spec, OIIO::TypeDesc::FLOAT, linear.pixels.data());
+    return write_through_temporary(path, spec, OIIO::TypeDesc::FLOAT, linear.pixels.data(),
+                                   outputs);
 }
 
-Status write_image(const Image& linear, const std::string& path) {
+Status write_image(const Image& linear, const std::string& path, OutputSet* outputs) {
     const std::string ext = lower_extension(path);
-    if (ext == ".png") return write_png(linear, path);
-    if (ext == ".exr") return write_exr(linear, path);
+    if (ext == ".png") return write_png(linear, path, outputs);
+    if (ext == ".exr") return write_exr(linear, path, outputs);
     return make_error(path + ": unknown image type '" + ext + "' (use .png or .exr)");
 }
 

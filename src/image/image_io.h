@@ -6,6 +6,7 @@
 #include <string>
 
 #include "image/image.h"
+#include "util/output_set.h"
 #include "util/result.h"
 
 namespace mirage {
@@ -24,19 +25,21 @@ float decode_srgb8(std::uint8_t code);
 Image quantize_srgb8(const Image& linear);
 
 /// Writes linear pixels as an 8-bit RGB PNG encoded by `encode_srgb8`, tagged sRGB.  Writes
-/// to a temporary name beside `path` and renames it, so a failure leaves `path` untouched.
-Status write_png(const Image& linear, const std::string& path);
+/// to a temporary name beside `path` and renames it, so a failure leaves `path` untouched;
+/// with `outputs`, to the set's temporary name, renamed when the set is committed.  The
+/// writers below do the same.
+Status write_png(const Image& linear, const std::string& path, OutputSet* outputs = nullptr);
 
 /// Writes code values / 255 (what `read_image` gives for an 8-bit PNG, or `quantize_srgb8`)
 /// back as an 8-bit RGB PNG, each value rounded to its code with no encoding, through a
 /// temporary name.  For pictures made of such images (a contact sheet).
-Status write_png_codes(const Image& codes, const std::string& path);
+Status write_png_codes(const Image& codes, const std::string& path, OutputSet* outputs = nullptr);
 
 /// Writes linear pixels as a float RGB OpenEXR (no encoding), through a temporary name.
-Status write_exr(const Image& linear, const std::string& path);
+Status write_exr(const Image& linear, const std::string& path, OutputSet* outputs = nullptr);
 
 /// Writes by extension: .png as `write_png`, .exr as `write_exr`; anything else is refused.
-Status write_image(const Image& linear, const std::string& path);
+Status write_image(const Image& linear, const std::string& path, OutputSet* outputs = nullptr);
 
 /// Reads the first three channels of an image as stored: an 8-bit PNG gives code / 255
 /// (no linearisation), an EXR its linear floats.  A grey image is spread to RGB.

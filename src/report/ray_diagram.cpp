@@ -32,8 +32,9 @@ struct DrawnRay {
 }  // namespace
 
 Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
-    if (!(st.count >= 1 && st.count <= 500))
-        return make_error("ray count " + std::to_string(st.count) + " must be 1 to 500");
+    if (!(st.count >= 1 && st.count <= kMaxFanRays))
+        return make_error("ray count " + std::to_string(st.count) + " must be 1 to " +
+                          std::to_string(kMaxFanRays));
     if (!(st.max_distance > 0.0)) return make_error("the drawn distance must be > 0 m");
     if (!(st.eye_height > 0.0)) return make_error("the eye must be above the ground");
     std::vector<DrawnRay> rays;

@@ -9,13 +9,16 @@
 
 namespace mirage {
 
+/// The most rays a diagram draws.
+constexpr int kMaxFanRays = 500;
+
 struct RayDiagramSettings {
     Profile profile;
     std::string profile_label;     // shown in the legend, e.g. "paper (inferior)"
     double eye_height = 1.5;       // m
     double elev_from_deg = -20.0;  // first ray's elevation, degrees
     double elev_to_deg = 5.0;      // last ray's elevation, degrees
-    int count = 11;                // rays in the fan
+    int count = 11;                // rays in the fan, 1 to kMaxFanRays
     double max_distance = 40.0;    // horizontal extent drawn, m
     double tolerance_rad = 1e-3;   // sampling tolerance, angle seen from the eye
     double tolerance_m = 0.0;      // sampling tolerance, fixed part, m

@@ -202,6 +202,14 @@ double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
+double pixel_angle_rad(const Camera& camera, int width, int height) {
+    const glm::dvec3 a =
+        camera_ray(camera, 0.5 * width, 0.5 * height - 0.5, width, height).direction;
+    const glm::dvec3 b =
+        camera_ray(camera, 0.5 * width, 0.5 * height + 0.5, width, height).direction;
+    return angle_between(a, b);
+}
+
 Result<CameraState> apply_camera_statement(const CameraState& base, const CameraModifiers& mods) {
     CameraState cam = base;
     if (mods.type) cam.type = *mods.type;

@@ -39,6 +39,10 @@ std::string camera_type_name(CameraType type);
 /// acos of the dot product is not.
 double angle_between(const glm::dvec3& a, const glm::dvec3& b);
 
+/// The angle one pixel subtends at the image's centre, between the camera rays through the
+/// centre column half a pixel above and below the centre: the unit of tolerances in pixels.
+double pixel_angle_rad(const Camera& camera, int width, int height);
+
 /// The state POV-Ray keeps for a camera while parsing: its vectors plus look_at and angle.
 /// The defaults are POV-Ray's default camera.
 struct CameraState {

@@ -16,12 +16,14 @@
 #include "scene/keywords.h"
 #include "scene/scene_parser.h"
 #include "scene/transform.h"
+#include "util/format.h"
 
 namespace mirage::scene_detail {
 namespace {
 
 constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxWidth = 100;  // str() and vstr(): the largest width and precision
 
 bool ftrue(double x) { return std::abs(x) > kEpsilon; }
 
@@ -157,10 +159,29 @@ bool SceneParser::starts_colour(const Token& t) const {
 // ---------------------------------------------------------------------------------------
 // Numeric expressions
 
+// Every number the scene computes stays finite: an overflow or an undefined operation is an
+// error where it happens (POV-Ray would carry an inf or a NaN on into the scene).
+Numeric SceneParser::finite(const Numeric& value, const Token& at) const {
+    for (int i = 0; i < value.size; ++i) {
+        if (std::isfinite(value.v[i])) continue;
+        if (at.kind() == TokenKind::Number) {
+            fail(at, "the number " + at.text() + " is out of the range of a double");
+        }
+        const std::string what = at.kind() == TokenKind::Punct && at.text() != "(" &&
+                                         at.text() != "<" && at.text() != "-" && at.text() != "+" &&
+                                         at.text() != "!"
+                                     ? "'" + at.text() + "'"
+                                     : "this expression";
+        fail(at, what + " gives " + shortest(value.v[i]) + ", not a finite number");
+    }
+    return value;
+}
+
 Numeric SceneParser::parse_express() {
     Numeric c = parse_logical();
     if (!peek_punct("?")) return c;
     Token q = next();
+    Nested nested(*this, q);  // a ? b : c ? d : e ... recurses here
     if (c.size != 1) {
         fail(q, "the condition before '?' must be a float, got a " + numeric_type_name(c.size));
     }
@@ -236,10 +257,12 @@ Numeric SceneParser::parse_rel_term() {
 Numeric SceneParser::parse_rel_factor() {
     Numeric a = parse_num_term();
     while (true) {
-        if (accept_punct("+")) {
-            a = binary(a, parse_num_term(), [](double x, double y) { return x + y; });
-        } else if (accept_punct("-")) {
-            a = binary(a, parse_num_term(), [](double x, double y) { return x - y; });
+        if (peek_punct("+")) {
+            Token op = next();
+            a = finite(binary(a, parse_num_term(), [](double x, double y) { return x + y; }), op);
+        } else if (peek_punct("-")) {
+            Token op = next();
+            a = finite(binary(a, parse_num_term(), [](double x, double y) { return x - y; }), op);
         } else {
             return a;
         }
@@ -249,8 +272,9 @@ Numeric SceneParser::parse_rel_factor() {
 Numeric SceneParser::parse_num_term() {
     Numeric a = parse_num_factor();
     while (true) {
-        if (accept_punct("*")) {
-            a = binary(a, parse_num_factor(), [](double x, double y) { return x * y; });
+        if (peek_punct("*")) {
+            Token op = next();
+            a = finite(binary(a, parse_num_factor(), [](double x, double y) { return x * y; }), op);
         } else if (peek_punct("/")) {
             Token op = next();
             Numeric b = parse_num_factor();
@@ -261,7 +285,7 @@ Numeric SceneParser::parse_num_term() {
                 // is wrong, so it is an error here.
                 if (pb.v[i] == 0.0) fail(op, "division by zero");
             }
-            a = binary(a, b, [](double x, double y) { return x / y; });
+            a = finite(binary(a, b, [](double x, double y) { return x / y; }), op);
         } else {
             return a;
         }
@@ -274,7 +298,9 @@ Numeric SceneParser::parse_num_factor() {
         // A factor's own tokens may hold directives and macro calls even where the
         // surrounding expression defers them (POV-Ray's Ok_To_Declare).
         ScopedFlag not_deferred(defer_directives_, false);
-        value = parse_factor_body();
+        const Token at = peek(0);
+        Nested nested(*this, at);
+        value = finite(parse_factor_body(), at);
     }
     if (peek_punct(".")) {
         Token dot = next();
@@ -471,12 +497,12 @@ Numeric SceneParser::parse_function(const Token& name) {
     }
     if (f == "seed") {
         double s = parse_float_param();
-        rand_streams_.push_back(static_cast<unsigned>(static_cast<int>(s)));
+        rand_streams_.push_back(static_cast<unsigned>(int_value(s, name, "seed")));
         return scalar(static_cast<double>(rand_streams_.size() - 1));
     }
     if (f == "rand") {
         Token at = peek(0);
-        return scalar(rand_next(static_cast<int>(parse_float_param()), at));
+        return scalar(rand_next(int_value(parse_float_param(), at, "rand() stream"), at));
     }
 
     // Two floats.
@@ -500,17 +526,22 @@ Numeric SceneParser::parse_function(const Token& name) {
     }
     if (f == "min" || f == "max" || f == "bitwise_and" || f == "bitwise_or" || f == "bitwise_xor") {
         expect_punct("(", "after '" + f + "'");
+        const bool bitwise = f.rfind("bitwise", 0) == 0;
+        Token at = peek(0);
         double r = parse_float();
+        if (bitwise) r = int_value(r, at, "an argument of " + f + "()");
         while (accept_punct(",")) {
+            at = peek(0);
             double b = parse_float();
             if (f == "min") r = std::min(r, b);
             if (f == "max") r = std::max(r, b);
-            if (f == "bitwise_and") r = static_cast<int>(r) & static_cast<int>(b);
-            if (f == "bitwise_or") r = static_cast<int>(r) | static_cast<int>(b);
-            if (f == "bitwise_xor") r = static_cast<int>(r) ^ static_cast<int>(b);
+            if (!bitwise) continue;
+            const int x = static_cast<int>(r), y = int_value(b, at, "an argument of " + f + "()");
+            if (f == "bitwise_and") r = x & y;
+            if (f == "bitwise_or") r = x | y;
+            if (f == "bitwise_xor") r = x ^ y;
         }
         expect_punct(")", "after the arguments of '" + f + "'");
-        if (f.rfind("bitwise", 0) == 0) r = static_cast<int>(r);
         return scalar(r);
     }
     if (f == "select") {
@@ -604,8 +635,10 @@ Numeric SceneParser::parse_function(const Token& name) {
         double r = static_cast<double>(array->sizes.size());
         if (f == "dimension_size") {
             accept_comma();
-            int d = static_cast<int>(parse_float()) - 1;
-            r = (d < 0 || d >= static_cast<int>(array->sizes.size())) ? 0.0 : array->sizes[d];
+            const double d = parse_float() - 1.0;
+            r = (d < 0.0 || d >= static_cast<double>(array->sizes.size()))
+                    ? 0.0
+                    : array->sizes[static_cast<std::size_t>(d)];
         }
         expect_punct(")", "after the arguments of '" + f + "'");
         return scalar(r);
@@ -782,6 +815,14 @@ std::string SceneParser::format_str(double value, int width, int precision) cons
 }
 
 std::string SceneParser::parse_string(bool pathname) {
+    const Token at = peek(0);
+    Nested nested(*this, at);
+    std::string s = parse_string_body(pathname);
+    check_string_size(s, at);
+    return s;
+}
+
+std::string SceneParser::parse_string_body(bool pathname) {
     Token t = next();
     if (t.kind() == TokenKind::String) {
         if (pathname) return t.text();
@@ -804,12 +845,16 @@ std::string SceneParser::parse_string(bool pathname) {
         if (f == "str") {
             double v = parse_float();
             accept_comma();
-            int width = static_cast<int>(parse_float());
+            Token at = peek(0);
+            const int width =
+                int_value(parse_float(), at, "the width of str()", -kMaxWidth, kMaxWidth);
             accept_comma();
-            int precision = static_cast<int>(parse_float());
+            at = peek(0);
+            const int precision =
+                int_value(parse_float(), at, "the precision of str()", -kMaxWidth, kMaxWidth);
             result = format_str(v, width, precision);
         } else if (f == "vstr") {
-            int dims = std::clamp(static_cast<int>(parse_float()), 2, 5);
+            int dims = static_cast<int>(std::clamp(parse_float(), 2.0, 5.0));
             accept_comma();
             Numeric n = parse_rel_factor();
             // A float is not repeated here: POV-Ray's Parse_Unknown_Vector pads with zeros.
@@ -820,9 +865,13 @@ std::string SceneParser::parse_string(bool pathname) {
             accept_comma();
             std::string separator = parse_string(pathname);
             accept_comma();
-            int width = static_cast<int>(parse_float());
+            Token at = peek(0);
+            const int width =
+                int_value(parse_float(), at, "the width of vstr()", -kMaxWidth, kMaxWidth);
             accept_comma();
-            int precision = static_cast<int>(parse_float());
+            at = peek(0);
+            const int precision =
+                int_value(parse_float(), at, "the precision of vstr()", -kMaxWidth, kMaxWidth);
             for (int i = 0; i < dims; ++i) {
                 if (i) result += separator;
                 result += format_str(n.v[i], width, precision);
@@ -831,18 +880,19 @@ std::string SceneParser::parse_string(bool pathname) {
             result = parse_string(pathname);
             while (accept_punct(",")) result += parse_string(pathname);
         } else if (f == "chr") {
-            int code = static_cast<int>(parse_float());
-            if (code < 0 || code > 0xFFFF) fail(t, "chr() of a code out of range");
+            const double code = parse_float();
+            if (!(code >= 0.0 && code < 0x10000)) fail(t, "chr() of a code out of range");
             append_utf8(result, static_cast<unsigned>(code));
         } else if (f == "substr") {
             std::string s = parse_string(pathname);
             accept_comma();
-            int start = static_cast<int>(parse_float());
+            const double start = std::trunc(parse_float());
             accept_comma();
-            int length = static_cast<int>(parse_float());
-            if (start < 1 || length < 0 || start + length - 1 > static_cast<int>(s.size())) {
-                fail(t, "substr(\"" + s + "\", " + std::to_string(start) + ", " +
-                            std::to_string(length) + ") is outside the string");
+            const double length = std::trunc(parse_float());
+            if (!(start >= 1.0 && length >= 0.0 &&
+                  start + length - 1.0 <= static_cast<double>(s.size()))) {
+                fail(t, "substr(\"" + s.substr(0, 40) + (s.size() > 40 ? "..." : "") + "\", " +
+                            shortest(start) + ", " + shortest(length) + ") is outside the string");
             }
             result =
                 s.substr(static_cast<std::size_t>(start - 1), static_cast<std::size_t>(length));

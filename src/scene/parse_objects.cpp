@@ -138,7 +138,7 @@ std::optional<ObjectNode> SceneParser::parse_object() {
     try {
         return parse_object_unguarded();
     } catch (const ParseFailure& failure) {
-        if (!starts_object(start)) throw;
+        if (failure.fatal || !starts_object(start)) throw;
         recover_statement(balance);
         ObjectNode unknown;
         unknown.kind = ObjectNode::Kind::Empty;
@@ -153,6 +153,7 @@ std::optional<ObjectNode> SceneParser::parse_object() {
 std::optional<ObjectNode> SceneParser::parse_object_unguarded() {
     const Token t = peek(0);
     if (!starts_object(t)) return std::nullopt;
+    Nested nested(*this, t);
     if (is_identifier(t)) {
         Token name = next();
         Value v = identifier_value(name);
@@ -161,6 +162,7 @@ std::optional<ObjectNode> SceneParser::parse_object_unguarded() {
         return std::move(*object);
     }
     Token kw = next();
+    count_objects(1, kw);
     const std::string& w = kw.text();
     if (w == "union") return parse_union(kw);
     if (w == "difference" || w == "intersection" || w == "merge") return parse_csg(kw);

@@ -68,8 +68,8 @@ void SceneParser::recover_statement(int balance) {
         // A directive met on the way may fail as well (it ran as its tokens were read).
         try {
             peek(0);
-        } catch (const ParseFailure&) {
-            if (++failures > 1000) throw;
+        } catch (const ParseFailure& failure) {
+            if (failure.fatal || ++failures > 1000) throw;
             continue;
         }
         const Token& t = peek(0);
@@ -131,7 +131,7 @@ Value SceneParser::parse_declared_value(const Token& name) {
         value = parse_rvalue(name, false);
     } catch (const ParseFailure& failure) {
         opaque_capture_ = outer;
-        if (options_.strict && !failure.from_opaque) throw;
+        if (failure.fatal || (options_.strict && !failure.from_opaque)) throw;
         failed = true;
         if (!capture.captured) {
             capture.captured = true;

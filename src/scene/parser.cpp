@@ -3,12 +3,12 @@
 #include "scene/parser.h"
 
 #include <algorithm>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+#include <cmath>
+#include <new>
 
 #include "scene/scene_parser.h"
 #include "scene/transform.h"
+#include "util/format.h"
 
 namespace mirage {
 namespace scene_detail {
@@ -59,7 +59,7 @@ void SceneParser::parse_top_level() {
             camera = peek(0).is_word("camera");
             if (!parse_top_level_item()) return;
         } catch (const ParseFailure& failure) {
-            if (camera) throw;
+            if (camera || failure.fatal) throw;
             scene_.skipped.push_back(Skipped{failure.reason, failure.loc});
             recover_statement(balance);
             if (tokens_read_ == read && !peek(0).is_eof()) next();
@@ -95,8 +95,9 @@ bool SceneParser::parse_top_level_item() {
             if (w == "max_trace_level") {
                 // Outside global_settings: POV-Ray takes it with a warning.
                 Token item = next();
-                int level = static_cast<int>(parse_float());
-                scene_.global.max_trace_level = std::clamp(level, 1, kMaxTraceLevelLimit);
+                const double level = parse_float();
+                scene_.global.max_trace_level =
+                    static_cast<int>(std::clamp(level, 1.0, double(kMaxTraceLevelLimit)));
                 add_message(item, "warning", "max_trace_level belongs in global_settings");
                 return true;
             }
@@ -152,12 +153,13 @@ void SceneParser::parse_global_settings(const Token& kw) {
         }
         if (t.is_word("max_trace_level")) {
             Token item = next();
-            int level = static_cast<int>(parse_float());
-            if (level > kMaxTraceLevelLimit) {
+            const double level = parse_float();
+            if (level >= kMaxTraceLevelLimit + 1) {
                 add_message(item, "warning",
-                            "max_trace_level " + std::to_string(level) + " reduced to 256");
+                            "max_trace_level " + shortest(std::trunc(level)) + " reduced to 256");
             }
-            scene_.global.max_trace_level = std::clamp(level, 1, kMaxTraceLevelLimit);
+            scene_.global.max_trace_level =
+                static_cast<int>(std::clamp(level, 1.0, double(kMaxTraceLevelLimit)));
             continue;
         }
         if (t.is_word("ambient_light")) {
@@ -363,26 +365,36 @@ void SceneParser::skip_unsupported(const Token& keyword, Arity arity,
 
 }  // namespace scene_detail
 
-Result<Scene> parse_scene_text(std::string_view text, const std::string& name,
-                               const ParseOptions& options) {
+namespace {
+
+/// Runs a parse whose main file's text `read` gives; nothing thrown leaves here.
+template <class Read>
+Result<Scene> run_parse(const std::string& name, const ParseOptions& options, Read read) {
     try {
         scene_detail::SceneParser parser(options);
-        auto file = parser.load_file(name, std::string(text));
+        auto file = parser.load_file(name, read(parser));
         return parser.parse(file);
     } catch (const scene_detail::ParseFailure& failure) {
         return make_error(failure.message);
+    } catch (const std::bad_alloc&) {
+        return make_error(name + ": out of memory while parsing");
     } catch (const std::exception& e) {
         // Not expected (the parser reports its own errors); still no exception leaves here.
         return make_error(name + ": internal error while parsing: " + e.what());
     }
 }
 
+}  // namespace
+
+Result<Scene> parse_scene_text(std::string_view text, const std::string& name,
+                               const ParseOptions& options) {
+    return run_parse(name, options, [&](scene_detail::SceneParser&) { return std::string(text); });
+}
+
 Result<Scene> parse_scene_file(const std::string& path, const ParseOptions& options) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return make_error(path + ": cannot open the scene file: " + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_scene_text(text.str(), path, options);
+    return run_parse(path, options, [&](scene_detail::SceneParser& parser) {
+        return parser.read_source(path, nullptr);
+    });
 }
 
 }  // namespace mirage

@@ -12,6 +12,8 @@
 // Scene::skipped in lenient mode.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -19,10 +21,24 @@
 #include <vector>
 
 #include "scene/animation_clock.h"
+#include "scene/object_queries.h"
 #include "scene/scene.h"
 #include "util/result.h"
 
 namespace mirage {
+
+/// What one parse may take at most.  Past a limit the parse ends with an error naming the
+/// place and the limit: a hostile or broken scene never crashes the parser, hangs it or fills
+/// the memory (docs/robustness.md gives the reasons for the numbers).
+struct ParseLimits {
+    std::uintmax_t max_source_bytes = 16u << 20;  // the scene and its include files, bytes
+    int max_nesting = 256;  // parentheses, objects, directives, conditionals inside each other
+    std::int64_t max_loop_passes = 1'000'000;    // passes of all #while and #for loops together
+    std::size_t max_array_elements = 1'000'000;  // elements of one array
+    std::size_t max_total_array_elements = 20'000'000;  // array elements made or copied in all
+    std::size_t max_objects = 1'000'000;                // objects parsed or copied in all
+    std::size_t max_string_bytes = 1u << 20;            // one string value, bytes
+};
 
 struct ParseOptions {
     std::vector<std::string>
@@ -36,9 +52,15 @@ struct ParseOptions {
     // lenient: unknown object kinds (and unsupported modifiers inside objects) are skipped
     // (brace-matched) and recorded in Scene::skipped; camera, lights, declarations still parsed.
     bool strict = true;
+    ParseLimits limits;
+    // trace(), inside(), min_extent(), max_extent(): answered by the tracer
+    // (tracer_object_queries() of trace/object_query.h); unset, a scene using them is refused.
+    ObjectQueries object_queries;
 };
 
-/// Parses the scene file at `path` (shown in messages as given).
+/// Parses the scene file at `path` (shown in messages as given).  The file must be a regular
+/// file (with its includes at most ParseLimits::max_source_bytes); a directory, a device or a pipe
+/// is refused with a message saying so.
 Result<Scene> parse_scene_file(const std::string& path, const ParseOptions& options);
 
 /// Parses scene text; `name` is the file name shown in messages, and its directory is where

@@ -10,15 +10,9 @@
 #include <vector>
 
 #include "scene/shapes.h"
+#include "util/file_loc.h"
 
 namespace mirage {
-
-/// A place in a source file, 1-based line and column.
-struct FileLoc {
-    std::string file;
-    int line = 0;
-    int column = 0;
-};
 
 /// A POV-Ray colour: linear rgb plus filter and transmit.
 struct Colour {
@@ -159,7 +153,8 @@ struct Skipped {
 
 struct Scene {
     std::string file;
-    Camera camera;  // POV-Ray's default camera when the file has none
+    std::vector<std::string> files;  // every file read: the scene, then its includes in order
+    Camera camera;                   // POV-Ray's default camera when the file has none
     bool has_camera = false;
     std::vector<PointLight> lights;
     std::vector<Primitive> primitives;

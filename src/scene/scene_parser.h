@@ -1,5 +1,9 @@
 // The scene parser's internals, shared by its implementation files:
-//   scene_parser.cpp       token stream: files, includes, directives, macros, symbols
+//   token_stream.cpp       frames (files, includes, macro bodies), processed tokens, messages
+//   symbols.cpp            symbol tables, identifier values, array elements
+//   parse_conditionals.cpp #if, #switch, #while, #for and the rest of the conditional stack
+//   parse_directives.cpp   #macro and macro calls, #declare, #undef, #include and the others
+//   parse_values.cpp       the right-hand side of #declare, macro arguments, arrays
 //   parse_expressions.cpp  float, vector, colour and string expressions
 //   parse_objects.cpp      objects, transforms, light sources, the camera
 //   parse_materials.cpp    textures, pigments, finishes, colour maps
@@ -11,7 +15,9 @@
 // turned into Result errors at the entry points; nothing escapes the library.
 #pragma once
 
+#include <climits>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <map>
 #include <memory>
@@ -40,6 +46,7 @@ struct ParseFailure {
     std::string reason;        // the message alone, without its place (for opaque values)
     FileLoc loc;               // its place
     bool from_opaque = false;  // a use of an opaque value (see OpaqueValue)
+    bool fatal = false;        // a limit reached or a loop cut: the lenient parse stops too
 };
 
 /// Why a file is being read: the main file, an #include, or a macro body.  Chained to the
@@ -108,6 +115,17 @@ struct CondEntry {
     double switch_value = 0.0;
     bool case_allowed = false;        // #switch: a #case or #range may follow
     std::shared_ptr<MacroDef> macro;  // #macro being declared
+    // While the entry's condition or value is read ("the condition of '#while' at 1:1"): no
+    // directive in it may close or change the entry.
+    std::string busy;
+    int directive_depth = 0;   // how many directives were being carried out when it opened
+    std::uint64_t serial = 0;  // tells entries apart
+};
+
+/// A directive being carried out: its '#' and its keyword ("#declare"), for messages.
+struct ActiveDirective {
+    FileLoc loc;
+    std::string keyword;
 };
 
 /// A file being read: the main file, an include or a macro body.
@@ -150,6 +168,20 @@ class ScopedFlag {
 
 class SceneParser {
   public:
+    /// One more level of nesting (a parenthesis, an object, a directive...) for the lifetime
+    /// of the scope; past ParseLimits::max_nesting the parse fails at `at`, long before the
+    /// recursion could overflow the stack.
+    class Nested {
+      public:
+        Nested(SceneParser& parser, const Token& at);
+        ~Nested() { --parser_.nesting_; }
+        Nested(const Nested&) = delete;
+        Nested& operator=(const Nested&) = delete;
+
+      private:
+        SceneParser& parser_;
+    };
+
     explicit SceneParser(const ParseOptions& options);
 
     /// Parses a whole scene.  Throws ParseFailure.
@@ -159,9 +191,17 @@ class SceneParser {
     /// place when the file cannot be lexed.
     std::shared_ptr<SourceFile> load_file(const std::string& path, const std::string& text);
 
+    /// The text of a file for the parse, which must be a regular file within the size limits
+    /// (ParseLimits); `at` is the #include naming it, null for the main file.  Throws
+    /// ParseFailure naming the file and what is wrong with it.
+    std::string read_source(const std::string& path, const Token* at);
+
   private:
-    // ---- errors and messages (scene_parser.cpp) ----
+    // ---- errors and messages (token_stream.cpp) ----
     [[noreturn]] void fail(const Token& at, const std::string& message) const;
+    /// fail() for a limit or a broken structure: no lenient recovery goes on after it (it
+    /// would go round the same loop, or past the limit, again).
+    [[noreturn]] void fail_fatal(const Token& at, const std::string& message) const;
     [[noreturn]] void fail_at(const SourceFile& file, int line, int column,
                               const std::shared_ptr<const FrameContext>& context,
                               const std::string& message) const;
@@ -170,7 +210,16 @@ class SceneParser {
     static std::string describe(const Token& t);
     static std::string place(const FileLoc& loc, const Token& relative_to);
 
-    // ---- token stream (scene_parser.cpp) ----
+    // ---- limits (token_stream.cpp) ----
+    void count_objects(std::size_t count, const Token& at);
+    void count_array_elements(std::size_t count, const Token& at);
+    void check_string_size(const std::string& s, const Token& at) const;
+    /// `v` as an int (truncated, as POV-Ray converts); an error naming `what` when it lies
+    /// outside [lo, hi].
+    int int_value(double v, const Token& at, const std::string& what, int lo = INT_MIN,
+                  int hi = INT_MAX) const;
+
+    // ---- token stream (token_stream.cpp) ----
     const Token& peek(std::size_t ahead = 0);
     Token next();
     bool peek_punct(std::string_view p, std::size_t ahead = 0) { return peek(ahead).is_punct(p); }
@@ -200,7 +249,7 @@ class SceneParser {
     void pop_frame();
     void check_cond_closed_at_frame_end(const Token& eof);
 
-    // ---- directives (scene_parser.cpp) ----
+    // ---- directives (parse_conditionals.cpp, parse_directives.cpp) ----
     void handle_directive(const Token& hash);
     void directive_if(const Token& hash, const Token& keyword, Cond true_type, bool value);
     void directive_else(const Token& hash, const Token& keyword);
@@ -220,21 +269,29 @@ class SceneParser {
     void directive_default(const Token& keyword);
     void directive_file_io(const Token& keyword);  // parse_opaque.cpp
     void push_cond(Cond type, const Token& hash, const Token& keyword);
+    /// Reads a float parameter of the directive at `hash` while the top entry of the
+    /// conditional stack is `busy_with` (see CondEntry::busy); `read` parses it.
+    template <class Read>
+    auto read_param_of_top(const Token& hash, const std::string& busy_with, Read read);
+    void count_loop_pass(const CondEntry& loop, const Token& at);
+    /// The loop on top of the conditional stack runs its body once more (a pass counted),
+    /// or, when not `again`, its body is skipped to its #end.
+    void go_round_or_skip(bool again, const Token& hash);
+    /// Fails when the top entry of this frame is busy (CondEntry::busy).
+    void check_not_busy(const Token& hash, const Token& keyword) const;
     void skip_tokens(Cond type);
     double parse_cond_param();
     bool parse_ifdef_param();
     void invoke_macro(const Token& name, const std::shared_ptr<const MacroDef>& macro);
     int current_frame_id() const { return frames_.back().id; }
 
-    // ---- symbols (scene_parser.cpp) ----
+    // ---- symbols (symbols.cpp) ----
     std::shared_ptr<Symbol> lookup(const std::string& name, int* depth = nullptr) const;
     /// #local declares into the table `scope` levels deep (default: the innermost), the
     /// scope the directive stands in even when its value ended inside a macro's body.
     void declare(const Token& name_token, Value value, bool local, std::size_t scope = 0);
-    std::shared_ptr<Symbol> array_element(const Token& name, const std::shared_ptr<Symbol>& array,
-                                          bool for_assignment);
 
-    // ---- rvalues (scene_parser.cpp) ----
+    // ---- values (parse_values.cpp; identifier values in symbols.cpp) ----
     Value parse_rvalue(const Token& for_name, bool is_macro_argument);
     Value parse_array_declaration(const Token& keyword);
     void parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t base,
@@ -312,6 +369,9 @@ class SceneParser {
     Colour parse_colour(bool expect_filter_transmit);
     glm::dvec3 parse_rgb_colour();
     std::string parse_string(bool pathname);
+    std::string parse_string_body(bool pathname);
+    /// `value` when every component is finite; an error at `at` otherwise.
+    Numeric finite(const Numeric& value, const Token& at) const;
     bool starts_string(const Token& t) const;
     bool starts_float(const Token& t) const;
     bool starts_vector(const Token& t) const;
@@ -388,6 +448,13 @@ class SceneParser {
     bool skipping_ = false;
     bool defer_directives_ = false;
     int macro_depth_ = 0;
+
+    int nesting_ = 0;
+    std::vector<ActiveDirective> directives_;  // innermost last
+    std::uint64_t cond_serial_ = 0;
+    std::int64_t loop_passes_ = 0;
+    std::size_t objects_ = 0, array_elements_ = 0;
+    std::uintmax_t source_bytes_ = 0;
 
     std::vector<std::unordered_map<std::string, std::shared_ptr<Symbol>>> tables_;
     std::map<std::string, std::shared_ptr<SourceFile>> file_cache_;

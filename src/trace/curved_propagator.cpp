@@ -26,7 +26,7 @@ double ground_slack(const glm::dvec3& p) {
 
 std::string place(const FileLoc& loc) {
     if (loc.file.empty()) return "";
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": ";
+    return to_string(loc) + ": ";
 }
 
 std::string degrees(double rad) {
@@ -100,6 +100,9 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm:
     // Below the ground the atmosphere is not defined: the band model's bottom layer has the
     // ground's index throughout, so such rays go straight there too.
     if (origin.y < -ground_slack(origin)) return std::nullopt;
+    // So far above the ground (beyond any scene mirage follows) the index is flat to far
+    // below a double's precision: straight.
+    if (origin.y > kMaxHeight) return std::nullopt;
     if (origin.y <= 0.0 && direction.y <= 0.0) return std::nullopt;
     const double hl = std::hypot(direction.x, direction.z);
     if (hl < kVerticalSin) return std::nullopt;
@@ -172,14 +175,6 @@ PathHit ScanlinePropagator::propagate(const SceneAccel& accel, const RayStart& s
     RayStart turned = start;
     turned.direction = glm::normalize(glm::dvec3(heading.x, r.slope, heading.y));
     return straight_.propagate(accel, turned);
-}
-
-double pixel_angle_rad(const Camera& camera, int width, int height) {
-    const glm::dvec3 a =
-        camera_ray(camera, 0.5 * width, 0.5 * height - 0.5, width, height).direction;
-    const glm::dvec3 b =
-        camera_ray(camera, 0.5 * width, 0.5 * height + 0.5, width, height).direction;
-    return angle_between(a, b);
 }
 
 bool camera_is_level(const Camera& camera) {

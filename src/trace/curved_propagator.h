@@ -88,10 +88,6 @@ class ScanlinePropagator final : public Propagator {
     std::vector<Row> rows_;  // index: image row, top first
 };
 
-/// The angle one pixel subtends at the image's centre, between the camera rays through the
-/// centre column half a pixel above and below the centre: the unit of tolerances in pixels.
-double pixel_angle_rad(const Camera& camera, int width, int height);
-
 /// Whether the camera is level: up along +y, direction and right horizontal (within 1e-9
 /// relative).
 bool camera_is_level(const Camera& camera);

@@ -62,4 +62,18 @@ Result<Aabb> object_extent(const ObjectNode& object) {
     return box;
 }
 
+ObjectQueries tracer_object_queries() {
+    ObjectQueries q;
+    q.trace = trace_object;
+    q.inside = point_inside_object;
+    q.extent =
+        [](const ObjectNode& object) -> Result<std::optional<std::pair<glm::dvec3, glm::dvec3>>> {
+        auto box = object_extent(object);
+        if (!box) return box.error();
+        if (box->empty()) return std::optional<std::pair<glm::dvec3, glm::dvec3>>{};
+        return std::optional<std::pair<glm::dvec3, glm::dvec3>>{std::pair{box->lo, box->hi}};
+    };
+    return q;
+}
+
 }  // namespace mirage

@@ -6,16 +6,12 @@
 #include <glm/glm.hpp>
 #include <optional>
 
+#include "scene/object_queries.h"
 #include "scene/object_tree.h"
 #include "trace/bounds.h"
 #include "util/result.h"
 
 namespace mirage {
-
-struct ObjectTraceHit {
-    glm::dvec3 point{0.0};
-    glm::dvec3 normal{0.0};  // unit, outward (flipped for inverse), as POV-Ray's trace() gives
-};
 
 /// POV-Ray's trace(): the closest hit of the ray origin + t normalize(direction), t >= 1e-4.
 Result<std::optional<ObjectTraceHit>> trace_object(const ObjectNode& object,
@@ -27,5 +23,8 @@ Result<bool> point_inside_object(const ObjectNode& object, const glm::dvec3& poi
 
 /// min_extent() and max_extent(): the object's bounding box (empty when it has no surface).
 Result<Aabb> object_extent(const ObjectNode& object);
+
+/// The three above, for the parser (ParseOptions::object_queries).
+ObjectQueries tracer_object_queries();
 
 }  // namespace mirage

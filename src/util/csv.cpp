@@ -1,6 +1,7 @@
 #include "util/csv.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -14,7 +15,16 @@ int CsvTable::column(std::string_view name) const {
     return -1;
 }
 
+std::string CsvTable::where(const CsvRow& row, int column) const {
+    const FileLoc at = static_cast<std::size_t>(column) < row.places.size()
+                           ? row.places[static_cast<std::size_t>(column)]
+                           : FileLoc{source, row.line, 0};
+    return to_string(at) + ": column '" + header.at(static_cast<std::size_t>(column)) + "'";
+}
+
 Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
+    // Spreadsheets often begin a UTF-8 file with a byte-order mark: not part of the header.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     CsvTable table;
     table.source = source;
     std::vector<CsvRow> rows;
@@ -22,10 +32,13 @@ Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
     std::string field;
     int line = 1;
     row.line = 1;
+    std::size_t line_start = 0;  // offset of the current line's first byte
+    FileLoc field_place{source, 1, 1};
     bool in_quotes = false;
     bool row_has_content = false;
     auto end_field = [&] {
         row.fields.push_back(field);
+        row.places.push_back(field_place);
         field.clear();
     };
     auto end_row = [&] {
@@ -46,7 +59,10 @@ Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
                     in_quotes = false;
                 }
             } else {
-                if (ch == '\n') ++line;
+                if (ch == '\n') {
+                    ++line;
+                    line_start = i + 1;
+                }
                 field += ch;
             }
             continue;
@@ -56,13 +72,16 @@ Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
             row_has_content = true;
         } else if (ch == ',') {
             end_field();
+            field_place = FileLoc{source, line, static_cast<int>(i + 1 - line_start) + 1};
             row_has_content = true;
         } else if (ch == '\r') {
             // tolerate CRLF
         } else if (ch == '\n') {
             end_row();
             ++line;
+            line_start = i + 1;
             row.line = line;
+            field_place = FileLoc{source, line, 1};
         } else {
             field += ch;
             row_has_content = true;
@@ -94,14 +113,18 @@ Result<CsvTable> read_csv_file(const std::string& path) {
 
 Result<double> csv_number(const CsvTable& table, const CsvRow& row, int column) {
     const std::string& text = row.fields.at(column);
-    const std::string where = table.source + ":" + std::to_string(row.line) + ": column '" +
-                              table.header.at(column) + "'";
+    const std::string where = table.where(row, column);
     if (text.empty()) return make_error(where + ": missing number");
+    if (text.find_first_of("xX") != std::string::npos)
+        return make_error(where + ": '" + text + "' is not a decimal number");
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(text.c_str(), &end);
     if (end != text.c_str() + text.size())
         return make_error(where + ": '" + text + "' is not a number");
+    // strtod sets ERANGE for an overflow (and for an underflow, which loses only digits).
+    if (errno == ERANGE && std::isinf(v))
+        return make_error(where + ": '" + text + "' is out of the range of a double");
     return v;
 }
 

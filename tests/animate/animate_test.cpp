@@ -15,8 +15,8 @@
 #include "../trace/povray_runner.h"
 #include "animate/video.h"
 #include "atmosphere/vanishing.h"
-#include "compile/atmosphere_settings.h"
 #include "image/image_io.h"
+#include "load/atmosphere_settings.h"
 #include "scene/camera.h"
 #include "scene/parser.h"
 #include "util/process.h"
@@ -329,6 +329,32 @@ TEST(Animate, ReadsTheRangeFromAnIniFile) {
     auto frames = count_video_frames((dir / "out" / "walk.mp4").string());
     ASSERT_TRUE(frames.ok()) << frames.message();
     EXPECT_EQ(*frames, 3);
+}
+
+TEST(Animate, EachFramesSceneIsLoadedAsCompileAndTraceLoadIt) {
+    // The second frame's camera is out of mirage's reach: the check is the scene loader's
+    // (load/mirage_scene.h), made with that frame's clock, before the table of vanishing
+    // distances is made.
+    const fs::path dir = testing::test_dir("animate", "floor");
+    write_text(dir / "far.pov",
+               "#version 3.7;\n"
+               "#declare Mirage_Preset = \"paper\";\n"
+               "#include \"mirage.inc\"\n"
+               "camera { location <0, (clock > 0.5 ? 1e308 : 1.5), 0> look_at <0, 1, 10> }\n"
+               "sphere { <0, 1, 10>, 1 pigment { rgb 1 } }\n");
+    AnimateOptions o;
+    o.scene = (dir / "far.pov").string();
+    o.frames = 2;
+    o.width = 32;
+    o.height = 24;
+    auto a = resolve_animation(o);
+    ASSERT_TRUE(a.ok()) << a.message();
+    auto rows = vanishing_rows(*a);
+    ASSERT_FALSE(rows.ok());
+    EXPECT_EQ(rows.message(),
+              "frame 2 (clock 1): " + fs::absolute(dir / "far.pov").string() +
+                  ":4:1: the camera is at y = 1e+308: mirage follows scenes within 1e+09 units "
+                  "of the origin");
 }
 
 TEST(Animate, SlurmScriptStatesTheResourcesPerTask) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "atmosphere/sampler.h"
 #include "util/csv.h"
 
 namespace mirage {
@@ -229,6 +230,41 @@ TEST(ExactRay, DistanceToHeightInvertsTheHeight) {
         const double away = c.elev > 0 ? c.y0 - 0.1 : c.y0 + 0.1;
         EXPECT_TRUE(std::isinf(distance_to_height(*r, away))) << c.preset << " " << c.elev;
     }
+}
+
+TEST(ExactRay, SuperiorRaysFromFarAboveTheGradientStayFiniteAndStraight) {
+    // alpha y0 = 10^4: exp(-alpha y0) underflows to 0, and the escaping form once multiplied
+    // that 0 by an exp(2x) that overflowed on the way down (NaN heights, endless samples).
+    const Profile p{ProfileKind::Superior, 1.1, 0.4584, 1000.0};
+    const double y0 = 10.0;
+    for (const double elevation_deg : {-0.5, -10.0, -60.0}) {
+        const double e = elevation_deg * M_PI / 180.0;
+        auto ray = make_exact_ray(p, y0, M_PI / 2 - e);
+        ASSERT_TRUE(ray.ok()) << ray.message();
+        EXPECT_EQ(ray->ray_class, RayClass::SupEscapeDown);
+        ASSERT_TRUE(ray->hits_ground && std::isfinite(ray->dz_ground));
+        // Above the gradient (0.02 m thick) the index is eta(infinity): a straight line.
+        const double straight_ground = y0 / std::tan(-e);
+        EXPECT_NEAR(ray->dz_ground, straight_ground, 1e-3 * straight_ground);
+        for (int k = 0; k <= 100; ++k) {
+            const double dz = ray->dz_ground * k / 100.0;
+            const double y = height_at(*ray, dz);
+            ASSERT_TRUE(std::isfinite(y)) << "dz = " << dz;
+            if (y > 0.05) EXPECT_NEAR(y, y0 + dz * std::tan(e), 1e-9 * y0) << "dz = " << dz;
+        }
+        SampleSettings st;
+        st.tolerance_rad = 1e-6;
+        const SampledPath path = sample_path(*ray, st);
+        EXPECT_LT(path.points.size(), 100u);
+        EXPECT_EQ(path.end, PathEnd::Ground);
+    }
+}
+
+TEST(ExactRay, StartHeightsBeyondTheLimitAreRefused) {
+    const Profile p{ProfileKind::Inferior, 1.000233, 0.4584, 2.303};
+    EXPECT_EQ(make_exact_ray(p, 1e308, 1.6).message(),
+              "start height y0 = 1e+308 m must be from 0 to 1e+09 m");
+    EXPECT_TRUE(make_exact_ray(p, kMaxHeight, 1.6).ok());
 }
 
 }  // namespace

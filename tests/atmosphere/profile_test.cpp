@@ -58,16 +58,30 @@ TEST(Profile, SuperiorIndexFallsWithHeight) {
 TEST(Profile, RefusesBadValuesNamingThem) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     EXPECT_EQ(make_profile(ProfileKind::Inferior, 1.0, 0.1, 0.0).message(),
-              "alpha = 0 must be finite and > 0 (1/m)");
+              "alpha = 0 must be from 1e-09 to 1e+09 (1/m)");
     EXPECT_EQ(make_profile(ProfileKind::Inferior, 1.0, -0.1, 1.0).message(),
-              "eta1 = -0.10000000000000001 must be finite and >= 0");
+              "eta1 = -0.1 must be 0 or from 1e-10 to 10");
     EXPECT_EQ(make_profile(ProfileKind::Inferior, 0.9, 0.1, 1.0).message(),
-              "eta0 = 0.90000000000000002 must be a finite index >= 1");
+              "eta0 = 0.9 must be a refractive index from 1 to 10");
     EXPECT_EQ(make_profile(ProfileKind::Inferior, nan, 0.1, 1.0).message(),
-              "eta0 = nan must be a finite index >= 1");
+              "eta0 = nan must be a refractive index from 1 to 10");
     EXPECT_EQ(make_profile(ProfileKind::Superior, 1.0, 1.0, 1.0).message(),
-              "superior profile with eta0 = 1 and eta1 = 1: eta0^2 must exceed eta1^2 (the "
-              "index aloft would not be real)");
+              "eta1 = 1: a superior profile needs eta0^2 > eta1^2, and eta0 = 1 (the index "
+              "aloft would not be real)");
+    // The values that stop the exact rays: each refused with its range.
+    EXPECT_EQ(make_profile(ProfileKind::Inferior, 1.0003, 1e200, 1.0).message(),
+              "eta1 = 1e+200 must be 0 or from 1e-10 to 10");
+    EXPECT_EQ(make_profile(ProfileKind::Inferior, 1e308, 0.1, 1.0).message(),
+              "eta0 = 1e+308 must be a refractive index from 1 to 10");
+    EXPECT_EQ(make_profile(ProfileKind::Inferior, 1.0003, 0.1, 1e308).message(),
+              "alpha = 1e+308 must be from 1e-09 to 1e+09 (1/m)");
+    EXPECT_EQ(make_profile(ProfileKind::Inferior, 1.0003, 1e-300, 1.0).message(),
+              "eta1 = 1e-300 must be 0 or from 1e-10 to 10");
+    EXPECT_TRUE(make_profile(ProfileKind::Inferior, 1.0003, 0.0, 1.0).ok());
+    const ProfileNames names{"s.pov:1:10: Mirage_Eta0", "s.pov:2:10: Mirage_Eta1",
+                             "s.pov:3:10: Mirage_Alpha"};
+    EXPECT_EQ(validate(Profile{ProfileKind::Inferior, 1.0003, 0.1, 1e308}, names).message(),
+              "s.pov:3:10: Mirage_Alpha = 1e+308 must be from 1e-09 to 1e+09 (1/m)");
     EXPECT_EQ(preset_profile("desert").message(),
               "unknown preset 'desert' (known: paper, paper-superior, hot-road, cold-sea)");
 }

@@ -11,17 +11,11 @@ namespace mirage {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::quoted;
 using testing::run_tool;
 using testing::test_dir;
 
 const std::string kDesert = std::string(MIRAGE_SOURCE_DIR) + "/scenes/desert.pov";
-
-std::string quoted(const fs::path& p) {
-    std::string q = "'";
-    q += p.string();
-    q += "'";
-    return q;
-}
 
 TEST(CompareCli, ReportsEachSettingAndWhereTheResultsAre) {
     if (!testing::povray_available()) GTEST_SKIP() << "povray is not on PATH";
@@ -46,11 +40,14 @@ TEST(CompareCli, BadValuesAreRefusedWithTheirName) {
     const std::string out = " -o " + quoted(dir / "out");
     auto counts = run_tool("compare " + kDesert + out + " --counts 8,0");
     EXPECT_EQ(counts.exit_code, 1);
-    EXPECT_EQ(counts.err, "mirage compare: --counts 0: must be 1 to 4096 layers\n");
+    EXPECT_EQ(
+        counts.err,
+        "mirage compare: --counts 0: the layer count must be a whole number from 1 to 4096\n");
     auto tol = run_tool("compare " + kDesert + out + " --trace-tolerances 1,-2");
     EXPECT_EQ(tol.exit_code, 1);
-    EXPECT_EQ(tol.err,
-              "mirage compare: --trace-tolerances -2: must be a positive number of pixels\n");
+    EXPECT_EQ(
+        tol.err,
+        "mirage compare: --trace-tolerances -2: the tolerance must be from 0.001 to 1000 pixels\n");
     auto coarse = run_tool("compare " + kDesert + out + " --reference-tolerance 0.5");
     EXPECT_EQ(coarse.exit_code, 1);
     EXPECT_EQ(coarse.err,

@@ -82,14 +82,15 @@ TEST(PathCli, BadCsvRowNamesTheRowAndColumn) {
     auto r = run_tool("path --batch " + path);
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.out, "");
-    EXPECT_EQ(r.err, "mirage path: " + path + ":3: column 'alpha': '2.3x' is not a number\n");
+    EXPECT_EQ(r.err,
+              "mirage path: " + path + ":3:28: column 'alpha': '2.3x' is not a decimal number\n");
 
     std::ofstream(path) << "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2,d3\n"
                            "A,superior,1.0,1.5,2.303,1.0,1.9,1,2,3\n";
     r = run_tool("path --batch " + path);
     EXPECT_EQ(r.err, "mirage path: " + path +
-                         ":2: superior profile with eta0 = 1 and eta1 = 1.5: eta0^2 must exceed "
-                         "eta1^2 (the index aloft would not be real)\n");
+                         ":2:16: eta1 = 1.5: a superior profile needs eta0^2 > eta1^2, and eta0 "
+                         "= 1 (the index aloft would not be real)\n");
 
     std::ofstream(path) << "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2\n"
                            "A,inferior,1.0,1.5,2.303,1.0,1.9,1,2\n";
@@ -100,8 +101,8 @@ TEST(PathCli, BadCsvRowNamesTheRowAndColumn) {
                            "A,inferior,1.000233,0.4584,2.303,1.0,3.5,1,2,3\n";
     r = run_tool("path --batch " + path);
     EXPECT_EQ(r.err, "mirage path: " + path +
-                         ":2: column 'i_rad': angle from the vertical i = 3.5 rad must lie "
-                         "strictly between 0 and pi (a vertical ray has no horizontal distance)\n");
+                         ":2:38: i_rad: angle from the vertical i = 3.5 rad must lie strictly "
+                         "between 0 and pi (a vertical ray has no horizontal distance)\n");
 }
 
 TEST(PathCli, BadFlagsAndValuesAreNamed) {
@@ -115,7 +116,9 @@ TEST(PathCli, BadFlagsAndValuesAreNamed) {
 
     r = run_tool("path --preset paper --eye-height 0 --elevation-deg 1");
     EXPECT_EQ(r.exit_code, 1);
-    EXPECT_EQ(r.err, "mirage path: --eye-height 0: the eye must be above the ground (> 0 m)\n");
+    EXPECT_EQ(r.err,
+              "mirage path: --eye-height 0: the eye must be above the ground (> 0 m) and at most "
+              "1e+09 m\n");
 
     r = run_tool("path --preset sahara --eye-height 1 --elevation-deg 1");
     EXPECT_EQ(r.err,
@@ -125,7 +128,7 @@ TEST(PathCli, BadFlagsAndValuesAreNamed) {
     r = run_tool(
         "path --profile inferior --eta0 1.0003 --eta1 0.01 --alpha -2 --eye-height 1 "
         "--elevation-deg 1");
-    EXPECT_EQ(r.err, "mirage path: alpha = -2 must be finite and > 0 (1/m)\n");
+    EXPECT_EQ(r.err, "mirage path: --alpha = -2 must be from 1e-09 to 1e+09 (1/m)\n");
 
     r = run_tool("path --preset paper --eye-height 1");
     EXPECT_EQ(r.err,

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace mirage::testing {
@@ -16,6 +17,9 @@ struct ToolRun {
     std::string out;  // stdout
     std::string err;  // stderr
 };
+
+/// A path quoted for the shell command line of run_tool.
+inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 /// Runs `build/mirage <args>` through the shell (args are quoted by the caller).
 inline ToolRun run_tool(const std::string& args, const std::string& stdin_text = "") {

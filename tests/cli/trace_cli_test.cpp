@@ -14,15 +14,9 @@ namespace mirage {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::quoted;
 using testing::run_tool;
 using testing::test_dir;
-
-std::string quoted(const fs::path& p) {
-    std::string q = "'";
-    q += p.string();
-    q += "'";
-    return q;
-}
 
 void write_text(const fs::path& path, const std::string& text) {
     std::ofstream out(path);
@@ -80,7 +74,7 @@ TEST(TraceCli, AMissingSceneFile) {
     auto r = run_tool("trace " + quoted(dir / "nowhere.pov") + " -o " + quoted(dir / "out.png"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage trace: " + (dir / "nowhere.pov").string() +
-                         ": cannot open the scene file: No such file or directory\n");
+                         ": cannot be opened: No such file or directory\n");
 }
 
 TEST(TraceCli, UsageErrorsComeFromTheCommandLineParser) {
@@ -98,7 +92,8 @@ TEST(TraceCli, UsageErrorsComeFromTheCommandLineParser) {
     EXPECT_NE(not_a_number.err.find("--tolerance"), std::string::npos) << not_a_number.err;
     auto bad_value = run_tool("trace " + scene + " -o /tmp/x.png --tolerance 0");
     EXPECT_EQ(bad_value.exit_code, 1);
-    EXPECT_EQ(bad_value.err, "mirage trace: --tolerance 0: must be a positive number of pixels\n");
+    EXPECT_EQ(bad_value.err,
+              "mirage trace: --tolerance 0: the tolerance must be from 0.001 to 1000 pixels\n");
     auto bad_type = run_tool("trace " + scene + " -o /tmp/x.tiff");
     EXPECT_EQ(bad_type.exit_code, 1);
     EXPECT_EQ(bad_type.err,

@@ -155,13 +155,13 @@ TEST(Compare, BadValuesNameTheOptionAndTheValue) {
     EXPECT_EQ(message([](CompareOptions& o) {
                   o.counts = {8, 0};
               }),
-              "--counts 0: must be 1 to 4096 layers");
+              "--counts 0: the layer count must be a whole number from 1 to 4096");
     EXPECT_EQ(message([](CompareOptions& o) {
                   o.tolerances = {1, -0.5};
               }),
-              "--tolerances -0.5: must be a positive number of pixels");
+              "--tolerances -0.5: the tolerance must be from 0.001 to 1000 pixels");
     EXPECT_EQ(message([](CompareOptions& o) { o.reference_tolerance_px = 0; }),
-              "--reference-tolerance 0: must be a positive number of pixels");
+              "--reference-tolerance 0: the tolerance must be from 0.001 to 1000 pixels");
     EXPECT_EQ(message([](CompareOptions& o) { o.threshold = 1.5; }),
               "--threshold 1.5: must be between 0 and 1 (a difference of 8-bit codes / 255)");
     EXPECT_EQ(message([](CompareOptions& o) { o.width = 0; }),

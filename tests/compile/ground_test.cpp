@@ -11,7 +11,7 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "scene/parser.h"
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 namespace mirage {
 namespace {

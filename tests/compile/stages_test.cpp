@@ -165,10 +165,16 @@ TEST(DesignLayers, UniformLayersAreBergersAndMeasured) {
         EXPECT_NEAR(d->stack.heights[k] - d->stack.heights[k - 1],
                     d->stack.heights[1] - d->stack.heights[0], 1e-9);
     EXPECT_EQ(d->max_trace_level, deepest_trace_level(*ctx, d->stack, rays));
+    // No count anywhere: the settings stand, the uniform design has nothing to divide by.
+    o.layer_count.reset();
+    ctx = compile_settings(o);
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    EXPECT_FALSE(design_layers(*ctx, rays).ok());
+    // A count out of range is refused where it is read, with its name and limit.
     o.layer_count = 0;
     ctx = compile_settings(o);
-    ASSERT_TRUE(ctx.ok());
-    EXPECT_FALSE(design_layers(*ctx, rays).ok());
+    ASSERT_FALSE(ctx.ok());
+    EXPECT_EQ(ctx.message(), "--count 0: the layer count must be a whole number from 1 to 4096");
 }
 
 TEST(DeepestTraceLevel, CountsBoundaryEventsAndReflections) {

@@ -27,13 +27,13 @@
 #include <vector>
 
 #include "../trace/povray_runner.h"
-#include "compile/atmosphere_settings.h"
+#include "load/atmosphere_settings.h"
 #include "compile/compile.h"
-#include "compile/library_paths.h"
+#include "load/library_paths.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "scene/parser.h"
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 namespace mirage {
 namespace {

@@ -25,5 +25,27 @@ TEST(Diagnostics, TabsKeepTheCaretAligned) {
     EXPECT_EQ(m, "s.pov:1:3: m\n\t\tbad\n\t\t^");
 }
 
+TEST(Diagnostics, ALongLineIsCutAroundTheColumn) {
+    std::string line(100000, 'x');
+    line.replace(50000, 5, "spere");
+    std::string m = format_diagnostic("s.pov", 1, 50001, "unknown keyword 'spere'", {}, line);
+    const std::string shown = "..." + std::string(60, 'x') + "spere" + std::string(55, 'x') + "...";
+    EXPECT_EQ(
+        m, "s.pov:1:50001: unknown keyword 'spere'\n" + shown + "\n" + std::string(63, ' ') + "^");
+    // Near the start only the end is cut.
+    m = format_diagnostic("s.pov", 1, 3, "m", {}, std::string(500, 'y'));
+    EXPECT_EQ(m, "s.pov:1:3: m\n" + std::string(120, 'y') + "...\n  ^");
+}
+
+TEST(Diagnostics, BytesThatAreNotTextEchoAsQuestionMarks) {
+    // A binary file's line: control bytes and broken UTF-8 become '?', valid UTF-8 stays, and
+    // the caret counts characters, not bytes.
+    const std::string line = std::string("a\x01\x7f\xff") + "\xc3\xa9" + "b";
+    std::string m = format_diagnostic("s.pov", 1, 7, "m", {}, line);
+    EXPECT_EQ(m,
+              "s.pov:1:7: m\na???\xc3\xa9"
+              "b\n     ^");
+}
+
 }  // namespace
 }  // namespace mirage

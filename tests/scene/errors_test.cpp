@@ -191,9 +191,8 @@ TEST(Errors, AMacroNameRedeclaredBeforeItsCallRuns) {
 TEST(Errors, MissingFileIsReportedWithItsPath) {
     auto r = parse_scene_file(data_dir() + "/no_such_scene.pov", ParseOptions{});
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.message(), data_dir() +
-                               "/no_such_scene.pov: cannot open the scene file: No such file or "
-                               "directory");
+    EXPECT_EQ(r.message(),
+              data_dir() + "/no_such_scene.pov: cannot be opened: No such file or directory");
 }
 
 }  // namespace

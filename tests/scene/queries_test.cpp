@@ -48,5 +48,15 @@ TEST(Queries, AnObjectIdentifierIsRequired) {
     EXPECT_EQ(e.rfind("scene.pov:1:20: expected an object identifier in 'trace'", 0), 0u) << e;
 }
 
+TEST(Queries, WithoutTheTracerTheyAreRefusedByName) {
+    // The scene module stands below the tracer: a parse given no object queries says so.
+    auto r = parse_scene_text("#declare S = sphere { 0, 1 }\n#declare Lo = min_extent(S);\n",
+                              "scene.pov", ParseOptions{});
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message().rfind("scene.pov:2:15: 'min_extent' asks the tracer about an object", 0),
+              0u)
+        << r.message();
+}
+
 }  // namespace
 }  // namespace mirage

@@ -1,4 +1,4 @@
-#include "compile/library_paths.h"
+#include "load/library_paths.h"
 
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-#include "compile/atmosphere_settings.h"
+#include "load/atmosphere_settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,10 +32,7 @@ const char* const kKnown[] = {
     "Mirage_Layer_Texture",
 };
 
-std::string where(const Declared& d) {
-    return d.loc.file + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
-           ": ";
-}
+std::string where(const Declared& d) { return to_string(d.loc) + ": "; }
 
 // Edit distance, for "did you mean".
 size_t distance(const std::string& a, const std::string& b) {
@@ -155,9 +152,10 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
             return make_error(r.at("Mirage_Profile") + "Mirage_Profile \"" + *kind_name +
                               "\" needs Mirage_Eta0, Mirage_Eta1 and Mirage_Alpha");
         s.profile = Profile{kind, eta0 ? *eta0 : 1.0, eta1 ? *eta1 : 0.0, alpha ? *alpha : 1.0};
-        if (auto v = validate(s.profile); !v)
-            return make_error(r.at(kind == ProfileKind::None ? "Mirage_Profile" : "Mirage_Eta0") +
-                              v.message());
+        const ProfileNames names{r.at("Mirage_Eta0") + "Mirage_Eta0",
+                                 r.at("Mirage_Eta1") + "Mirage_Eta1",
+                                 r.at("Mirage_Alpha") + "Mirage_Alpha"};
+        if (auto v = validate(s.profile, names); !v) return v.error();
         s.profile_label = "explicit " + std::string(profile_kind_name(kind));
         s.declared = kind != ProfileKind::None;
     } else if (air) {
@@ -174,24 +172,32 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     }
     MIRAGE_TRY(tol, r.number("Mirage_Tolerance"));
     if (tol) {
-        if (!(*tol > 0.0))
-            return make_error(r.at("Mirage_Tolerance") + "Mirage_Tolerance = " + shortest(*tol) +
-                              " must be > 0 (pixels)");
+        if (auto c = check_tolerance_px(*tol, r.at("Mirage_Tolerance") + "Mirage_Tolerance ="); !c)
+            return c.error();
         s.tolerance_px = *tol;
     }
     MIRAGE_TRY(extent, r.number("Mirage_Extent"));
     if (extent) {
-        if (!(*extent > 0.0))
+        if (!(*extent > 0.0 && *extent <= kMaxCoordinate))
             return make_error(r.at("Mirage_Extent") + "Mirage_Extent = " + shortest(*extent) +
-                              " must be > 0");
+                              " must be more than 0 and at most " + shortest(kMaxCoordinate) +
+                              " (scene units)");
         s.extent = *extent;
     }
     MIRAGE_TRY(unit, r.number("Mirage_Unit"));
     if (unit) {
-        if (!(*unit > 0.0))
+        if (!(*unit >= kMinUnitM && *unit <= kMaxUnitM))
             return make_error(r.at("Mirage_Unit") + "Mirage_Unit = " + shortest(*unit) +
-                              " must be > 0 (metres per unit)");
+                              " must be from " + shortest(kMinUnitM) + " to " +
+                              shortest(kMaxUnitM) + " (metres per unit)");
         s.unit_m = *unit;
+        // The profile the tracer and the compiler use has alpha per scene unit.
+        const Profile scaled = profile_in_scene_units(s);
+        if (s.declared && !validate(scaled))
+            return make_error(r.at("Mirage_Unit") + "Mirage_Unit = " + shortest(*unit) +
+                              " makes alpha " + shortest(scaled.alpha) +
+                              " per scene unit, outside " + shortest(kMinAlpha) + " to " +
+                              shortest(kMaxAlpha));
     }
     MIRAGE_TRY(ground, r.number("Mirage_Ground_Height"));
     if (ground) s.ground_height = *ground;
@@ -208,12 +214,25 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     }
     MIRAGE_TRY(count, r.number("Mirage_Layer_Count"));
     if (count) {
-        if (!(*count >= 1.0 && *count <= 100000.0 && std::floor(*count) == *count))
-            return make_error(r.at("Mirage_Layer_Count") + "Mirage_Layer_Count = " +
-                              shortest(*count) + " must be a whole number >= 1");
+        if (auto c = check_layer_count(*count, r.at("Mirage_Layer_Count") + "Mirage_Layer_Count =");
+            !c)
+            return c.error();
         s.layer_count = static_cast<int>(*count);
     }
     return s;
+}
+
+Status check_tolerance_px(double px, const std::string& name) {
+    if (px >= kMinTolerancePx && px <= kMaxTolerancePx) return Ok{};
+    return make_error(name + " " + shortest(px) + ": the tolerance must be from " +
+                      shortest(kMinTolerancePx) + " to " + shortest(kMaxTolerancePx) + " pixels");
+}
+
+Status check_layer_count(double count, const std::string& name) {
+    if (count >= 1.0 && count <= kMaxLayerCount && std::floor(count) == count) return Ok{};
+    return make_error(name + " " + shortest(count) +
+                      ": the layer count must be a whole number from 1 to " +
+                      std::to_string(kMaxLayerCount));
 }
 
 Profile profile_in_scene_units(const AtmosphereSettings& s) {

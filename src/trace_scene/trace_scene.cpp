@@ -1,4 +1,4 @@
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,14 +6,14 @@
 #include <memory>
 #include <sstream>
 
-#include "compile/atmosphere_settings.h"
-#include "compile/library_paths.h"
 #include "image/image_io.h"
+#include "load/mirage_scene.h"
 #include "scene/camera.h"
 #include "scene/ground.h"
-#include "scene/parser.h"
 #include "trace/curved_propagator.h"
+#include "trace/object_query.h"
 #include "util/format.h"
+#include "util/output_set.h"
 
 namespace mirage {
 
@@ -41,17 +41,9 @@ std::string path_mode_name(PathMode mode) {
 }
 
 Result<TraceReport> trace_scene(const TraceOptions& opt) {
-    if (opt.width < 1 || opt.height < 1 || opt.width > 20000 || opt.height > 20000) {
-        return make_error("image size " + std::to_string(opt.width) + "x" +
-                          std::to_string(opt.height) + " must be 1 to 20000 pixels each way");
-    }
     if (opt.threads < 0) {
         return make_error("--threads " + std::to_string(opt.threads) +
                           ": must be 0 (all cores) or more");
-    }
-    if (opt.tolerance_px && !(*opt.tolerance_px > 0.0 && std::isfinite(*opt.tolerance_px))) {
-        return make_error("--tolerance " + shortest(*opt.tolerance_px) +
-                          ": must be a positive number of pixels");
     }
     if (!opt.output.empty()) {
         const std::string ext = lower_extension(opt.output);
@@ -60,34 +52,44 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         }
     }
 
-    ParseOptions po;
-    po.library_paths = opt.library_paths;
-    for (const auto& p : default_library_paths(opt.scene)) po.library_paths.push_back(p);
-    po.image_width = opt.width;
-    po.image_height = opt.height;
-    po.strict = true;  // the tracer renders every object: none may be left out silently
-    auto parsed = parse_scene_file(opt.scene, po);
-    if (!parsed) return parsed.error();
-    auto settings = read_atmosphere_settings(*parsed);
-    if (!settings) return settings.error();
+    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    lo.strict = true;  // the tracer renders every object: none may be left out silently
+    lo.object_queries = tracer_object_queries();
+    lo.tolerance_px = opt.tolerance_px;
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    const AtmosphereSettings& settings = loaded->settings;
     // Heights above the atmosphere's ground (scene/ground.h); straight rays need no ground.
-    if (opt.atmosphere && settings->declared) lower_scene(*parsed, settings->ground_height);
-    const Scene& scene = *parsed;
+    if (opt.atmosphere && settings.declared) lower_scene(loaded->scene, settings.ground_height);
+    const Scene& scene = loaded->scene;
+    // The image may replace no file the scene was read from; refused before the render.
+    OutputSet outputs(scene.files);
+    if (!opt.output.empty()) {
+        if (auto s = outputs.check(opt.output); !s) return s.error();
+    }
 
     TraceReport report;
     report.scene = opt.scene;
     report.width = opt.width;
     report.height = opt.height;
-    report.tolerance_px = opt.tolerance_px.value_or(settings->tolerance_px);
+    report.tolerance_px = settings.tolerance_px;
     report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
-    const Profile profile = profile_in_scene_units(*settings);
-    const bool bends = settings->declared && profile.kind != ProfileKind::None;
+    const Profile profile = profile_in_scene_units(settings);
+    const bool bends = settings.declared && profile.kind != ProfileKind::None;
+    if (opt.atmosphere && bends && !camera_has_one_viewpoint(scene.camera)) {
+        // Paths are followed to a tolerance of an angle of one pixel seen from the eye.
+        return make_error(
+            (scene.camera.loc.file.empty() ? scene.file : to_string(scene.camera.loc)) + ": the " +
+            camera_type_name(scene.camera.type) +
+            " camera's rays start at different points: the curved paths are followed to an "
+            "angle of one pixel from one eye point; trace it with --no-atmosphere");
+    }
     if (!opt.atmosphere) {
         report.atmosphere = "off (--no-atmosphere)";
-    } else if (!settings->declared) {
+    } else if (!settings.declared) {
         report.atmosphere = "none declared";
     } else {
-        report.atmosphere = settings->profile_label;
+        report.atmosphere = settings.profile_label;
     }
 
     CurvedSettings curved;
@@ -117,7 +119,8 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     if (!rendered) return rendered.error();
     report.render = std::move(*rendered);
     if (!opt.output.empty()) {
-        if (auto s = write_image(report.render.image, opt.output); !s) return s.error();
+        if (auto s = write_image(report.render.image, opt.output, &outputs); !s) return s.error();
+        if (auto s = outputs.commit(); !s) return s.error();
         report.output = opt.output;
     }
     return report;

@@ -1,4 +1,4 @@
-#include "trace/trace_scene.h"
+#include "trace_scene/trace_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "compile/library_paths.h"
+#include "../trace/povray_runner.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
-#include "povray_runner.h"
+#include "load/library_paths.h"
 #include "scene/parser.h"
 
 namespace mirage {
@@ -192,7 +192,8 @@ TEST(TraceScene, RefusesBadOptionsBeforeTracing) {
               "/nonexistent-dir/desert.jpg: unknown image type '.jpg' (use .png or .exr)");
     o.output.clear();
     o.tolerance_px = 0.0;
-    EXPECT_EQ(trace_scene(o).message(), "--tolerance 0: must be a positive number of pixels");
+    EXPECT_EQ(trace_scene(o).message(),
+              "--tolerance 0: the tolerance must be from 0.001 to 1000 pixels");
     o.tolerance_px.reset();
     o.threads = -1;
     EXPECT_EQ(trace_scene(o).message(), "--threads -1: must be 0 (all cores) or more");

@@ -1,0 +1,144 @@
+#include "util/output_set.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace mirage {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A name beside `target` for a file of this process: ".stem.<tag><pid>-<n>.ext".
+std::string sibling_name(const std::string& target, const char* tag) {
+    static int counter = 0;
+    const fs::path p(target);
+    std::string name = ".";
+    name += p.stem().string();
+    name += tag;
+    name += std::to_string(::getpid());
+    name += "-";
+    name += std::to_string(counter++);
+    name += p.extension().string();
+    return (p.parent_path() / name).string();
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec) && !ec;
+}
+
+std::string normal(const std::string& path) {
+    std::error_code ec;
+    const fs::path abs = fs::absolute(path, ec);
+    return (ec ? fs::path(path) : abs).lexically_normal().string();
+}
+
+}  // namespace
+
+OutputSet::OutputSet(std::vector<std::string> inputs) : inputs_(std::move(inputs)) {}
+
+OutputSet::~OutputSet() {
+    for (const Staged& s : staged_) std::remove(s.temporary.c_str());
+}
+
+void OutputSet::protect(const std::vector<std::string>& inputs) {
+    inputs_.insert(inputs_.end(), inputs.begin(), inputs.end());
+}
+
+Status OutputSet::check(const std::string& path) const {
+    std::error_code ec;
+    if (fs::is_directory(path, ec))
+        return make_error(path + ": is a directory; an output must be a file");
+    for (const std::string& input : inputs_) {
+        if (same_file(input, path) || normal(input) == normal(path)) {
+            return make_error(path + ": the output would overwrite " +
+                              (input == path ? std::string("an input") : "the input " + input) +
+                              " of this command (the scene or a file it includes)");
+        }
+    }
+    for (const Staged& s : staged_) {
+        if (same_file(s.target, path) || normal(s.target) == normal(path))
+            return make_error(path + ": named for two outputs of this command");
+    }
+    return Ok{};
+}
+
+Result<std::string> OutputSet::stage(const std::string& path) {
+    if (auto s = check(path); !s) return s.error();
+    staged_.push_back({path, sibling_name(path, ".tmp")});
+    return staged_.back().temporary;
+}
+
+Status OutputSet::adopt(const std::string& temporary, const std::string& target) {
+    if (auto s = check(target); !s) {
+        std::remove(temporary.c_str());
+        return s;
+    }
+    staged_.push_back({target, temporary});
+    return Ok{};
+}
+
+Status OutputSet::write_text(const std::string& path, std::string_view content) {
+    auto tmp = stage(path);
+    if (!tmp) return tmp.error();
+    std::ofstream out(*tmp, std::ios::binary | std::ios::trunc);
+    if (!out) return make_error(path + ": cannot write: " + std::strerror(errno));
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) return make_error(path + ": write failed: " + std::strerror(errno));
+    return Ok{};
+}
+
+Status OutputSet::commit() {
+    struct Done {
+        std::string backup;  // the target's old content, kept under another name; "" if none
+        bool existed = false;
+    };
+    std::vector<Done> done;
+    for (const Staged& s : staged_) {
+        Done d;
+        std::error_code ec;
+        d.existed = fs::exists(fs::symlink_status(s.target, ec));
+        if (d.existed) {
+            // A second name for the old file, so that it can come back if a later rename fails.
+            d.backup = sibling_name(s.target, ".old");
+            if (::link(s.target.c_str(), d.backup.c_str()) != 0) d.backup.clear();
+        }
+        if (std::rename(s.temporary.c_str(), s.target.c_str()) != 0) {
+            const std::string reason = std::strerror(errno);
+            if (!d.backup.empty()) std::remove(d.backup.c_str());
+            bool restored = true;
+            for (std::size_t k = done.size(); k-- > 0;) {
+                const std::string& target = staged_[k].target;
+                if (!done[k].backup.empty()) {
+                    restored = std::rename(done[k].backup.c_str(), target.c_str()) == 0 && restored;
+                } else if (!done[k].existed) {
+                    std::remove(target.c_str());
+                } else {
+                    restored = false;  // no second name could be made for it
+                }
+            }
+            return make_error(s.target + ": cannot write: " + reason +
+                              (restored ? " (no output of this command was changed)" : ""));
+        }
+        done.push_back(d);
+    }
+    for (const Done& d : done)
+        if (!d.backup.empty()) std::remove(d.backup.c_str());
+    staged_.clear();
+    return Ok{};
+}
+
+std::vector<std::string> OutputSet::targets() const {
+    std::vector<std::string> t;
+    for (const Staged& s : staged_) t.push_back(s.target);
+    return t;
+}
+
+}  // namespace mirage

@@ -1,0 +1,5 @@
+#declare Mirage_Profile = "inferior";
+#declare Mirage_Eta0 = 1.0003;
+#declare Mirage_Eta1 = 1e200;
+#declare Mirage_Alpha = 1;
+camera { location <0, 1.5, 0> look_at <0, 1.5, 1> }

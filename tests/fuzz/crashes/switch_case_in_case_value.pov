@@ -1,0 +1,1 @@
+#switch(1)#case(#case(1)#end 1)
