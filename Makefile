@@ -9,6 +9,9 @@
 #                        (build/render/NAME-trace.png; same SCENE, W, H, TOL)
 #   make test            build and run every test through CTest
 #   make bench           Google Benchmark for the path kernels
+#   make study           band designs compared on a scene's continuum of camera rays (build/study/NAME/:
+#                        study.csv, summary.md, error_vs_elevation.png, error_vs_crossings.png;
+#                        SCENE, W, H)
 #   make compare         band models against the continuous tracer: error against run time
 #                        (build/compare/NAME/: results.csv, error_vs_time.png, contact_sheet.png,
 #                        summary.md; SCENE, and W H or CW CH, default 320x240: a few minutes)
@@ -47,7 +50,7 @@ PACKAGES := g++ make cmake pkg-config povray povray-includes povray-examples lib
 # What make fuzz needs besides: clang and its libFuzzer and sanitizer runtimes.
 FUZZ_PACKAGES := clang-14 libclang-rt-14-dev python3
 
-.PHONY: all deps configure build test render trace bench compare animate fuzz clean
+.PHONY: all deps configure build test render trace bench compare animate study fuzz clean
 
 all: build
 
@@ -85,6 +88,9 @@ compare: build
 animate: build
 	$(BUILD)/mirage animate $(ASCENE) --frames $(FRAMES) -W $(AW) -H $(AH) --model $(MODEL) \
 	    $(if $(TOL),--tolerance $(TOL)) -o $(BUILD)/animate/$(ANAME)
+
+study: build
+	$(BUILD)/mirage study $(SCENE) -W $(W) -H $(H) -o $(BUILD)/study/$(NAME)
 
 bench: build
 	$(BUILD)/mirage_bench

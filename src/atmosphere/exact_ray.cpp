@@ -175,6 +175,131 @@ void setup_superior(ExactRay& r) {
     }
 }
 
+// setup_inferior with the origin's constants, and each transcendental function evaluated
+// once: the same quantities, for many rays from one height.
+void setup_inferior_shared(ExactRay& r, const ExactRayOrigin& o) {
+    const double alpha = r.profile.alpha;
+    // Where E and P are ordinary numbers (not stiff alpha y0, not extreme P), w, its square
+    // and k2 are formed directly; otherwise in log space as setup_inferior does.
+    const bool direct = o.E > 1e-150 && r.P > 1e-150 && r.P < 1e150;
+    double ln_k2 = 0.0;
+    if (r.P == 0.0) {
+        r.log1p_w2 = 0.0;
+        r.asinh_w = 0.0;
+        ln_k2 = -alpha * r.y0;
+        r.k2 = o.E0;
+    } else if (r.ln_w >= 0.0) {
+        double inv_w2 = 0.0;  // w^-2
+        if (direct) {
+            const double inv_w = o.E / r.P;
+            inv_w2 = inv_w * inv_w;
+        } else {
+            inv_w2 = std::exp(-2.0 * r.ln_w);
+        }
+        const double t = std::log1p(inv_w2);
+        ln_k2 = 2.0 * r.ln_P + t;
+        r.log1p_w2 = 2.0 * r.ln_w + t;
+        // asinh(w) = ln w + ln(1 + sqrt(1 + w^-2)).
+        r.asinh_w = r.ln_w + std::log(1.0 + std::sqrt(1.0 + inv_w2));
+        r.k2 = direct ? r.P * r.P * (1.0 + inv_w2) : std::exp(ln_k2);
+    } else {
+        const double w = direct ? r.P / o.E : std::exp(r.ln_w);
+        r.log1p_w2 = std::log1p(w * w);
+        r.asinh_w = std::asinh(w);
+        ln_k2 = -alpha * r.y0 + r.log1p_w2;
+        r.k2 = direct ? o.E0 * (1.0 + w * w) : std::exp(ln_k2);
+    }
+    r.q = ln_k2 > -700.0 ? std::sqrt(r.k2) : std::exp(0.5 * ln_k2);
+    r.c = r.gamma * r.q;
+    const double rho =
+        r.P == 0.0 ? 0.0 : (ln_k2 > -700.0 ? r.P / r.q : std::exp(r.ln_P - 0.5 * ln_k2));
+    // ln(1 + rho) for rho in [0, 1): the coefficients need it to an absolute accuracy only.
+    const double log1p_rho = std::log(1.0 + rho);
+    const double ln_1p_rho = log1p_rho - kLn2;
+    const double ln_1m_rho = -(r.log1p_w2 + log1p_rho) - kLn2;
+    r.ln_coef_lo = r.sg > 0 ? ln_1m_rho : ln_1p_rho;
+    r.ln_coef_hi = r.sg > 0 ? ln_1p_rho : ln_1m_rho;
+
+    r.y_turn = r.ln_w >= 0.0 ? -ln_k2 / alpha : r.y0 - r.log1p_w2 / alpha;
+    r.dz_turn = -r.sg * r.asinh_w / r.c;
+    const bool vertex_in_air = ln_k2 < 0.0;
+    if (r.sg < 0) {
+        r.ray_class = vertex_in_air ? RayClass::InfTurn : RayClass::InfGround;
+        r.turn_kind = vertex_in_air ? TurnKind::Ahead : TurnKind::BelowGround;
+    } else {
+        r.ray_class = RayClass::InfUp;
+        r.turn_kind = vertex_in_air ? TurnKind::Behind : TurnKind::BelowGround;
+    }
+    r.hits_ground = r.ray_class == RayClass::InfGround;
+    r.dz_ground = kInf;
+    if (r.hits_ground) {
+        const double k = r.q;
+        const double N = k * o.one_m_E;
+        const double rr = o.root_1m_E0;
+        const double k2m1 = std::max(0.0, (r.P - rr) * (r.P + rr));
+        const double root = std::sqrt(k2m1);
+        const double D = r.P + r.E * root;
+        const double t = N / D;
+        if (t < 0.5) {
+            r.dz_ground = 2.0 * t * atanhc(t) / r.c;
+        } else {
+            const double B = root + k - r.E / (r.P + k);
+            r.dz_ground = (std::log(D + N) - r.ln_E - std::log(B)) / r.c;
+        }
+    }
+}
+
+// setup_superior with the origin's constants.
+void setup_superior_shared(ExactRay& r, const ExactRayOrigin& o) {
+    const double alpha = r.profile.alpha;
+    r.k2 = o.E0 - r.P * r.P;
+    r.q = std::sqrt(std::fabs(r.k2));
+    r.c = r.gamma * r.q;
+    r.dz_ground = kInf;
+    if (r.k2 > 0.0) {
+        const double w = o.E > 1e-150 ? r.P / o.E : std::exp(r.ln_w);
+        const double one_m_w2 = (1.0 - w) * (1.0 + w);
+        r.theta = std::atan2(w, std::sqrt(one_m_w2));
+        // ln(1 - w^2) from the product of two exact differences: accurate near w = 1 too.
+        const double ln_1m_w2 = std::log(one_m_w2);
+        r.y_turn = r.y0 - ln_1m_w2 / alpha;
+        r.dz_turn = r.sg * r.theta / r.c;
+        r.vertex_form = -ln_1m_w2 <= 2.0 + alpha * r.y0;
+        r.ray_class = r.sg > 0 ? RayClass::SupTrappedUp : RayClass::SupTrappedDown;
+        r.turn_kind = r.sg > 0 ? TurnKind::Ahead : TurnKind::Behind;
+        r.hits_ground = true;
+        const double kappa = r.q;
+        const double root = r.E * std::sqrt(1.0 - r.k2);
+        if (r.sg > 0) {
+            const double t = (r.P + root) / (kappa * (1.0 + r.E));
+            r.dz_ground = 2.0 * std::atan(t) / r.c;
+        } else {
+            const double a = o.one_m_E / (root + r.P);
+            r.dz_ground = 2.0 * a * atanc(kappa * a) / r.gamma;
+        }
+        return;
+    }
+    r.y_turn = kNaN;
+    r.dz_turn = kNaN;
+    r.turn_kind = TurnKind::None;
+    r.ray_class = r.sg > 0 ? RayClass::SupEscapeUp : RayClass::SupEscapeDown;
+    r.hits_ground = r.sg < 0;
+    if (r.hits_ground) {
+        const double sigma = r.q;
+        const double one_m_E = o.one_m_E;
+        const double root = std::sqrt(1.0 + sigma * sigma);
+        const double D = r.P + r.E * root;
+        const double t = sigma * one_m_E / D;
+        if (t < 0.5) {
+            r.dz_ground = 2.0 * (one_m_E / D) * atanhc(t) / r.gamma;
+        } else {
+            const double N = sigma * one_m_E;
+            const double B = r.E / (r.P + sigma) + root + sigma;
+            r.dz_ground = (std::log(D + N) - r.ln_E - std::log(B)) / r.c;
+        }
+    }
+}
+
 // ln F(dz) for the superior classes (see the header comment of this file).
 double superior_ln_F(const ExactRay& r, double dz) {
     const double x = r.c * dz;
@@ -277,6 +402,58 @@ Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad)
     return r;
 }
 
+Result<ExactRayOrigin> make_exact_ray_origin(const Profile& profile, double y0) {
+    if (auto s = validate(profile); !s) return s.error();
+    if (!(y0 >= 0.0 && y0 <= kMaxHeight))
+        return make_error("start height y0 = " + number(y0) + " m must be from 0 to " +
+                          number(kMaxHeight) + " m");
+    ExactRayOrigin o;
+    o.profile = profile;
+    o.y0 = y0;
+    o.eta_p = eta(profile, y0);
+    o.eta_inf = eta_infinity(profile);
+    const double alpha = profile.alpha;
+    o.ln_E = -0.5 * alpha * y0;
+    o.E = std::exp(o.ln_E);
+    o.E0 = std::exp(-alpha * y0);
+    o.one_m_E = -std::expm1(o.ln_E);
+    o.root_1m_E0 = std::sqrt(-std::expm1(-alpha * y0));
+    return o;
+}
+
+ExactRay make_exact_ray(const ExactRayOrigin& o, double cos_i, double sin_i) {
+    MIRAGE_CHECK(sin_i > 0.0 && std::isfinite(cos_i) && std::isfinite(sin_i));
+    ExactRay r;
+    r.profile = o.profile;
+    r.y0 = o.y0;
+    r.i = kNaN;  // the ray is given by its cosines, which the closed forms use
+    r.cos_i = cos_i;
+    r.sin_i = sin_i;
+    r.sg = cos_i < 0.0 ? -1 : 1;
+    r.s = profile_sign(o.profile);
+    r.eta_p = o.eta_p;
+    r.beta = r.eta_p * sin_i;
+    if (r.s == 0 || o.profile.eta1 == 0.0) {
+        r.s = 0;
+        classify_straight(r);
+        return r;
+    }
+    const double alpha = o.profile.alpha;
+    r.P = r.eta_p * std::fabs(cos_i) / o.profile.eta1;
+    r.ln_P = std::log(r.P);
+    r.ln_E = o.ln_E;
+    r.E = o.E;
+    r.ln_w = r.ln_P - r.ln_E;
+    r.gamma = alpha * o.profile.eta1 / (2.0 * r.beta);
+    if (r.s > 0) {
+        setup_inferior_shared(r, o);
+    } else {
+        setup_superior_shared(r, o);
+    }
+    MIRAGE_CHECK(!std::isnan(r.k2) && !std::isnan(r.c) && !std::isnan(r.dz_ground));
+    return r;
+}
+
 double height_at(const ExactRay& r, double dz) {
     const double alpha = r.profile.alpha;
     if (r.s == 0) return r.y0 + dz * r.cos_i / r.sin_i;
@@ -321,6 +498,94 @@ double curvature_at_height(const ExactRay& r, double y) {
     const double e1 = r.profile.eta1;
     return r.s * r.profile.alpha * e1 * e1 * std::exp(-r.profile.alpha * y) /
            (2.0 * r.beta * r.beta);
+}
+
+PathState state_at(const ExactRay& r, double dz) {
+    PathState st;
+    const double alpha = r.profile.alpha;
+    const double e1 = r.profile.eta1;
+    // y'' = s alpha eta1^2 exp(-alpha y) / (2 beta^2), with exp(-alpha y) known at the start
+    // (E^2), the turning point (k2) and the ground (1).
+    const double curvature_scale = r.s * alpha * e1 * e1 / (2.0 * r.beta * r.beta);
+    if (r.s != 0 && dz == 0.0) {
+        st.y = r.y0;
+        st.slope = r.cos_i / r.sin_i;
+        st.curvature = curvature_scale * r.E * r.E;
+        return st;
+    }
+    if (r.s != 0 && r.turn_kind != TurnKind::BelowGround && r.turn_kind != TurnKind::None &&
+        dz == r.dz_turn) {
+        st.y = r.y_turn;
+        st.slope = 0.0;
+        st.curvature = curvature_scale * r.k2;
+        return st;
+    }
+    if (r.s != 0 && r.hits_ground && dz == r.dz_ground) {
+        st.y = 0.0;
+        st.slope = slope_at(r, dz);
+        st.curvature = curvature_scale;
+        return st;
+    }
+    if (r.s > 0) {
+        // F = cosh(u) / cosh(u0), u = x + sg asinh(w), cosh(u0) = sqrt(1 + w^2); the slope is
+        // scale q tanh(u) and exp(-alpha y) = k2 sech^2(u): all three from exp(-2|u|).
+        const double u = r.c * dz + r.sg * r.asinh_w;
+        const double au = std::fabs(u);
+        const double e2 = std::exp(-2.0 * au);
+        const double ln_cosh = au - kLn2 + std::log1p(e2);
+        st.y = r.y0 + (2.0 / alpha) * (ln_cosh - 0.5 * r.log1p_w2);
+        const double th = (1.0 - e2) / (1.0 + e2);
+        st.slope = (e1 / r.beta) * r.q * (u < 0.0 ? -th : th);
+        const double sech2 = 4.0 * e2 / ((1.0 + e2) * (1.0 + e2));
+        st.curvature = curvature_scale * r.k2 * sech2;
+        return st;
+    }
+    if (r.s < 0 && r.k2 > 0.0 && r.vertex_form) {
+        // From the apex: y = y_M + (2/alpha) ln cos v, slope -scale q tan v, and
+        // exp(-alpha y) = kappa^2 / cos^2 v.
+        const double v = r.c * dz - r.sg * r.theta;
+        const double cv = std::cos(v), sv = std::sin(v);
+        st.y = r.y_turn + (2.0 / alpha) * std::log(cv);
+        st.slope = -(e1 / r.beta) * r.q * sv / cv;
+        st.curvature = curvature_scale * r.k2 / (cv * cv);
+        return st;
+    }
+    if (r.s < 0 && r.k2 < 0.0 && r.c > 0.0) {
+        // Escaping: the forms height_at chooses, and from F and its derivative the slope
+        // (slope_at's) and exp(-alpha y) = E^2 / F^2.
+        const double x = r.c * dz;
+        const double sigma = r.q;
+        const double scale = e1 / r.beta;
+        const bool near_form = r.sg > 0 ? x < 1.0 : sigma < 0.5 * r.P;
+        if (near_form) {
+            // F = cosh x + sg P gamma dz sinhc x; dF = sg P cosh x + sigma^2 gamma dz sinhc x;
+            // cosh and sinh from expm1, without cancellation for small x.
+            const double em = std::expm1(x);
+            const double ch = 1.0 + em * em / (2.0 * (em + 1.0));
+            const double sinh_x = em * (em + 2.0) / (2.0 * (em + 1.0));
+            const double t = r.gamma * dz * (std::fabs(x) < 1e-4 ? 1.0 + x * x / 6.0 : sinh_x / x);
+            const double F = ch + r.sg * r.P * t;
+            st.y = r.y0 + (2.0 / alpha) * std::log(F);
+            st.slope = scale * (r.sg * r.P * ch + sigma * sigma * t) / F;
+            st.curvature = curvature_scale * r.E * r.E / (F * F);
+            return st;
+        }
+        // ln F = ln(ps / 2 sigma) + sg x + ln(1 - g), g = r exp(-2 sg x), and the slope
+        // sg sigma coth(A + sg x) = sg sigma (1 + g) / (1 - g).
+        // E^2 exp(-2 sg x) as one exponential: for a start far above the gradient (alpha y0 >
+        // 745) E^2 underflows to 0 while exp(2x) overflows on the way down.
+        const double ps = r.P + sigma;
+        const double g = std::exp(2.0 * (r.ln_E - r.sg * x)) / (ps * ps);
+        const double ln_F = std::log(ps / (2.0 * sigma)) + r.sg * x + std::log1p(-g);
+        st.y = r.y0 + (2.0 / alpha) * ln_F;
+        st.slope = scale * r.sg * sigma * (1.0 + g) / (1.0 - g);
+        st.curvature = curvature_scale * std::exp(2.0 * (r.ln_E - ln_F));
+        return st;
+    }
+    st.y = height_at(r, dz);
+    st.slope = slope_at(r, dz);
+    st.curvature = curvature_at_height(r, st.y);
+    return st;
 }
 
 double distance_to_height(const ExactRay& r, double y) {

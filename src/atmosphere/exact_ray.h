@@ -84,6 +84,30 @@ constexpr double kMaxHeight = 1e9;
 /// between 0 and pi: a vertical ray has no horizontal distance).  The profile must be valid.
 Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad);
 
+/// What every ray from one start height shares: the constants of the closed forms that
+/// depend on the height only (built once for a frame's camera rays, which start at the eye).
+struct ExactRayOrigin {
+    Profile profile;
+    double y0 = 0.0;          // start height, m
+    double eta_p = 1.0;       // eta(y0)
+    double eta_inf = 1.0;     // eta(infinity)
+    double ln_E = 0.0;        // -alpha y0 / 2
+    double E = 1.0;           // exp(-alpha y0 / 2)
+    double E0 = 1.0;          // exp(-alpha y0)
+    double one_m_E = 0.0;     // 1 - E, without cancellation
+    double root_1m_E0 = 0.0;  // sqrt(1 - exp(-alpha y0)), without cancellation
+};
+
+/// The shared constants of rays from height y0 (finite, >= 0); the profile must be valid.
+Result<ExactRayOrigin> make_exact_ray_origin(const Profile& profile, double y0);
+
+/// The exact ray from the origin whose direction makes the angle i with the upward vertical,
+/// given by cos i and sin i (sin i > 0; cos^2 + sin^2 = 1 to rounding): the ray
+/// make_exact_ray(profile, y0, i) builds, to rounding, without the angle's round trip through
+/// trigonometric functions and with the origin's constants computed once.  Its field i is
+/// left NaN: the closed forms use cos_i and sin_i.
+ExactRay make_exact_ray(const ExactRayOrigin& origin, double cos_i, double sin_i);
+
 /// Height at horizontal distance dz >= 0 (meaningful up to dz_ground).
 double height_at(const ExactRay& ray, double dz);
 
@@ -92,6 +116,19 @@ double slope_at(const ExactRay& ray, double dz);
 
 /// d2y/dz2 of any ray of this invariant at height y: s alpha eta1^2 exp(-alpha y) / (2 beta^2).
 double curvature_at_height(const ExactRay& ray, double y);
+
+/// The path at a horizontal distance: what a sampler needs there.
+struct PathState {
+    double y = 0.0;          // height
+    double slope = 0.0;      // dy/dz
+    double curvature = 0.0;  // d2y/dz2
+};
+
+/// Height, slope and curvature at horizontal distance dz >= 0 together, for about the cost of
+/// one height (from one exponential where the closed form allows; height_at, slope_at and
+/// curvature_at_height to rounding).  At the start, the turning point and the ground point
+/// (dz exactly 0, dz_turn or dz_ground) their closed forms are used: y0, y_turn, 0.
+PathState state_at(const ExactRay& ray, double dz);
 
 /// The first horizontal distance at which the path reaches height y while still moving
 /// towards it from y0 (before any turning point), or +infinity if it never does.

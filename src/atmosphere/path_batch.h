@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "atmosphere/exact_path.h"
 #include "util/csv.h"
 #include "util/result.h"
 
@@ -17,5 +18,14 @@ extern const char* const kPathBatchColumns;
 /// significant digits and "nan" where a value is not defined.  The first bad row or value is
 /// an error naming the file, the line and the column; nothing is returned then.
 Result<std::string> run_path_batch(const CsvTable& table);
+
+/// The same columns for every row traced in one atmosphere (any profile): only case_id, y0,
+/// i_rad and d1..d3 are read (the profile columns may be absent or empty).  y0 and the heights
+/// are above the ground (the sphere with an Earth radius), the distances along it, and dydz is
+/// d(height)/d(distance).  k2 and k are nan (they belong to the exponential closed forms);
+/// ray_class is the path's fate (ground, escape, ducted, level, straight); y_turn and dz_turn
+/// are the first turning point ahead (turn_kind "ahead"), else the last one behind the eye
+/// ("behind", dz_turn < 0), else nan ("none").
+Result<std::string> run_path_batch(const CsvTable& table, const Atmosphere& atmosphere);
 
 }  // namespace mirage

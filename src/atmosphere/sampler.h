@@ -10,6 +10,8 @@
 // error of each segment with max|y''| (Delta dz)^2 / 8, and y'' depends on the height only.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <limits>
 #include <vector>
@@ -45,6 +47,14 @@ struct SampledPath {
     double end_slope = 0.0;  // dy/dz after the last point (Straight and Cut)
     bool turns = false;      // a turning point lies on the path (it was mirrored)
     double dz_turn = 0.0;    // where, when it turns
+    // Per segment (points[k] to points[k + 1]), from sample_path_near: 0 for a segment within
+    // the tolerance, else nothing the path can meet lies near that stretch (the chord is
+    // coarse there and need not be tested against the scene) and this is the stretch's
+    // length, estimated (the chord is shorter).  Empty: every segment is within the tolerance.
+    std::vector<double> clear_length;
+    // From sample_path_near: nothing the path can meet lies near its straight end either
+    // (the march need not test it; its direction is all that counts, for the sky).
+    bool end_clear = false;
 };
 
 /// Samples the exact ray to the tolerance.  At least one of tolerance_m and tolerance_rad
@@ -57,5 +67,77 @@ double polyline_height(const SampledPath& path, double dz);
 
 /// The allowance at horizontal distance dz where the exact height is y.
 double allowed_error(const ExactRay& ray, const SampleSettings& settings, double dz, double y);
+
+/// A line of the ray's vertical plane through (dz, y) with the given slope.
+struct PathLine {
+    double dz = 0.0;
+    double y = 0.0;
+    double slope = 0.0;
+    double at(double x) const { return y + slope * (x - dz); }
+};
+
+/// A region of the ray's vertical plane (horizontal distance dz from the start, height y):
+/// the dz in [dz_lo, dz_hi] and the heights above both lower lines and below both upper
+/// lines.  The sampler's regions hold a stretch of the exact path and everything within the
+/// tolerance of it (its chord among them): a convex path lies below its chord and above its
+/// end tangents, a concave one the other way round.
+struct PathRegion {
+    double dz_lo = 0.0, dz_hi = 0.0;
+    std::array<PathLine, 2> lower{};
+    std::array<PathLine, 2> upper{};
+    int lower_count = 2;  // lines in use: 1 or 2
+    int upper_count = 2;
+};
+
+/// A region prepared for many rectangle tests (the reciprocals of its slopes taken once).
+class RegionTest {
+  public:
+    explicit RegionTest(const PathRegion& region);
+    /// Whether the region meets the rectangle [dz_lo, dz_hi] x [y_lo, y_hi] (bounds may be
+    /// infinite): the cut of an axis-aligned box by the ray's vertical plane.
+    bool meets(double dz_lo, double dz_hi, double y_lo, double y_hi) const;
+    const PathRegion& region() const { return region_; }
+
+  private:
+    PathRegion region_;
+    std::array<double, 2> inv_lower_{}, inv_upper_{};  // 1 / slope (0 for a level line)
+};
+
+/// RegionTest(region).meets(dz_lo, dz_hi, y_lo, y_hi).
+bool region_meets_rectangle(const PathRegion& region, double dz_lo, double dz_hi, double y_lo,
+                            double y_hi);
+
+/// What a path can meet, as seen in its vertical plane: the scene, for sample_path_near.
+class PathObstacles {
+  public:
+    virtual ~PathObstacles() = default;
+    /// Whether anything may lie in the region (false only when nothing does).
+    virtual bool may_meet(const PathRegion& region) const = 0;
+    /// Whether a surface covers the ground (y = 0): a path meets it at its ground point
+    /// (nowhere else: its chords join points of the path, which lies above the ground).
+    virtual bool ground() const = 0;
+};
+
+/// Samples the exact ray to the tolerance wherever it may meet something, and coarsely where
+/// nothing can lie near it.  Each monotone piece of the path (from the start to a turning
+/// point ahead, then to the ground, the cut, or where the straight end keeps the tolerance)
+/// is cut in halves on a grid of powers of two from the piece's start; a half is kept whole
+/// once its chord is within the tolerance, or, with obstacles, once the region between its
+/// chord and end tangents, widened by the allowance, meets nothing (marked in clear_length).
+/// Without obstacles every segment keeps the tolerance, and with them the segments that do
+/// are the same ones: the other segments hold nothing those would have met.  The straight
+/// end begins where the path's asymptote keeps the tolerance, as in sample_path.
+SampledPath sample_path_near(const ExactRay& ray, const SampleSettings& settings,
+                             const PathObstacles* obstacles);
+
+/// The same into `path`, whose storage is reused (for many rays in a row).
+void sample_path_near(const ExactRay& ray, const SampleSettings& settings,
+                      const PathObstacles* obstacles, SampledPath& path);
+
+/// Where the straight end of an escaping path may begin, at or after `from`: a distance from
+/// which the line with the asymptotic slope through the path keeps the tolerance (the
+/// path's departure from its asymptote is within the allowance).  +inf for a path without
+/// an asymptote.
+double straight_end_start(const ExactRay& ray, const SampleSettings& settings, double from);
 
 }  // namespace mirage

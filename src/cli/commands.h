@@ -10,6 +10,7 @@ void setup_compile_command(CLI::App& app);
 void setup_trace_command(CLI::App& app);
 void setup_compare_command(CLI::App& app);
 void setup_animate_command(CLI::App& app);
+void setup_study_command(CLI::App& app);
 
 /// Thrown by a subcommand's callback to end the program with `code` after it has printed its
 /// own message.

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     mirage::setup_trace_command(app);
     mirage::setup_compare_command(app);
     mirage::setup_animate_command(app);
+    mirage::setup_study_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

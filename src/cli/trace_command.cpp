@@ -39,6 +39,9 @@ void setup_trace_command(CLI::App& app) {
                   "(level camera only)");
     sub->add_flag("--no-atmosphere", o->no_atmosphere,
                   "straight rays, whatever the scene declares");
+    sub->add_flag("--reference-sampling", o->trace.reference_sampling,
+                  "sample every ray's path to the tolerance all along (the reference for the "
+                  "default, which samples finely only near surfaces)");
     sub->add_option("-L,--library-path", o->trace.library_paths,
                     "extra include directory (searched first)");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");

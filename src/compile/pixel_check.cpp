@@ -156,6 +156,7 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
     CurvedSettings cs;
     cs.profile = profile;
     cs.tolerance_rad = s.exact_tolerance_rad;
+    cs.eye = s.eye;  // the camera rays' start: they share its index of the scene's boxes
     const CurvedPropagator exact(cs);
 
     std::vector<PixelEnds> ends(n);

@@ -9,6 +9,7 @@
 #include "compile/stages.h"
 #include "layers/fit.h"
 #include "layers/outcome.h"
+#include "layers/revolution.h"
 #include "util/format.h"
 #include "util/parallel.h"
 
@@ -88,32 +89,51 @@ int deepest_trace_level(const CompileContext& ctx, const LayerStack& rendered,
     return rays.size() ? *std::max_element(level.begin(), level.end()) : 0;
 }
 
+namespace {
+
+// A camera ray through a horizontal stack is one ray of the 2D problem of its elevation: its
+// path in the half-plane of its azimuth, out to where the layers end, with POV-Ray's ior
+// quotients (layers/revolution.h).
+MeridianPath camera_path(const CompileContext& ctx, const RevolutionStack& s, double elevation) {
+    return trace_meridian(s, elevation, ctx.layers_box.x1 - ctx.camera.location.x, 100000, true);
+}
+
+// The slope of a path at radius r (its final direction beyond its last point).
+double slope_at_radius(const MeridianPath& p, double r) {
+    for (size_t i = 1; i < p.points.size(); ++i)
+        if (p.points[i].x >= r && p.points[i - 1].x <= r && p.points[i].x > p.points[i - 1].x)
+            return (p.points[i].y - p.points[i - 1].y) / (p.points[i].x - p.points[i - 1].x);
+    return p.direction.y / p.direction.x;
+}
+
+}  // namespace
+
 std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& rendered,
                                   const CameraRays& rays, int* max_crossings) {
-    const glm::dvec3& eye = ctx.camera.location;
+    const RevolutionStack s = revolution_of(rendered, ctx.eye_y);
     std::vector<double> err(rays.size(), 0.0);
     std::vector<int> cross(rays.size(), 0);
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
-        const glm::dvec3& d = rays.direction[i];
-        Trace3dOptions to;
-        to.camera_y = ctx.eye_y;
-        const Trace3dOutcome t =
-            trace_layers_3d(rendered, eye, d, ctx.scene_box, ctx.layers_box, to);
+        const MeridianPath p = camera_path(ctx, s, rays.elevation[i]);
+        cross[i] = p.crossings;
+        if (p.cut_off) {
+            err[i] = kInf;
+            return;
+        }
+        const double exit = rays.exit_dz[i];
         BandOutcome b;
-        b.ground = t.ground;
-        const double hl = std::hypot(d.x, d.z);
-        b.dz = glm::length(glm::dvec2(t.scene_point.x - eye.x, t.scene_point.z - eye.z));
-        if (!t.ground && hl > 0.0) b.dz = rays.exit_dz[i];
-        b.y = t.scene_point.y;
-        const double sh = std::hypot(t.scene_dir.x, t.scene_dir.z);
-        b.slope = sh > 0.0 ? t.scene_dir.y / sh : 0.0;
-        b.sky = t.sky;
-        const double fh = std::hypot(t.final_dir.x, t.final_dir.z);
-        b.final_slope = fh > 0.0 ? t.final_dir.y / fh : 0.0;
-        const BandOutcome e =
-            exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], rays.exit_dz[i]);
-        err[i] = t.cut_off ? kInf : outcome_error_rad(ctx.eye_y, e, b) / rays.pixel_rad[i];
-        cross[i] = t.crossings;
+        b.ground = p.ground && p.points.back().x <= exit;
+        if (b.ground) {
+            b.dz = p.points.back().x;
+        } else {
+            b.dz = exit;
+            b.y = path_height(p, exit);
+            b.slope = slope_at_radius(p, exit);
+            b.sky = !p.ground && p.direction.y > 0.0;
+            b.final_slope = p.direction.y / p.direction.x;
+        }
+        const BandOutcome e = exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], exit);
+        err[i] = outcome_error_rad(ctx.eye_y, e, b) / rays.pixel_rad[i];
     });
     if (max_crossings)
         *max_crossings = cross.empty() ? 0 : *std::max_element(cross.begin(), cross.end());
@@ -123,13 +143,13 @@ std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& r
 double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const CameraRays& rays) {
     const double cap = ctx.layers_box.x1 - ctx.camera.location.x;
     if (rendered.boundaries() == 0) return 1.1 * ctx.extent;
+    const RevolutionStack s = revolution_of(rendered, ctx.eye_y);
     std::vector<double> reach(rays.size(), 0.0);
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
-        Trace3dOptions to;
-        to.camera_y = ctx.eye_y;
-        const Trace3dOutcome t = trace_layers_3d(rendered, ctx.camera.location, rays.direction[i],
-                                                 ctx.scene_box, ctx.layers_box, to);
-        if (!t.cut_off) reach[i] = 1.1 * t.last_event;
+        const MeridianPath p = camera_path(ctx, s, rays.elevation[i]);
+        if (p.cut_off || p.crossings == 0) return;
+        // The last boundary event: the point before the path's end (the ground or the reach).
+        reach[i] = 1.1 * p.points[p.points.size() - 2].x;
     });
     const double r = std::max(1.1 * ctx.extent, *std::max_element(reach.begin(), reach.end()));
     return std::min(r, cap);
@@ -151,7 +171,8 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
             return make_error(ctx.scene.file +
                               ": uniform layers need a count: --count N or Mirage_Layer_Count");
         const double top = top_reached(ctx, rays);
-        d.stack = uniform_layers(ctx.profile, ctx.eye_y, st.layer_count, top);
+        d.stack = merge_invisible_boundaries(
+            uniform_layers(ctx.profile, ctx.eye_y, st.layer_count, top), ctx.eye_y);
         // Berger's layers do not care where the camera is; POV-Ray needs it off a boundary.
         for (double& h : d.stack.heights)
             if (std::fabs(h - ctx.eye_y) < 1e-9 * std::max(1.0, ctx.eye_y))
@@ -197,8 +218,8 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
     for (int attempt = 0; attempt < 12; ++attempt) {
         FitResult f = fit_layers(ctx.profile, ctx.eye_y, design, fs);
         d.max_error_px_fitted = f.quality.max_error_px;
-        d.stack = f.stack;
-        const int level = deepest_trace_level(ctx, ctx.rendered(f.stack), rays);
+        d.stack = merge_invisible_boundaries(f.stack, ctx.eye_y);
+        const int level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
         d.max_trace_level = level;
         if (level <= kMaxTraceLevel) break;
         // Over the ceiling: fewer crossings per pass, in proportion.

@@ -26,9 +26,7 @@ int pov_camera_layer(const LayerStack& s, double y, double camera_y) {
     return s.layer_at(std::isnan(camera_y) ? y : camera_y);
 }
 
-float pov_ior(const LayerStack& s, int k_cam, int k) {
-    return static_cast<float>(s.index(k) / s.index(k_cam));
-}
+float pov_ior(const LayerStack& s, int k_cam, int k) { return pov_relative_ior(s, k_cam, k); }
 
 double pov_ior_ratio(const LayerStack& s, int k_cam, int from, int to) {
     // Entering from the atmosphere (the camera's layer, a gap) or leaving into it, POV-Ray

@@ -39,6 +39,30 @@ LayerStack with_gaps(const LayerStack& s, double camera_y, double gap) {
     return g;
 }
 
+float pov_relative_ior(const LayerStack& s, int k_cam, int k) {
+    return static_cast<float>(s.index(k) / s.index(k_cam));
+}
+
+LayerStack merge_invisible_boundaries(const LayerStack& s, double camera_y) {
+    const int k_cam = s.layer_at(camera_y);
+    const int N = s.boundaries();
+    std::vector<int> kept;  // boundaries with different float iors on their two sides
+    for (int j = 0; j < N; ++j)
+        if (pov_relative_ior(s, k_cam, j) != pov_relative_ior(s, k_cam, j + 1)) kept.push_back(j);
+    LayerStack m;
+    m.profile = s.profile;
+    for (size_t r = 0; r <= kept.size(); ++r) {
+        // Run r: layers first..last between kept boundaries r - 1 and r.
+        const int first = r == 0 ? 0 : kept[r - 1] + 1;
+        const int last = r == kept.size() ? N : kept[r];
+        const int k = k_cam >= first && k_cam <= last ? k_cam : (last < k_cam ? last : first);
+        m.excess.push_back(s.excess[k]);
+        if (!s.air.empty()) m.air.push_back(s.air[k]);
+        if (r < kept.size()) m.heights.push_back(s.heights[kept[r]]);
+    }
+    return m;
+}
+
 bool well_formed(const LayerStack& s) {
     if (s.excess.size() != s.heights.size() + 1) return false;
     if (!s.air.empty() && s.air.size() != s.excess.size()) return false;

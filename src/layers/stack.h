@@ -30,6 +30,17 @@ struct LayerStack {
 /// True when heights ascend strictly, are positive and finite, and excess has N + 1 values.
 bool well_formed(const LayerStack& stack);
 
+/// The ior POV-Ray holds for layer k: its index over the camera layer's, in single precision
+/// (POV-Ray 3.7 keeps Interior::IOR as a float).
+float pov_relative_ior(const LayerStack& stack, int k_cam, int k);
+
+/// The stack with every boundary between two layers of the same float ior removed: POV-Ray's
+/// ratio there is exactly 1 and it passes the boundary without bending, as a free continued
+/// ray that still costs a recursive call (deep chains of them overflow its render threads'
+/// stacks).  Each run of such layers becomes one, with the index of the one nearest the
+/// camera (the camera's own in its run).
+LayerStack merge_invisible_boundaries(const LayerStack& stack, double camera_y);
+
 /// The stack as POV-Ray renders it in the gap layout: every boundary that does not touch the
 /// camera's layer becomes a gap of thickness `gap` filled with the camera layer's index (POV-
 /// Ray's atmosphere), so that every refraction divides by POV-Ray's double-precision

@@ -67,7 +67,9 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
         // highest layer as half-spaces (the top one must never be left towards the sky).
         const double g = st.gap;
         for (int k = 0; k <= N; ++k) {
-            if (k == k_cam) continue;
+            // The camera's layer is POV-Ray's atmosphere, and so is any layer whose ior is the
+            // float 1: a slab of it would only cost POV-Ray free continued rays.
+            if (k == k_cam || pov_ior(s, k_cam, k) == 1.0f) continue;
             const double bottom = k == 0 ? 0.0 : h[k - 1] + (k - 1 == k_cam ? 0.0 : 0.5 * g);
             const double top = k == N ? 0.0 : h[k] - (k == k_cam - 1 ? 0.0 : 0.5 * g);
             if (k == 0) {
@@ -105,7 +107,6 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
 
 std::string layers_csv(const LayerStack& s, double camera_y) {
     const int k_cam = s.layer_at(camera_y);
-    const double n_cam = s.index(k_cam);
     std::ostringstream out;
     out << "layer,bottom,top,index,eta2_minus_eta0_2,ior_as_emitted,object\n";
     const int N = s.boundaries();

@@ -5,8 +5,8 @@
 #include <sstream>
 #include <vector>
 
-#include "atmosphere/exact_ray.h"
-#include "atmosphere/sampler.h"
+#include "atmosphere/general_profile.h"
+#include "atmosphere/path_sampler.h"
 #include "report/svg.h"
 
 namespace mirage {
@@ -24,9 +24,11 @@ std::string fan_colour(double t) {
 }
 
 struct DrawnRay {
-    ExactRay ray;
     SampledPath path;
     std::vector<glm::dvec2> curve;  // dense exact curve, clipped to the ground
+    std::vector<glm::dvec2> turns;  // turning points within the drawn distance
+    bool ground = false;
+    double dz_ground = 0.0;
 };
 
 }  // namespace
@@ -37,34 +39,43 @@ Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
                           std::to_string(kMaxFanRays));
     if (!(st.max_distance > 0.0)) return make_error("the drawn distance must be > 0 m");
     if (!(st.eye_height > 0.0)) return make_error("the eye must be above the ground");
+    const double R = st.atmosphere.earth_radius();
+    auto phys = [&](double y) { return height_above_sphere(y, R); };
     std::vector<DrawnRay> rays;
     double y_top = st.eye_height * 1.25;
     for (int j = 0; j < st.count; ++j) {
         const double t = st.count == 1 ? 0.5 : double(j) / (st.count - 1);
         const double elev =
             (st.elev_from_deg + t * (st.elev_to_deg - st.elev_from_deg)) * M_PI / 180;
-        auto ray = make_exact_ray(st.profile, st.eye_height, M_PI / 2 - elev);
-        if (!ray) return ray.error();
+        auto path =
+            ExactPath::make(st.atmosphere, flattened_height(st.eye_height, R), M_PI / 2 - elev);
+        if (!path) return path.error();
         SampleSettings ss;
         ss.tolerance_rad = st.tolerance_rad;
         ss.tolerance_m = st.tolerance_m;
         ss.max_dz = st.max_distance;
-        DrawnRay d{*ray, sample_path(*ray, ss), {}};
-        const double end =
-            ray->hits_ground ? std::min(ray->dz_ground, st.max_distance) : st.max_distance;
+        DrawnRay d;
+        d.path = sample_exact_path(*path, ss);
+        d.ground = path->hits_ground() && path->dz_ground() <= st.max_distance;
+        d.dz_ground = path->dz_ground();
+        const double end = d.ground ? d.dz_ground : st.max_distance;
         const int n = 600;
         for (int k = 0; k <= n; ++k) {
             const double dz = end * k / n;
-            d.curve.push_back({dz, k == n && ray->hits_ground && end == ray->dz_ground
-                                       ? 0.0
-                                       : height_at(*ray, dz)});
+            d.curve.push_back({dz, k == n && d.ground ? 0.0 : phys(path->height_at(dz))});
+        }
+        const int count = path->turning_point_count();
+        for (int k = 0; count != 0 && (count < 0 || k < count) && k < 400; ++k) {
+            const TurningPoint tp = path->turning_point(k);
+            if (tp.dz > end) break;
+            d.turns.push_back({tp.dz, phys(tp.y)});
         }
         for (const auto& p : d.curve) y_top = std::max(y_top, std::min(p.y, 50.0 * st.eye_height));
         rays.push_back(std::move(d));
     }
     y_top *= 1.08;
 
-    const double left = 70, top = 50, right = 230, bottom = 60;
+    const double left = 70, top = 50, right = 250, bottom = 60;
     PlotFrame f{0.0,
                 st.max_distance,
                 0.0,
@@ -82,16 +93,27 @@ Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
       << "</text>\n";
     s << "<clipPath id=\"plot\"><rect x=\"" << f.left << "\" y=\"" << f.top << "\" width=\""
       << f.width << "\" height=\"" << f.height << "\"/></clipPath>\n";
-    s << f.axes("horizontal distance from the eye (m)", "height (m)");
+    // Ducts: the heights where level rays are trapped.
+    if (const auto* q = st.atmosphere.quadratic_profile()) {
+        for (const auto& duct : find_ducts(*q)) {
+            const double lo = phys(duct.bottom), hi = std::min(phys(duct.top), y_top);
+            if (lo >= y_top) continue;
+            s << "<rect clip-path=\"url(#plot)\" x=\"" << f.left << "\" y=\"" << f.py(hi)
+              << "\" width=\"" << f.width << "\" height=\"" << f.py(lo) - f.py(hi)
+              << "\" fill=\"#f3ecd2\"/>\n";
+        }
+    }
+    s << f.axes(R > 0.0 ? "distance along the ground from the eye (m)"
+                        : "horizontal distance from the eye (m)",
+                R > 0.0 ? "height above the sphere (m)" : "height (m)");
     // Ground.
     s << "<rect x=\"" << f.left << "\" y=\"" << f.py(0.0) - 3 << "\" width=\"" << f.width
       << "\" height=\"3\" fill=\"#b08850\"/>\n";
     s << "<g clip-path=\"url(#plot)\" fill=\"none\" stroke-width=\"1.4\">\n";
     for (size_t j = 0; j < rays.size(); ++j) {
         const double t = rays.size() == 1 ? 0.5 : double(j) / (rays.size() - 1);
-        const auto& d = rays[j];
         s << "<polyline stroke=\"" << fan_colour(t) << "\" points=\"";
-        for (const auto& p : d.curve) s << f.px(p.x) << "," << f.py(p.y) << " ";
+        for (const auto& p : rays[j].curve) s << f.px(p.x) << "," << f.py(p.y) << " ";
         s << "\"/>\n";
     }
     s << "</g>\n<g clip-path=\"url(#plot)\">\n";
@@ -99,15 +121,15 @@ Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
         const double t = rays.size() == 1 ? 0.5 : double(j) / (rays.size() - 1);
         const auto& d = rays[j];
         for (const auto& p : d.path.points)
-            s << "<circle cx=\"" << f.px(p.x) << "\" cy=\"" << f.py(p.y) << "\" r=\"2.2\" fill=\""
-              << fan_colour(t) << "\"/>\n";
-        if (d.path.turns) {
-            const double x = f.px(d.path.dz_turn), y = f.py(height_at(d.ray, d.path.dz_turn));
+            s << "<circle cx=\"" << f.px(p.x) << "\" cy=\"" << f.py(phys(p.y))
+              << "\" r=\"2.2\" fill=\"" << fan_colour(t) << "\"/>\n";
+        for (const auto& tp : d.turns) {
+            const double x = f.px(tp.x), y = f.py(tp.y);
             s << "<path d=\"M" << x << "," << y - 6 << " L" << x + 5 << "," << y << " L" << x << ","
               << y + 6 << " L" << x - 5 << "," << y << " Z\" fill=\"none\" stroke=\"#000\"/>\n";
         }
-        if (d.ray.hits_ground && d.ray.dz_ground <= st.max_distance) {
-            const double x = f.px(d.ray.dz_ground), y = f.py(0.0);
+        if (d.ground) {
+            const double x = f.px(d.dz_ground), y = f.py(0.0);
             s << "<path d=\"M" << x - 4 << "," << y - 4 << " L" << x + 4 << "," << y + 4 << " M"
               << x - 4 << "," << y + 4 << " L" << x + 4 << "," << y - 4
               << "\" stroke=\"#000\" stroke-width=\"1.5\"/>\n";
@@ -126,8 +148,12 @@ Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
         ly += 18;
     };
     line("profile: " + st.profile_label);
-    line("eta0 = " + tick_label(st.profile.eta0) + ", eta1 = " + tick_label(st.profile.eta1));
-    line("alpha = " + tick_label(st.profile.alpha) + " /m");
+    if (const auto* p = st.atmosphere.exponential_profile()) {
+        line("eta0 = " + tick_label(p->eta0) + ", eta1 = " + tick_label(p->eta1));
+        line("alpha = " + tick_label(p->alpha) + " /m");
+    }
+    for (const auto& l : st.legend) line(l);
+    if (R > 0.0) line("Earth radius " + tick_label(R / 1000.0) + " km");
     line("eye height: " + tick_label(st.eye_height) + " m");
     line("elevations: " + tick_label(st.elev_from_deg) + " to " + tick_label(st.elev_to_deg) +
          " deg");
@@ -138,6 +164,9 @@ Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
     line("dots: polyline samples");
     line("diamonds: turning points");
     line("crosses: ground hits");
+    if (st.atmosphere.quadratic_profile() &&
+        !find_ducts(*st.atmosphere.quadratic_profile()).empty())
+        line("shaded: ducts (level rays trapped)");
     s << "</svg>\n";
     return s.str();
 }

@@ -1,10 +1,13 @@
 // Ray diagrams in the manner of Khote & Howard's figures 1, 2 and 6: a fan of rays from the
-// eye, their sample points, turning points and the ground, with axes in metres.
+// eye, their sample points, turning points and the ground, with axes in metres, for any
+// atmosphere (exact_path.h): ducts are shaded, and with an Earth radius heights are drawn above
+// the sphere against distances along it.
 #pragma once
 
 #include <string>
+#include <vector>
 
-#include "atmosphere/profile.h"
+#include "atmosphere/exact_path.h"
 #include "util/result.h"
 
 namespace mirage {
@@ -13,15 +16,16 @@ namespace mirage {
 constexpr int kMaxFanRays = 500;
 
 struct RayDiagramSettings {
-    Profile profile;
-    std::string profile_label;     // shown in the legend, e.g. "paper (inferior)"
-    double eye_height = 1.5;       // m
-    double elev_from_deg = -20.0;  // first ray's elevation, degrees
-    double elev_to_deg = 5.0;      // last ray's elevation, degrees
-    int count = 11;                // rays in the fan, 1 to kMaxFanRays
-    double max_distance = 40.0;    // horizontal extent drawn, m
-    double tolerance_rad = 1e-3;   // sampling tolerance, angle seen from the eye
-    double tolerance_m = 0.0;      // sampling tolerance, fixed part, m
+    Atmosphere atmosphere;
+    std::string profile_label;        // shown in the title and legend, e.g. "paper (inferior)"
+    std::vector<std::string> legend;  // lines describing the profile (e.g. its parameters)
+    double eye_height = 1.5;          // m (above the sphere with an Earth radius)
+    double elev_from_deg = -20.0;     // first ray's elevation, degrees
+    double elev_to_deg = 5.0;         // last ray's elevation, degrees
+    int count = 11;                   // rays in the fan, 1 to kMaxFanRays
+    double max_distance = 40.0;       // horizontal extent drawn, m
+    double tolerance_rad = 1e-3;      // sampling tolerance, angle seen from the eye
+    double tolerance_m = 0.0;         // sampling tolerance, fixed part, m
     int width_px = 960;
     int height_px = 560;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -53,9 +54,246 @@ double largest_bend(const Profile& profile, double y0, double sin_i, bool rising
     return std::asin(s_max) - std::asin(beta / hi);
 }
 
-// The exact ray and its samples; origin.y >= -ground_slack, and a horizontal component.
-CurvedPath sample_curved_path(const CurvedSettings& settings, const glm::dvec3& origin,
-                              const glm::dvec3& direction, double travelled) {
+// A monotone function of the azimuth atan2(x, z) of (x, z), in (-2, 2], without a
+// trigonometric function: the "diamond angle", the seam (+-2) straight along -z.
+double pseudo_angle(double x, double z) {
+    const double s = x / (std::abs(x) + std::abs(z));
+    if (z >= 0.0) return s;
+    return x >= 0.0 ? 2.0 - s : -2.0 - s;
+}
+
+// The boxes of the scene's bounded objects that the vertical planes of rays from one eye can
+// cross, by the planes' azimuth: each box is listed in the bins of the azimuths from the eye
+// its x-z rectangle spans (one bin more on each side, for rounding).  What rays from one eye
+// share, built once per scene.
+class EyeIndex {
+  public:
+    EyeIndex(const SceneAccel& accel, const glm::dvec3& eye)
+        : accel_id_(accel.id()), eye_(eye), start_(kBins + 1, 0) {
+        std::vector<std::pair<int, int>> spans;  // per box: its bin ranges, [first, last]
+        std::vector<int> owner;
+        for (int i = 0; i < accel.box_count(); ++i) {
+            const Aabb& b = accel.item_box(i);
+            if (!b.finite()) continue;
+            const double x0 = b.lo.x - eye.x, x1 = b.hi.x - eye.x;
+            const double z0 = b.lo.z - eye.z, z1 = b.hi.z - eye.z;
+            auto add = [&](int first, int last) {
+                spans.push_back({std::max(0, first), std::min(kBins - 1, last)});
+                owner.push_back(i);
+            };
+            if (x0 <= 0.0 && x1 >= 0.0 && z0 <= 0.0 && z1 >= 0.0) {  // the eye is above it
+                add(0, kBins - 1);
+                continue;
+            }
+            const double corners[4] = {pseudo_angle(x0, z0), pseudo_angle(x0, z1),
+                                       pseudo_angle(x1, z0), pseudo_angle(x1, z1)};
+            if (x0 <= 0.0 && x1 >= 0.0 && z1 < 0.0) {
+                // Behind the eye across the seam: from the corners right of it up to +2, and
+                // from -2 up to the corners left of it.
+                double lo_pos = 2.0, hi_neg = -2.0;
+                for (const double c : corners) {
+                    if (c > 0.0) lo_pos = std::min(lo_pos, c);
+                    if (c < 0.0) hi_neg = std::max(hi_neg, c);
+                }
+                add(bin(lo_pos) - 1, kBins - 1);
+                add(0, bin(hi_neg) + 1);
+                continue;
+            }
+            const auto [lo, hi] = std::minmax({corners[0], corners[1], corners[2], corners[3]});
+            add(bin(lo) - 1, bin(hi) + 1);
+        }
+        for (const auto& [first, last] : spans) {
+            for (int k = first; k <= last; ++k) ++start_[k + 1];
+        }
+        for (int k = 0; k < kBins; ++k) start_[k + 1] += start_[k];
+        items_.resize(start_[kBins]);
+        std::vector<int> fill(start_.begin(), start_.end() - 1);
+        for (std::size_t j = 0; j < spans.size(); ++j) {
+            for (int k = spans[j].first; k <= spans[j].second; ++k) items_[fill[k]++] = owner[j];
+        }
+    }
+
+    bool serves(const SceneAccel& accel, const glm::dvec3& eye) const {
+        return accel_id_ == accel.id() && eye_ == eye;
+    }
+
+    /// The crossings, at dz >= 0, of the boxes a plane along unit `heading` from the eye may
+    /// cross (appended to `out`).
+    void crossings(const SceneAccel& accel, const glm::dvec2& heading,
+                   std::vector<SceneAccel::Crossing>& out) const {
+        const int k = bin(pseudo_angle(heading.x, heading.y));
+        const double inv_x = 1.0 / heading.x, inv_z = 1.0 / heading.y;
+        for (int j = start_[k]; j < start_[k + 1]; ++j) {
+            const Aabb& b = accel.item_box(items_[j]);
+            double p = -std::numeric_limits<double>::infinity();
+            double q = std::numeric_limits<double>::infinity();
+            // As the hierarchy's footprint test: a line in a face's plane counts as inside.
+            const double x0 = (b.lo.x - eye_.x) * inv_x, x1 = (b.hi.x - eye_.x) * inv_x;
+            const double z0 = (b.lo.z - eye_.z) * inv_z, z1 = (b.hi.z - eye_.z) * inv_z;
+            for (auto [t0, t1] : {std::pair{x0, x1}, std::pair{z0, z1}}) {
+                if (t0 > t1) std::swap(t0, t1);
+                if (t0 > p) p = t0;
+                if (t1 < q) q = t1;
+            }
+            p = std::max(p, 0.0);
+            if (p <= q) out.push_back({p, q, b.lo.y, b.hi.y});
+        }
+    }
+
+  private:
+    static constexpr int kBins = 4096;
+    static int bin(double pseudo) {
+        return std::clamp(static_cast<int>(std::floor((pseudo + 2.0) * (kBins / 4.0))), 0,
+                          kBins - 1);
+    }
+
+    std::uint64_t accel_id_;
+    glm::dvec3 eye_;
+    std::vector<int> start_;  // bin k lists items_[start_[k]] to items_[start_[k + 1] - 1]
+    std::vector<int> items_;
+};
+
+// What a ray's path can meet, seen in its vertical plane: the boxes of the scene's bounded
+// objects and a ground plane.  For a ray from the eye the boxes its plane crosses come from
+// the eye's index; for another ray the first questions go down the hierarchy, pruned by the
+// regions' heights, and a ray that asks more gets the list of the boxes its plane crosses
+// (found once, into storage reused from ray to ray).
+class SceneObstacles final : public PathObstacles {
+  public:
+    SceneObstacles(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec2& heading,
+                   std::vector<SceneAccel::Crossing>& crossings, const EyeIndex* eye)
+        : accel_(accel), origin_(origin), heading_(heading), crossings_(crossings) {
+        if (eye) {
+            crossings_.clear();
+            eye->crossings(accel, heading, crossings_);
+            asked_ = kDirectQuestions + 1;
+        }
+    }
+    bool may_meet(const PathRegion& region) const override {
+        if (asked_ < kDirectQuestions) {
+            ++asked_;
+            return accel_.region_may_meet(origin_, heading_, region);
+        }
+        if (asked_ == kDirectQuestions) {
+            ++asked_;
+            crossings_.clear();
+            accel_.plane_crossings(origin_, heading_, crossings_);
+        }
+        if (crossings_.empty()) return false;
+        const RegionTest test(region);
+        for (const SceneAccel::Crossing& c : crossings_) {
+            if (c.dz_hi < region.dz_lo || c.dz_lo > region.dz_hi) continue;
+            if (test.meets(c.dz_lo, c.dz_hi, c.y_lo, c.y_hi)) return true;
+        }
+        return false;
+    }
+    bool ground() const override { return accel_.has_ground_plane(); }
+
+  private:
+    const SceneAccel& accel_;
+    glm::dvec3 origin_;
+    glm::dvec2 heading_;
+    std::vector<SceneAccel::Crossing>& crossings_;
+    mutable int asked_ = 0;
+    static constexpr int kDirectQuestions = 1;  // answered by the hierarchy
+};
+
+// The eye's index for the scene, kept per thread.
+const EyeIndex& eye_index(const SceneAccel& accel, const glm::dvec3& eye) {
+    thread_local std::unique_ptr<EyeIndex> index;
+    if (!index || !index->serves(accel, eye)) index = std::make_unique<EyeIndex>(accel, eye);
+    return *index;
+}
+
+// The shared constants of rays from height y0, kept per thread for the last two heights asked
+// for: a frame's camera rays all start at the eye, and each reflection asks for another.
+const ExactRayOrigin& ray_origin(const Profile& p, double y0) {
+    struct Slot {
+        ExactRayOrigin origin;
+        bool valid = false;
+    };
+    thread_local Slot slots[2];
+    thread_local int last = 0;
+    auto matches = [&](const Slot& s) {
+        const Profile& c = s.origin.profile;
+        return s.valid && s.origin.y0 == y0 && c.kind == p.kind && c.eta0 == p.eta0 &&
+               c.eta1 == p.eta1 && c.alpha == p.alpha;
+    };
+    for (int k : {last, 1 - last}) {
+        if (matches(slots[k])) {
+            last = k;
+            return slots[k].origin;
+        }
+    }
+    auto o = make_exact_ray_origin(p, y0);
+    MIRAGE_CHECK(o.ok());
+    last = 1 - last;  // replace the one used less recently
+    slots[last] = {*o, true};
+    return slots[last].origin;
+}
+
+// largest_bend(...) <= limit, from the origin's constants; the arcsines are needed only where
+// a bound of their difference does not settle it.
+bool bends_at_most(const ExactRayOrigin& o, double sin_i, bool rising, double limit) {
+    const bool inferior = o.profile.kind == ProfileKind::Inferior;
+    double lo = std::min(o.profile.eta0, o.eta_inf);
+    const double hi = std::max(o.profile.eta0, o.eta_inf);
+    if (inferior == rising) lo = o.eta_p;
+    const double beta = o.eta_p * sin_i;
+    const double s_max = beta / lo;
+    if (!(s_max < 1.0)) return false;
+    const double s_min = beta / hi;
+    // asin' = 1 / sqrt(1 - x^2) is at least 1 / sqrt(1 - s_min^2) between the two.
+    if (s_max - s_min > limit * std::sqrt((1.0 - s_min) * (1.0 + s_min))) return false;
+    return std::asin(s_max) - std::asin(s_min) <= limit;
+}
+
+// The ray's path for PathSampling::NearSurfaces, into `cp` (its storage reused); false when
+// the ray goes straight.  `accel` (may be null) is the scene the path is sampled for.
+bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
+                        const glm::dvec3& origin, const glm::dvec3& direction, double travelled,
+                        CurvedPath& cp) {
+    const Profile& p = settings.profile;
+    if (p.kind == ProfileKind::None || p.eta1 == 0.0) return false;
+    // Below the ground the atmosphere is not defined: the band model's bottom layer has the
+    // ground's index throughout, so such rays go straight there too.
+    if (origin.y < -ground_slack(origin)) return false;
+    // So far above the ground (beyond any scene mirage follows) the index is flat to far
+    // below a double's precision: straight.
+    if (origin.y > kMaxHeight) return false;
+    if (origin.y <= 0.0 && direction.y <= 0.0) return false;
+    const double hl = std::sqrt(direction.x * direction.x + direction.z * direction.z);
+    if (hl < kVerticalSin) return false;
+    double cos_i = direction.y, sin_i = hl;
+    const double n2 = hl * hl + direction.y * direction.y;
+    if (std::abs(n2 - 1.0) > 1e-15) {  // not quite a unit direction
+        const double n = std::sqrt(n2);
+        cos_i /= n;
+        sin_i /= n;
+    }
+    const ExactRayOrigin& o = ray_origin(p, std::max(origin.y, 0.0));
+    if (bends_at_most(o, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad)) return false;
+    cp.ray = make_exact_ray(o, cos_i, sin_i);
+    cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
+    SampleSettings ss;
+    ss.tolerance_rad = settings.tolerance_rad;
+    ss.start_distance = travelled;
+    if (accel && !accel->unbounded_elsewhere()) {
+        thread_local std::vector<SceneAccel::Crossing> crossings;
+        const EyeIndex* eye =
+            settings.eye && origin == *settings.eye ? &eye_index(*accel, origin) : nullptr;
+        const SceneObstacles obstacles(*accel, origin, cp.heading, crossings, eye);
+        sample_path_near(cp.ray, ss, &obstacles, cp.path);
+    } else {
+        sample_path_near(cp.ray, ss, nullptr, cp.path);
+    }
+    return true;
+}
+
+// The exact ray and its samples as the reference samples them; origin.y >= -ground_slack,
+// and a horizontal component.
+CurvedPath reference_path(const CurvedSettings& settings, const glm::dvec3& origin,
+                          const glm::dvec3& direction, double travelled) {
     const double hl = std::hypot(direction.x, direction.z);
     MIRAGE_CHECK(hl > 0.0);
     const double y0 = std::max(origin.y, 0.0);
@@ -76,40 +314,72 @@ PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec
               const CurvedPath& cp) {
     PolylineMarch march(accel, origin);
     const auto& points = cp.path.points;
+    const auto& clear = cp.path.clear_length;
     auto world = [&](const glm::dvec2& p) {
         return glm::dvec3(origin.x + p.x * heading.x, p.y, origin.z + p.x * heading.y);
     };
     // The first sample is the start itself.
     for (std::size_t k = 1; k < points.size(); ++k) {
-        if (march.segment_to(world(points[k]))) return march.result();
+        if (k <= clear.size() && clear[k - 1] > 0.0) {
+            march.skip_to(world(points[k]), clear[k - 1]);
+        } else if (march.segment_to(world(points[k]))) {
+            return march.result();
+        }
     }
     const double slope =
         cp.path.end == PathEnd::Ground ? slope_at(cp.ray, cp.ray.dz_ground) : cp.path.end_slope;
     MIRAGE_CHECK(std::isfinite(slope));
-    march.ray(glm::normalize(glm::dvec3(heading.x, slope, heading.y)));
+    const glm::dvec3 final_direction = glm::normalize(glm::dvec3(heading.x, slope, heading.y));
+    if (cp.path.end_clear) {
+        march.skip_ray(final_direction);
+    } else {
+        march.ray(final_direction);
+    }
     return march.result();
+}
+
+// Whether a ray goes straight, for the reference sampling (curved_path).
+bool goes_straight(const CurvedSettings& settings, const glm::dvec3& origin,
+                   const glm::dvec3& direction) {
+    if (settings.profile.kind == ProfileKind::None || settings.profile.eta1 == 0.0) return true;
+    // Below the ground the atmosphere is not defined: the band model's bottom layer has the
+    // ground's index throughout, so such rays go straight there too.
+    if (origin.y < -ground_slack(origin)) return true;
+    // So far above the ground (beyond any scene mirage follows) the index is flat to far
+    // below a double's precision: straight.
+    if (origin.y > kMaxHeight) return true;
+    if (origin.y <= 0.0 && direction.y <= 0.0) return true;
+    const double hl = std::hypot(direction.x, direction.z);
+    if (hl < kVerticalSin) return true;
+    const double bend =
+        largest_bend(settings.profile, std::max(origin.y, 0.0), hl, direction.y > 0.0);
+    return bend <= 0.5 * settings.tolerance_rad;
 }
 
 }  // namespace
 
 std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm::dvec3& origin,
                                       const glm::dvec3& direction, double travelled) {
-    if (settings.profile.kind == ProfileKind::None || settings.profile.eta1 == 0.0) {
-        return std::nullopt;
+    if (settings.sampling == PathSampling::Reference) {
+        if (goes_straight(settings, origin, direction)) return std::nullopt;
+        return reference_path(settings, origin, direction, travelled);
     }
-    // Below the ground the atmosphere is not defined: the band model's bottom layer has the
-    // ground's index throughout, so such rays go straight there too.
-    if (origin.y < -ground_slack(origin)) return std::nullopt;
-    // So far above the ground (beyond any scene mirage follows) the index is flat to far
-    // below a double's precision: straight.
-    if (origin.y > kMaxHeight) return std::nullopt;
-    if (origin.y <= 0.0 && direction.y <= 0.0) return std::nullopt;
-    const double hl = std::hypot(direction.x, direction.z);
-    if (hl < kVerticalSin) return std::nullopt;
-    const double bend =
-        largest_bend(settings.profile, std::max(origin.y, 0.0), hl, direction.y > 0.0);
-    if (bend <= 0.5 * settings.tolerance_rad) return std::nullopt;
-    return sample_curved_path(settings, origin, direction, travelled);
+    CurvedPath cp;
+    if (!near_surfaces_path(settings, nullptr, origin, direction, travelled, cp))
+        return std::nullopt;
+    return cp;
+}
+
+std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const SceneAccel& accel,
+                                      const glm::dvec3& origin, const glm::dvec3& direction,
+                                      double travelled) {
+    if (settings.sampling == PathSampling::Reference) {
+        return curved_path(settings, origin, direction, travelled);
+    }
+    CurvedPath cp;
+    if (!near_surfaces_path(settings, &accel, origin, direction, travelled, cp))
+        return std::nullopt;
+    return cp;
 }
 
 PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin, const CurvedPath& cp) {
@@ -121,9 +391,18 @@ CurvedPropagator::CurvedPropagator(const CurvedSettings& settings) : settings_(s
 }
 
 PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& start) const {
-    const auto cp = curved_path(settings_, start.origin, start.direction, start.travelled);
-    if (!cp) return straight_.propagate(accel, start);
-    return march_curved_path(accel, start.origin, *cp);
+    if (settings_.sampling == PathSampling::Reference) {
+        const auto cp = curved_path(settings_, start.origin, start.direction, start.travelled);
+        if (!cp) return straight_.propagate(accel, start);
+        return march_curved_path(accel, start.origin, *cp);
+    }
+    // One path per thread, its storage reused from ray to ray.
+    thread_local CurvedPath cp;
+    if (!near_surfaces_path(settings_, &accel, start.origin, start.direction, start.travelled,
+                            cp)) {
+        return straight_.propagate(accel, start);
+    }
+    return march_curved_path(accel, start.origin, cp);
 }
 
 ScanlinePropagator::ScanlinePropagator(const CurvedSettings& settings, std::vector<Row> rows)

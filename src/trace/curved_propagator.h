@@ -16,10 +16,26 @@
 
 namespace mirage {
 
+/// How a ray's exact path is sampled.
+enum class PathSampling {
+    /// To the tolerance wherever the ray may meet a surface (near the boxes of the scene's
+    /// bounded objects, at the ground point on a ground plane), coarsely elsewhere, by halving
+    /// on a grid (sample_path_near): the first hits are those of the same sampler told
+    /// nothing of the scene, which keeps the tolerance everywhere.
+    NearSurfaces,
+    /// To the tolerance all along, by the sampler's galloping steps (sample_path): the
+    /// tracer before the sampling near surfaces, kept as the reference.
+    Reference,
+};
+
 struct CurvedSettings {
     Profile profile;             // heights in scene units, ground at y = 0 (see
                                  // profile_in_scene_units); ProfileKind::None: straight rays
     double tolerance_rad = 0.0;  // largest path error, as an angle seen from the eye, rad
+    PathSampling sampling = PathSampling::NearSurfaces;
+    // Where the camera rays start.  Rays from there share an index, by azimuth, of the boxes
+    // their vertical planes can cross (built once per scene and thread).
+    std::optional<glm::dvec3> eye = std::nullopt;
 };
 
 /// One ray's path in its vertical plane: the exact ray and its sampled polyline, and the
@@ -36,15 +52,24 @@ struct CurvedPath {
 /// a start below the ground (y < 0, or on it heading down), a (nearly) vertical ray, or any
 /// ray whose direction cannot turn by more than half the tolerance anywhere in the
 /// atmosphere (its straight line then keeps the tolerance everywhere).
+/// With NearSurfaces sampling and no scene, the path is sampled to the tolerance everywhere.
 std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm::dvec3& origin,
                                       const glm::dvec3& direction, double travelled);
+
+/// The same, sampled for the scene: with NearSurfaces, coarsely where the ray's vertical
+/// plane holds nothing the path can meet (in a scene with a plane other than the ground,
+/// everywhere to the tolerance).
+std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const SceneAccel& accel,
+                                      const glm::dvec3& origin, const glm::dvec3& direction,
+                                      double travelled);
 
 /// Marches `path` from `origin` through the scene, its vertical plane along path.heading.
 /// After the last sample the ray goes on straight: with the path's asymptotic (or cut) slope
 /// for a path that ends in the air, and along the exact path's tangent where it reaches the
 /// ground at y = 0 when no surface is there (a scene without a ground object: the ray goes
 /// on below it as through the band model's bottom layer).  An escaping ray's direction is
-/// the path's final direction, for the sky.
+/// the path's final direction, for the sky.  Segments marked clear (SampledPath::clear_length)
+/// are followed without testing them against the scene.
 PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin,
                           const CurvedPath& path);
 

@@ -12,6 +12,7 @@ PathHit StraightPropagator::propagate(const SceneAccel& accel, const RayStart& s
     PathHit path;
     path.direction = start.direction;
     path.segments = 1;
+    path.queries = 1;
     if (auto hit =
             accel.closest_hit(start.origin, start.direction, kMinIsectDepth, kPovBoundHuge)) {
         path.hit = true;
@@ -37,6 +38,7 @@ PolylineMarch::PolylineMarch(const SceneAccel& accel, const glm::dvec3& origin, 
 
 bool PolylineMarch::query(const glm::dvec3& direction, double length) {
     ++result_.segments;
+    ++result_.queries;
     // Start a little before the joint (but never inside the ignored first stretch of path)
     // and end a little after the next one.
     const double before = length_ == 0.0 ? 0.0 : joint_tolerance(point_);
@@ -69,6 +71,23 @@ bool PolylineMarch::segment_to(const glm::dvec3& to) {
         length_ += length;
     }
     return hit;
+}
+
+void PolylineMarch::skip_to(const glm::dvec3& to, double length) {
+    MIRAGE_CHECK(!done_);
+    MIRAGE_CHECK(std::isfinite(to.x) && std::isfinite(to.y) && std::isfinite(to.z));
+    MIRAGE_CHECK(length >= 0.0);
+    ++result_.segments;
+    point_ = to;
+    length_ += length;
+}
+
+void PolylineMarch::skip_ray(const glm::dvec3& direction) {
+    MIRAGE_CHECK(!done_);
+    MIRAGE_CHECK(std::abs(glm::length(direction) - 1.0) < 1e-9);
+    ++result_.segments;
+    result_.direction = direction;
+    done_ = true;
 }
 
 bool PolylineMarch::ray(const glm::dvec3& direction) {

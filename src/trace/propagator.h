@@ -34,6 +34,7 @@ struct PathHit {
                                 // direction when the ray escapes (sky lookup)
     double length = 0.0;        // path length from the start to the hit (when hit)
     int segments = 0;           // straight segments followed (statistics)
+    int queries = 0;            // of them, those tested against the scene (statistics)
 };
 
 /// Follows a ray from `start.origin` along unit `start.direction` through the scene, possibly
@@ -77,10 +78,19 @@ class PolylineMarch {
     /// zero length is skipped.  Must not be called once done.
     bool segment_to(const glm::dvec3& to);
 
+    /// Moves to `to` along a stretch of path known to meet nothing, without testing it
+    /// against the scene; `length` is the stretch's path length.  Must not be called once
+    /// done.
+    void skip_to(const glm::dvec3& to, double length);
+
     /// Follows a last straight ray from the current point along unit `direction` to
     /// infinity; the march is done afterwards, hit or not (then `result().direction` is
     /// `direction`, for the sky).
     bool ray(const glm::dvec3& direction);
+
+    /// The same for a last ray known to meet nothing: not tested; the march is done, without
+    /// a hit, its direction `direction`.
+    void skip_ray(const glm::dvec3& direction);
 
     bool done() const { return done_; }
     const PathHit& result() const { return result_; }

@@ -1,5 +1,6 @@
 #include "trace/render.h"
 
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -47,10 +48,22 @@ class ProgressBar {
     int shown_ = -1;
 };
 
+/// Processor time of the calling thread, seconds.
+double thread_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 }  // namespace
 
 double RenderStats::segments_per_ray() const {
     return rays() > 0 ? static_cast<double>(counters.segments) / static_cast<double>(rays()) : 0.0;
+}
+
+double RenderStats::queries_per_ray() const {
+    return rays() > 0 ? static_cast<double>(counters.segment_queries) / static_cast<double>(rays())
+                      : 0.0;
 }
 
 double RenderStats::mrays_per_second() const {
@@ -98,12 +111,14 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
     RenderResult result;
     result.image = Image(settings.width, settings.height);
     std::vector<TraceCounters> counters(threads);
+    std::vector<double> cpu(threads, 0.0);
     std::atomic<int> next_tile{0};
     ProgressBar progress(settings.progress && isatty(fileno(stderr)) != 0, tile_count);
 
     // Every pixel depends on nothing but its position, so the tiles can go in any order on
     // any thread and the image is the same.
     const auto work = [&](int thread) {
+        const double cpu_start = thread_cpu_seconds();
         TraceCounters& mine = counters[thread];
         for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
             const int x0 = (tile % tiles_x) * settings.tile_size;
@@ -129,6 +144,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
             }
             progress.advance();
         }
+        cpu[thread] = thread_cpu_seconds() - cpu_start;
     };
     std::vector<std::thread> pool;
     pool.reserve(threads - 1);
@@ -140,6 +156,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.stats.threads = threads;
     for (const auto& c : counters) result.stats.counters.add(c);
+    for (const double c : cpu) result.stats.cpu_seconds += c;
     return result;
 }
 
@@ -155,8 +172,9 @@ std::string format_stats(const RenderStats& stats, int width, int height) {
     out << width << "x" << height << ": " << stats.rays() << " rays (" << stats.counters.camera_rays
         << " camera, " << stats.counters.reflected_rays << " reflected) + "
         << stats.counters.shadow_rays << " shadow, " << stats.segments_per_ray()
-        << " segments/ray, " << stats.seconds << " s, " << stats.mrays_per_second()
-        << " Mrays/s on " << stats.threads << " thread" << (stats.threads == 1 ? "" : "s");
+        << " segments/ray, " << stats.queries_per_ray() << " tested/ray, " << stats.seconds
+        << " s, " << stats.cpu_seconds << " s CPU, " << stats.mrays_per_second() << " Mrays/s on "
+        << stats.threads << " thread" << (stats.threads == 1 ? "" : "s");
     return out.str();
 }
 

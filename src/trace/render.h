@@ -26,14 +26,18 @@ struct RenderSettings {
 /// What a render did and how fast.
 struct RenderStats {
     TraceCounters counters;
-    int threads = 0;       // threads used
-    double seconds = 0.0;  // wall-clock time of the tracing
+    int threads = 0;           // threads used
+    double seconds = 0.0;      // wall-clock time of the tracing
+    double cpu_seconds = 0.0;  // processor time of the tracing threads, summed (a measure that
+                               // other jobs on the machine disturb less than the wall clock)
     /// Camera and reflected rays: the rays that went through the propagator.
     std::uint64_t rays() const { return counters.camera_rays + counters.reflected_rays; }
     /// Propagated rays plus shadow rays.
     std::uint64_t all_rays() const { return rays() + counters.shadow_rays; }
     /// Straight segments per propagated ray (1 for straight rays).
     double segments_per_ray() const;
+    /// Of them, those tested against the scene, per propagated ray.
+    double queries_per_ray() const;
     /// Millions of rays (propagated and shadow) per second of wall-clock time.
     double mrays_per_second() const;
 };
@@ -58,7 +62,8 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
 /// Renders with straight rays.
 Result<RenderResult> render(const Scene& scene, const RenderSettings& settings);
 
-/// A one-line summary: size, rays, segments per ray, seconds, Mrays/s, threads.
+/// A one-line summary: size, rays, segments per ray (and tested per ray), seconds (wall and
+/// processor), Mrays/s, threads.
 std::string format_stats(const RenderStats& stats, int width, int height);
 
 }  // namespace mirage

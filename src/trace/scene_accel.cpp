@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <limits>
 
 #include "util/check.h"
@@ -23,7 +24,9 @@ inline bool better(double t, int primitive, double best_t, int best_primitive) {
 }  // namespace
 
 Result<SceneAccel> SceneAccel::build(const Scene& scene) {
+    static std::atomic<std::uint64_t> next_id{1};
     SceneAccel accel;
+    accel.id_ = next_id++;
     const int n = static_cast<int>(scene.primitives.size());
     accel.shapes_.reserve(n);
     accel.casts_shadow_.reserve(n);
@@ -68,8 +71,13 @@ Result<SceneAccel> SceneAccel::build(const Scene& scene) {
             accel.finite_bounds_.extend(boxes.back());
         } else {
             accel.unbounded_items_.push_back(static_cast<int>(k));
-            if (accel.items_[k].primitive >= 0)
-                accel.unbounded_.push_back(accel.items_[k].primitive);
+            const int prim = accel.items_[k].primitive;
+            if (prim >= 0) accel.unbounded_.push_back(prim);
+            const PreparedShape* shape = prim >= 0 ? &accel.shapes_[prim] : nullptr;
+            const bool ground = shape && shape->kind == ShapeKind::Plane &&
+                                shape->normal.x == 0.0 && shape->normal.z == 0.0 &&
+                                shape->pov_distance == 0.0;
+            (ground ? accel.ground_plane_ : accel.unbounded_elsewhere_) = true;
         }
     }
     if (!finite.empty()) {
@@ -77,6 +85,7 @@ Result<SceneAccel> SceneAccel::build(const Scene& scene) {
         accel.build_node(finite, 0, static_cast<int>(finite.size()), 0, boxes, centres);
         accel.order_ = finite;
     }
+    accel.boxes_ = std::move(boxes);
     return accel;
 }
 
@@ -274,6 +283,83 @@ std::optional<SurfaceHit> SceneAccel::closest_unbounded_hit(const glm::dvec3& or
     hit.point = origin + best.hit.t * direction;
     hit.normal = shape_normal(shapes_[best.primitive], hit.point, best.hit);
     return hit;
+}
+
+namespace {
+
+/// Where the line origin + dz heading (x and z) lies within the box's x and z ranges: [p, q],
+/// empty when p > q.  A line in a face's plane (0 * infinity = NaN) counts as inside.
+inline void footprint(const Aabb& box, double ox, double oz, double inv_x, double inv_z, double& p,
+                      double& q) {
+    p = -std::numeric_limits<double>::infinity();
+    q = std::numeric_limits<double>::infinity();
+    const double x0 = (box.lo.x - ox) * inv_x, x1 = (box.hi.x - ox) * inv_x;
+    const double z0 = (box.lo.z - oz) * inv_z, z1 = (box.hi.z - oz) * inv_z;
+    for (auto [t0, t1] : {std::pair{x0, x1}, std::pair{z0, z1}}) {
+        if (t0 > t1) std::swap(t0, t1);
+        if (t0 > p) p = t0;
+        if (t1 < q) q = t1;
+    }
+}
+
+}  // namespace
+
+void SceneAccel::plane_crossings(const glm::dvec3& origin, const glm::dvec2& heading,
+                                 std::vector<Crossing>& out) const {
+    if (nodes_.empty()) return;
+    const double inv_x = 1.0 / heading.x, inv_z = 1.0 / heading.y;
+    auto crossing = [&](const Aabb& box, double& p, double& q) {
+        footprint(box, origin.x, origin.z, inv_x, inv_z, p, q);
+        p = std::max(p, 0.0);
+        return p <= q;
+    };
+    std::array<int, kMaxDepth + 8> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        double p = 0.0, q = 0.0;
+        if (!crossing(node.box, p, q)) continue;
+        if (node.count > 0) {
+            for (int k = node.first; k < node.first + node.count; ++k) {
+                const Aabb& box = boxes_[order_[k]];
+                if (crossing(box, p, q)) out.push_back({p, q, box.lo.y, box.hi.y});
+            }
+            continue;
+        }
+        MIRAGE_CHECK(top + 2 <= static_cast<int>(stack.size()));
+        stack[top++] = node.first;
+        stack[top++] = static_cast<int>(&node - nodes_.data()) + 1;
+    }
+}
+
+bool SceneAccel::region_may_meet(const glm::dvec3& origin, const glm::dvec2& heading,
+                                 const PathRegion& region) const {
+    if (nodes_.empty()) return false;
+    const double inv_x = 1.0 / heading.x, inv_z = 1.0 / heading.y;
+    const RegionTest test(region);
+    auto meets = [&](const Aabb& box) {
+        double p = 0.0, q = 0.0;
+        footprint(box, origin.x, origin.z, inv_x, inv_z, p, q);
+        return p <= q && test.meets(p, q, box.lo.y, box.hi.y);
+    };
+    std::array<int, kMaxDepth + 8> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        if (!meets(node.box)) continue;
+        if (node.count > 0) {
+            for (int k = node.first; k < node.first + node.count; ++k) {
+                if (meets(boxes_[order_[k]])) return true;
+            }
+            continue;
+        }
+        MIRAGE_CHECK(top + 2 <= static_cast<int>(stack.size()));
+        stack[top++] = node.first;
+        stack[top++] = static_cast<int>(&node - nodes_.data()) + 1;
+    }
+    return false;
 }
 
 bool SceneAccel::any_shadow_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,

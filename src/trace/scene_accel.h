@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "atmosphere/sampler.h"
 #include "scene/scene.h"
 #include "trace/bounds.h"
 #include "trace/csg.h"
@@ -49,6 +50,38 @@ class SceneAccel {
     std::optional<SurfaceHit> closest_unbounded_hit(const glm::dvec3& origin,
                                                     const glm::dvec3& direction, double t_min,
                                                     double t_max) const;
+
+    /// Where a vertical plane crosses the box of a finite primitive: the plane through
+    /// `origin` along the unit horizontal `heading` (x, z); dz is measured from origin along
+    /// heading, y is the world's.
+    struct Crossing {
+        double dz_lo, dz_hi;  // where the plane's line is within the box's x and z ranges
+        double y_lo, y_hi;    // the box's heights
+    };
+
+    /// The crossings of the boxes of the finite primitives at dz >= 0, in no particular order
+    /// (appended to `out`).  Thread-safe.
+    void plane_crossings(const glm::dvec3& origin, const glm::dvec2& heading,
+                         std::vector<Crossing>& out) const;
+
+    /// Whether the box of a finite primitive meets a region of a vertical plane (as
+    /// plane_crossings and region_meets_rectangle would say).  Thread-safe.
+    bool region_may_meet(const glm::dvec3& origin, const glm::dvec2& heading,
+                         const PathRegion& region) const;
+
+    /// Whether a plane covers the ground, y = 0 (with normal +y or -y).
+    bool has_ground_plane() const { return ground_plane_; }
+    /// Whether an unbounded primitive other than a ground plane is in the scene (a plane
+    /// elsewhere: it may be met anywhere).
+    bool unbounded_elsewhere() const { return unbounded_elsewhere_; }
+
+    /// A number no other built SceneAccel has (a copy keeps it: it holds the same scene).
+    std::uint64_t id() const { return id_; }
+    /// The hierarchy's items (the primitives of their own and the compound objects, CSG and
+    /// the like) and item k's box as the hierarchy holds it (padded; unbounded for planes,
+    /// empty for an object with no surface).
+    int box_count() const { return static_cast<int>(boxes_.size()); }
+    const Aabb& item_box(int k) const { return boxes_[k]; }
 
     int primitive_count() const { return static_cast<int>(shapes_.size()); }
     const PreparedShape& shape(int primitive) const { return shapes_[primitive]; }
@@ -94,7 +127,11 @@ class SceneAccel {
     std::vector<int> order_;            // finite items in leaf order
     std::vector<int> unbounded_items_;  // indices into items_
     std::vector<int> unbounded_;
+    std::vector<Aabb> boxes_;  // per item, as the hierarchy holds it (padded)
     Aabb finite_bounds_;
+    bool ground_plane_ = false;
+    bool unbounded_elsewhere_ = false;
+    std::uint64_t id_ = 0;
 };
 
 }  // namespace mirage

@@ -61,6 +61,7 @@ void TraceCounters::add(const TraceCounters& o) {
     reflected_rays += o.reflected_rays;
     shadow_rays += o.shadow_rays;
     segments += o.segments;
+    segment_queries += o.segment_queries;
     trace_level_cutoffs += o.trace_level_cutoffs;
 }
 
@@ -124,6 +125,7 @@ glm::dvec3 Shader::trace_ray(const RayStart& start, double weight, int level,
     if (level > 0) ++counters.reflected_rays;
     const PathHit path = propagator_->propagate(*accel_, start);
     counters.segments += static_cast<std::uint64_t>(path.segments);
+    counters.segment_queries += static_cast<std::uint64_t>(path.queries);
     return shade(path, weight, level + 1, counters, start.travelled + path.length);
 }
 

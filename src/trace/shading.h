@@ -29,6 +29,7 @@ struct TraceCounters {
     std::uint64_t reflected_rays = 0;       // reflected rays traced (not cut off)
     std::uint64_t shadow_rays = 0;          // straight rays toward lights
     std::uint64_t segments = 0;             // straight segments of camera and reflected rays
+    std::uint64_t segment_queries = 0;      // of them, those tested against the scene
     std::uint64_t trace_level_cutoffs = 0;  // reflections not traced: max_trace_level reached
     void add(const TraceCounters& other);
 };

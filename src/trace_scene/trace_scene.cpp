@@ -95,6 +95,8 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     CurvedSettings curved;
     curved.profile = profile;
     curved.tolerance_rad = report.tolerance_px * report.pixel_rad;
+    if (opt.reference_sampling) curved.sampling = PathSampling::Reference;
+    curved.eye = scene.camera.location;
     std::unique_ptr<Propagator> propagator;
     if (opt.scanline_paths) {
         // Refused for a tilted camera even without an atmosphere: the option asks for it.

@@ -29,6 +29,7 @@ struct TraceOptions {
     int threads = 0;                         // worker threads; 0 = all cores
     bool scanline_paths = false;             // one path per image row (level camera only)
     bool atmosphere = true;                  // false: straight rays whatever the scene declares
+    bool reference_sampling = false;         // per-ray paths sampled to the tolerance all along
     std::vector<std::string> library_paths;  // extra include directories, searched first
     bool progress = true;                    // progress bar on stderr when it is a terminal
 };

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "atmosphere/sampler.h"
 #include "util/csv.h"
@@ -232,6 +235,106 @@ TEST(ExactRay, DistanceToHeightInvertsTheHeight) {
     }
 }
 
+// Rays of every class: random start heights and elevations in every preset and in
+// stiff and tiny-eta1 inferior air.
+std::vector<ExactRay> random_rays(std::uint64_t seed, int per_profile) {
+    const Profile profiles[] = {*preset_profile("paper"),
+                                *preset_profile("hot-road"),
+                                *preset_profile("paper-superior"),
+                                *preset_profile("cold-sea"),
+                                Profile{ProfileKind::Inferior, 1.00026383734375, 5.93e-3, 1000.0},
+                                Profile{ProfileKind::Superior, 1.0003, 1e-6, 2.303}};
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<ExactRay> rays;
+    for (const Profile& p : profiles) {
+        for (int k = 0; k < per_profile; ++k) {
+            const double y0 = 0.02 * std::pow(1000.0, unit(rng));
+            const double mag = 1e-8 * std::pow(0.5e8, unit(rng));
+            const double elev = unit(rng) < 0.5 ? -mag : mag;
+            auto r = make_exact_ray(p, y0, M_PI / 2 - elev);
+            EXPECT_TRUE(r.ok());
+            if (r.ok()) rays.push_back(*r);
+        }
+    }
+    return rays;
+}
+
+TEST(ExactRay, StateAtIsTheHeightSlopeAndCurvatureTogether) {
+    std::set<RayClass> classes;
+    int near_escape = 0, far_escape = 0;
+    for (const ExactRay& r : random_rays(20261201, 300)) {
+        classes.insert(r.ray_class);
+        double reach = r.hits_ground ? r.dz_ground : 50.0 / std::max(r.c, 1e-3);
+        if (r.turn_kind == TurnKind::Ahead) reach = std::max(reach, 3.0 * r.dz_turn);
+        if (r.hits_ground) reach = r.dz_ground;
+        std::vector<double> at = {0.0, reach};
+        if (r.turn_kind == TurnKind::Ahead && r.dz_turn < reach) at.push_back(r.dz_turn);
+        for (int j = 1; j < 40; ++j) at.push_back(reach * std::pow(j / 40.0, 3.0));
+        for (const double dz : at) {
+            const PathState st = state_at(r, dz);
+            const double y = height_at(r, dz);
+            const double slope = slope_at(r, dz);
+            const bool on_ground = r.hits_ground && dz == r.dz_ground;
+            const double curvature = curvature_at_height(r, on_ground ? 0.0 : y);
+            const std::string what =
+                std::string(ray_class_name(r.ray_class)) + " y0=" + std::to_string(r.y0) +
+                " cos_i=" + std::to_string(r.cos_i) + " dz=" + std::to_string(dz);
+            // At the ground and turning points their closed forms: 0 and y_turn.
+            if (on_ground) {
+                EXPECT_EQ(st.y, 0.0) << what;
+                EXPECT_NEAR(y, 0.0, 1e-9 * (1.0 + r.y0)) << what;
+            } else if (r.turn_kind == TurnKind::Ahead && dz == r.dz_turn) {
+                EXPECT_EQ(st.y, r.y_turn) << what;
+                EXPECT_EQ(st.slope, 0.0) << what;
+                EXPECT_NEAR(y, r.y_turn, 1e-9 * (1.0 + r.y0)) << what;
+                continue;
+            } else {
+                // Heights to rounding of the path's own scale, slope and curvature relative.
+                EXPECT_NEAR(st.y, y, 1e-12 * (1.0 + r.y0 + std::fabs(y))) << what;
+            }
+            EXPECT_NEAR(st.slope, slope, 1e-9 * std::fabs(slope) + 1e-13) << what;
+            EXPECT_NEAR(st.curvature, curvature, 1e-9 * std::fabs(curvature) + 1e-300) << what;
+            if (r.ray_class == RayClass::SupEscapeUp || r.ray_class == RayClass::SupEscapeDown) {
+                const bool near_form = r.sg > 0 ? r.c * dz < 1.0 : r.q < 0.5 * r.P;
+                ++(near_form ? near_escape : far_escape);
+            }
+        }
+    }
+    // Every class, and both forms of the escaping rays.
+    EXPECT_EQ(classes.size(), 7u);
+    EXPECT_GT(near_escape, 100);
+    EXPECT_GT(far_escape, 100);
+}
+
+TEST(ExactRay, ARayFromItsOriginsConstantsIsTheRayOfItsAngle) {
+    for (const ExactRay& r : random_rays(42, 100)) {
+        auto o = make_exact_ray_origin(r.profile, r.y0);
+        ASSERT_TRUE(o.ok());
+        const ExactRay q = make_exact_ray(*o, r.cos_i, r.sin_i);
+        EXPECT_EQ(q.ray_class, r.ray_class);
+        EXPECT_EQ(q.turn_kind, r.turn_kind);
+        EXPECT_EQ(q.hits_ground, r.hits_ground);
+        EXPECT_NEAR(q.k2, r.k2, 1e-12 * (std::fabs(r.k2) + r.E * r.E));
+        if (r.turn_kind != TurnKind::None && r.turn_kind != TurnKind::BelowGround) {
+            EXPECT_NEAR(q.y_turn, r.y_turn, 1e-9 * (1.0 + r.y0));
+            EXPECT_NEAR(q.dz_turn, r.dz_turn, 1e-9 * std::fabs(r.dz_turn) + 1e-12);
+        }
+        if (r.hits_ground) {
+            EXPECT_NEAR(q.dz_ground, r.dz_ground, 1e-9 * r.dz_ground);
+        }
+        const double reach = r.hits_ground ? r.dz_ground : 20.0 / std::max(r.c, 1e-3);
+        for (int j = 0; j <= 10; ++j) {
+            const double dz = reach * j / 10.0;
+            EXPECT_NEAR(height_at(q, dz), height_at(r, dz), 1e-9 * (1.0 + r.y0))
+                << ray_class_name(r.ray_class) << " y0=" << r.y0 << " dz=" << dz;
+        }
+    }
+    EXPECT_FALSE(make_exact_ray_origin(*preset_profile("paper"), -1.0).ok());
+    EXPECT_EQ(make_exact_ray_origin(*preset_profile("paper"), 1e308).message(),
+              "start height y0 = 1e+308 m must be from 0 to 1e+09 m");
+}
+
 TEST(ExactRay, SuperiorRaysFromFarAboveTheGradientStayFiniteAndStraight) {
     // alpha y0 = 10^4: exp(-alpha y0) underflows to 0, and the escaping form once multiplied
     // that 0 by an exp(2x) that overflowed on the way down (NaN heights, endless samples).
@@ -257,6 +360,16 @@ TEST(ExactRay, SuperiorRaysFromFarAboveTheGradientStayFiniteAndStraight) {
         const SampledPath path = sample_path(*ray, st);
         EXPECT_LT(path.points.size(), 100u);
         EXPECT_EQ(path.end, PathEnd::Ground);
+        const SampledPath near = sample_path_near(*ray, st, nullptr);
+        EXPECT_LT(near.points.size(), 100u);
+        EXPECT_EQ(near.end, PathEnd::Ground);
+        for (int k = 0; k < 100; ++k) {
+            const double dz = ray->dz_ground * k / 100.0;
+            const PathState s = state_at(*ray, dz);
+            ASSERT_TRUE(std::isfinite(s.y) && std::isfinite(s.slope) && std::isfinite(s.curvature))
+                << "dz = " << dz;
+            EXPECT_NEAR(s.y, height_at(*ray, dz), 1e-9 * y0) << "dz = " << dz;
+        }
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include "atmosphere/profile.h"
 #include "layers/fit.h"
+#include "layers/outcome.h"
 #include "scene/camera.h"
 
 namespace mirage {
@@ -148,6 +149,42 @@ TEST(DesignLayers, FitsWithinTheTraceLevelCeiling) {
     double sum_with = 0.0, sum_without = 0.0;
     for (size_t i = 0; i < rays.size(); ++i) sum_with += with[i], sum_without += without[i];
     EXPECT_LT(sum_with, 0.2 * sum_without);
+}
+
+TEST(DesignErrors, TheHalfPlaneTraceAgreesWithTheIndependent3dTracer) {
+    // design_errors follows each camera ray in the half-plane of its azimuth; the 3D band
+    // tracer follows the same ray as POV-Ray does, in vectors, without the symmetry.
+    for (const char* atmosphere : {kPaper, "#declare Mirage_Preset = \"hot-road\";"}) {
+        auto ctx = compile_settings(options_for("errors2d", atmosphere, 24, 18));
+        ASSERT_TRUE(ctx.ok()) << ctx.message();
+        const CameraRays rays = camera_rays(*ctx, 1);
+        auto d = design_layers(*ctx, rays);
+        ASSERT_TRUE(d.ok()) << d.message();
+        const LayerStack rendered = ctx->rendered(d->stack);
+        const std::vector<double> err = design_errors(*ctx, rendered, rays);
+        for (size_t i = 0; i < rays.size(); ++i) {
+            Trace3dOptions to;
+            to.camera_y = ctx->eye_y;
+            const Trace3dOutcome t =
+                trace_layers_3d(rendered, ctx->camera.location, rays.direction[i], ctx->scene_box,
+                                ctx->layers_box, to);
+            const glm::dvec3& eye = ctx->camera.location;
+            const glm::dvec3& dir = rays.direction[i];
+            BandOutcome b;
+            b.ground = t.ground;
+            b.dz = t.ground ? std::hypot(t.scene_point.x - eye.x, t.scene_point.z - eye.z)
+                            : rays.exit_dz[i];
+            b.y = t.scene_point.y;
+            b.slope = t.scene_dir.y / std::hypot(t.scene_dir.x, t.scene_dir.z);
+            b.sky = t.sky;
+            b.final_slope = t.final_dir.y / std::hypot(t.final_dir.x, t.final_dir.z);
+            const BandOutcome e =
+                exact_outcome(ctx->profile, ctx->eye_y, rays.elevation[i], rays.exit_dz[i]);
+            const double want = outcome_error_rad(ctx->eye_y, e, b) / rays.pixel_rad[i];
+            EXPECT_NEAR(err[i], want, 1e-6 * (1.0 + want))
+                << atmosphere << " ray " << i << " elevation " << dir.y;
+        }
+    }
 }
 
 TEST(DesignLayers, UniformLayersAreBergersAndMeasured) {

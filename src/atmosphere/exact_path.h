@@ -1,0 +1,97 @@
+// One interface for exact ray paths in any stratified atmosphere: the exponential profiles'
+// closed forms (exact_ray.h, kept as they are) and the piecewise-quadratic engine for every
+// other profile (quadratic_path.h), behind two value types.
+//
+//   Atmosphere: the medium, n(y) over model heights (flattened ones with an Earth radius);
+//   ExactPath:  one ray in it, from (y0, i): height and slope at a distance, turning points,
+//               ground hit, straight end and the curvature bound max |y''| over a height
+//               interval, which is what the sampler's chord bound needs (y'' depends on the
+//               height only: y'' = (n^2)'(y) / (2 beta^2)).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "atmosphere/exact_ray.h"
+#include "atmosphere/profile.h"
+#include "atmosphere/quadratic_path.h"
+#include "atmosphere/quadratic_profile.h"
+#include "util/result.h"
+
+namespace mirage {
+
+class Atmosphere {
+  public:
+    /// Homogeneous air of index 1.
+    Atmosphere();
+    static Atmosphere exponential(const Profile& profile);
+    static Atmosphere quadratic(std::shared_ptr<const QuadraticProfile> profile);
+
+    /// The exponential profile, or nullptr.
+    const Profile* exponential_profile() const;
+    /// The piecewise-quadratic model, or nullptr.
+    const QuadraticProfile* quadratic_profile() const;
+
+    double n_sq(double y) const;
+    double n(double y) const;
+    /// Whether the index changes with height anywhere.
+    bool has_gradient() const;
+    /// The Earth radius of the flattened frame; 0 for flat ground.
+    double earth_radius() const;
+    /// The smallest and largest index over the heights [ya, yb] (ya <= yb, yb may be +inf).
+    void n_range(double ya, double yb, double& lo, double& hi) const;
+
+  private:
+    std::variant<Profile, std::shared_ptr<const QuadraticProfile>> model_;
+};
+
+class ExactPath {
+  public:
+    /// The ray from y0 >= 0 (model height) at angle i (rad, strictly between 0 and pi) from the
+    /// upward vertical.  A path through a quadratic profile refers to the atmosphere's model,
+    /// which must outlive it.
+    static Result<ExactPath> make(const Atmosphere& atmosphere, double y0, double i_rad);
+
+    double y0() const;
+    double i_rad() const;
+    double beta() const;
+    double eta_start() const;
+
+    double height_at(double dz) const;
+    double slope_at(double dz) const;
+    /// The largest |y''| of this path at any height in [ya, yb] (either order).
+    double curvature_bound(double ya, double yb) const;
+
+    /// Turning points ahead: how many (-1: infinitely many), the k-th, and the index of the
+    /// first at or after dz (-1 if none).
+    int turning_point_count() const;
+    TurningPoint turning_point(int k) const;
+    int first_turning_point_after(double dz) const;
+
+    bool hits_ground() const;
+    double dz_ground() const;  // +inf when never
+    /// No index gradient at all: one straight line.
+    bool straight() const;
+    /// The slope the path ends with when it never reaches the ground and is not trapped; NaN
+    /// otherwise.
+    double asymptotic_slope() const;
+    /// A bound on how far the path beyond dz strays from the line through its point at dz with
+    /// the asymptotic slope; +inf when it has no asymptote or dz lies before its last turn.
+    double asymptote_departure(double dz) const;
+
+    PathFate fate() const;
+    /// The class name: the reference's (inf_turn, sup_trapped_up, ...) for the exponential
+    /// profiles, the fate (ground, escape, ducted, level, straight) otherwise.
+    std::string class_name() const;
+
+    const ExactRay* exponential() const { return std::get_if<ExactRay>(&path_); }
+    const QuadraticPath* quadratic() const { return std::get_if<QuadraticPath>(&path_); }
+
+  private:
+    explicit ExactPath(ExactRay ray) : path_(std::move(ray)) {}
+    explicit ExactPath(QuadraticPath path) : path_(std::move(path)) {}
+    std::variant<ExactRay, QuadraticPath> path_;
+};
+
+}  // namespace mirage

@@ -1,0 +1,409 @@
+#include "atmosphere/general_profile.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "util/check.h"
+#include "util/format.h"
+
+namespace mirage {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double std_normal_cdf(double t) { return 0.5 * std::erfc(-t / std::sqrt(2.0)); }
+double std_normal_pdf(double t) { return std::exp(-0.5 * t * t) / std::sqrt(2.0 * M_PI); }
+
+// The inversion's ramp R(y) and its slope (see the header).
+double ramp(const Inversion& v, double y) {
+    const double w = v.top_m - v.bottom_m;
+    if (v.smoothing_m == 0.0) return std::clamp((y - v.bottom_m) / w, 0.0, 1.0);
+    const double s = v.smoothing_m;
+    auto F = [&](double x) { return x * std_normal_cdf(x / s) + s * std_normal_pdf(x / s); };
+    return (F(y - v.bottom_m) - F(y - v.top_m)) / w;
+}
+
+double ramp_slope(const Inversion& v, double y, int side) {
+    const double w = v.top_m - v.bottom_m;
+    if (v.smoothing_m == 0.0) {
+        const bool inside =
+            side > 0 ? (y >= v.bottom_m && y < v.top_m) : (y > v.bottom_m && y <= v.top_m);
+        return inside ? 1.0 / w : 0.0;
+    }
+    const double s = v.smoothing_m;
+    return (std_normal_cdf((y - v.bottom_m) / s) - std_normal_cdf((y - v.top_m) / s)) / w;
+}
+
+// Gauss-Legendre, 8 points on [-1, 1].
+constexpr double kGLx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                            0.9602898564975363};
+constexpr double kGLw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                            0.1012285362903763};
+
+template <class F>
+double gauss8(const F& f, double a, double b) {
+    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    double s = 0.0;
+    for (int k = 0; k < 4; ++k) s += kGLw[k] * (f(c - h * kGLx[k]) + f(c + h * kGLx[k]));
+    return s * h;
+}
+
+// int_0^y dy' / T(y'), tabulated on cells that 8-point Gauss-Legendre integrates to rounding,
+// split at the temperature's breakpoints; T(top) above the top.
+class InverseTemperatureIntegral {
+  public:
+    InverseTemperatureIntegral(std::function<double(double)> T, std::vector<double> edges)
+        : T_(std::move(T)), top_(edges.back()) {
+        auto inv = [&](double y) { return 1.0 / T_(y); };
+        double cum = 0.0;
+        for (size_t k = 0; k + 1 < edges.size(); ++k) {
+            std::vector<std::pair<double, double>> stack{{edges[k], edges[k + 1]}};
+            while (!stack.empty()) {
+                auto [a, b] = stack.back();
+                stack.pop_back();
+                const double m = 0.5 * (a + b);
+                const double whole = gauss8(inv, a, b);
+                const double halves = gauss8(inv, a, m) + gauss8(inv, m, b);
+                if (std::fabs(whole - halves) <= 1e-15 * std::fabs(halves) || b - a < 1e-9) {
+                    starts_.push_back(a);
+                    cum_.push_back(cum);
+                    cum += halves;
+                    continue;
+                }
+                stack.push_back({m, b});
+                stack.push_back({a, m});
+            }
+        }
+        starts_.push_back(top_);
+        cum_.push_back(cum);
+        inv_top_ = 1.0 / T_(top_);
+    }
+
+    double operator()(double y) const {
+        if (y <= 0.0) return 0.0;
+        if (y >= top_) return cum_.back() + (y - top_) * inv_top_;
+        const size_t j = std::upper_bound(starts_.begin(), starts_.end(), y) - starts_.begin() - 1;
+        return cum_[j] + gauss8([&](double s) { return 1.0 / T_(s); }, starts_[j], y);
+    }
+
+  private:
+    std::function<double(double)> T_;
+    double top_;
+    double inv_top_ = 0.0;
+    std::vector<double> starts_, cum_;
+};
+
+std::vector<double> sorted_edges(std::vector<double> breakpoints, double top) {
+    std::vector<double> e{0.0};
+    for (double b : breakpoints)
+        if (b > 0.0 && b < top) e.push_back(b);
+    e.push_back(top);
+    std::sort(e.begin(), e.end());
+    e.erase(std::unique(e.begin(), e.end()), e.end());
+    return e;
+}
+
+Status validate_column(const AirColumn& c) {
+    if (!(std::isfinite(c.ground_temperature_k) && c.ground_temperature_k > 0.0))
+        return make_error("air temperature " + shortest(c.ground_temperature_k - 273.15) +
+                          " degC must be finite and above absolute zero");
+    if (!std::isfinite(c.lapse_k_per_m))
+        return make_error("lapse rate " + shortest(1000.0 * c.lapse_k_per_m) +
+                          " K/km must be finite");
+    for (const auto& l : c.layers) {
+        if (!std::isfinite(l.delta_k))
+            return make_error("surface layer: temperature excess " + shortest(l.delta_k) +
+                              " K must be finite");
+        if (!(std::isfinite(l.scale_m) && l.scale_m > 0.0))
+            return make_error("surface layer: scale height " + shortest(l.scale_m) +
+                              " m must be > 0");
+    }
+    for (const auto& v : c.inversions) {
+        if (!(std::isfinite(v.bottom_m) && v.bottom_m >= 0.0))
+            return make_error("inversion: bottom " + shortest(v.bottom_m) + " m must be >= 0");
+        if (!(std::isfinite(v.top_m) && v.top_m > v.bottom_m))
+            return make_error("inversion: top " + shortest(v.top_m) +
+                              " m must lie above its bottom " + shortest(v.bottom_m) + " m");
+        if (!std::isfinite(v.delta_k))
+            return make_error("inversion: temperature rise " + shortest(v.delta_k) +
+                              " K must be finite");
+        if (!(std::isfinite(v.smoothing_m) && v.smoothing_m >= 0.0))
+            return make_error("inversion: smoothing " + shortest(v.smoothing_m) +
+                              " m must be >= 0");
+    }
+    return Ok{};
+}
+
+// Height above which the column's features have died away (for the default top).
+double column_features_top(const AirColumn& c) {
+    double h = 0.0;
+    for (const auto& l : c.layers) h = std::max(h, 40.0 * l.scale_m);
+    for (const auto& v : c.inversions) h = std::max(h, v.top_m + 8.0 * v.smoothing_m);
+    return h;
+}
+
+}  // namespace
+
+double column_temperature(const AirColumn& c, double y) {
+    double T = c.ground_temperature_k - c.lapse_k_per_m * y;
+    for (const auto& l : c.layers) T += l.delta_k * std::exp(-y / l.scale_m);
+    for (const auto& v : c.inversions) T += v.delta_k * ramp(v, y);
+    return T;
+}
+
+double column_temperature_slope(const AirColumn& c, double y, int side) {
+    double s = -c.lapse_k_per_m;
+    for (const auto& l : c.layers) s -= l.delta_k / l.scale_m * std::exp(-y / l.scale_m);
+    for (const auto& v : c.inversions) s += v.delta_k * ramp_slope(v, y, side);
+    return s;
+}
+
+double flattened_height(double h, double R) { return R > 0.0 ? R * std::log1p(h / R) : h; }
+
+double height_above_sphere(double y, double R) { return R > 0.0 ? R * std::expm1(y / R) : y; }
+
+ProfileFunction flatten(const ProfileFunction& f, double R, double extension_m) {
+    MIRAGE_CHECK(R > 0.0);
+    ProfileFunction g;
+    const double top = f.top;
+    const double n0_sq = f.n0_sq;
+    auto ex = f.excess;
+    auto sl = f.excess_slope;
+    g.n0_sq = n0_sq;
+    g.earth_radius = R;
+    g.top = flattened_height(top + extension_m, R);
+    g.breakpoints.push_back(flattened_height(top, R));
+    for (double b : f.breakpoints) g.breakpoints.push_back(flattened_height(b, R));
+    // n*^2 - n0^2 = (n0^2 + e(h)) exp(2y/R) - n0^2 = e(h) exp(2y/R) + n0^2 expm1(2y/R).
+    g.excess = [=](double y) {
+        const double h = std::min(height_above_sphere(y, R), top);
+        return ex(h) * std::exp(2.0 * y / R) + n0_sq * std::expm1(2.0 * y / R);
+    };
+    g.excess_slope = [=](double y, int side) {
+        const double h_true = height_above_sphere(y, R);
+        const double h = std::min(h_true, top);
+        const bool above = side > 0 ? h_true >= top : h_true > top;
+        const double dh_dy = std::exp(y / R);
+        const double e2 = std::exp(2.0 * y / R);
+        const double de = above ? 0.0 : sl(h, side) * dh_dy;
+        return de * e2 + (n0_sq + ex(h)) * (2.0 / R) * e2;
+    };
+    return g;
+}
+
+Result<AirModel> make_air_model(const AirSpec& spec) {
+    if (auto s = validate(spec.index); !s) return s.error();
+    if (!(std::isfinite(spec.ground_pressure_pa) && spec.ground_pressure_pa > 0.0))
+        return make_error("pressure " + shortest(spec.ground_pressure_pa / 100.0) +
+                          " hPa must be finite and > 0");
+    if (!(spec.relative_humidity >= 0.0 && spec.relative_humidity <= 1.0))
+        return make_error("relative humidity " + shortest(100.0 * spec.relative_humidity) +
+                          " % must lie in [0, 100]");
+    if (!(std::isfinite(spec.top_m) && spec.top_m >= 0.0))
+        return make_error("profile top " + shortest(spec.top_m) + " m must be finite and > 0");
+    if (!(std::isfinite(spec.earth_radius_m) && spec.earth_radius_m >= 0.0))
+        return make_error("Earth radius " + shortest(spec.earth_radius_m) +
+                          " m must be finite and >= 0 (0: flat)");
+    AirModel model;
+    ProfileFunction& f = model.physical;
+    f.earth_radius = 0.0;
+
+    if (spec.source == AirSpec::Source::Exponential) {
+        const Profile p = spec.exponential;
+        if (auto s = validate(p); !s) return s.error();
+        const int sign = profile_sign(p);
+        const double a = sign * p.eta1 * p.eta1;
+        f.n0_sq = p.eta0 * p.eta0;
+        f.excess = [=](double y) { return a * -std::expm1(-p.alpha * y); };
+        f.excess_slope = [=](double y, int) { return a * p.alpha * std::exp(-p.alpha * y); };
+        // Above the top n^2 changes by less than 1e-17 more.
+        const double natural =
+            p.eta1 > 0.0 ? std::max(1.0, std::log(std::fabs(a) / 1e-17) / p.alpha) : 1.0;
+        f.top = spec.top_m > 0.0 ? spec.top_m : natural;
+        model.refractivity = [=](double y) {
+            return std::sqrt(f.n0_sq + a * -std::expm1(-p.alpha * y)) - 1.0;
+        };
+        model.top = f.top;
+        return model;
+    }
+
+    std::function<double(double)> T, Tslope_r, Tslope_l, lnp, lnp_slope, rh, rh_slope;
+    std::vector<double> breaks;
+    double top = spec.top_m;
+    bool have_pressure = false;
+    if (spec.source == AirSpec::Source::Column) {
+        const AirColumn c = spec.column;
+        if (auto s = validate_column(c); !s) return s.error();
+        if (top == 0.0) top = std::max(1000.0, 2.0 * column_features_top(c));
+        for (const auto& v : c.inversions) {
+            if (v.top_m >= top)
+                return make_error("inversion top " + shortest(v.top_m) +
+                                  " m must lie below the profile's top " + shortest(top) + " m");
+            if (v.smoothing_m == 0.0) {
+                breaks.push_back(v.bottom_m);
+                breaks.push_back(v.top_m);
+            }
+        }
+        T = [c](double y) { return column_temperature(c, y); };
+        Tslope_r = [c](double y) { return column_temperature_slope(c, y, +1); };
+        Tslope_l = [c](double y) { return column_temperature_slope(c, y, -1); };
+    } else {
+        const Sounding& s = spec.sounding;
+        if (s.height_m.size() < 2)
+            return make_error(s.source + ": a sounding needs at least 2 rows");
+        const double last = s.height_m.back();
+        if (top == 0.0) top = last;
+        if (top != last)
+            return make_error("profile top " + shortest(top) +
+                              " m: a sounding's profile ends at its last row, " + shortest(last) +
+                              " m");
+        if (s.kind == Sounding::Kind::Index) {
+            const double n0 = s.index.front();
+            std::vector<double> e;
+            for (double n : s.index) e.push_back((n - n0) * (n + n0));
+            auto sp =
+                std::make_shared<QuadraticSpline>(make_shape_preserving_spline(s.height_m, e));
+            f.n0_sq = n0 * n0;
+            f.excess = [sp](double y) { return sp->value(y); };
+            // The spline is C^1: one slope at every knot.
+            f.excess_slope = [sp](double y, int) { return sp->slope(y); };
+            f.breakpoints = sp->knots;
+            f.top = top;
+            model.refractivity = [sp, n0](double y) {
+                return std::sqrt(n0 * n0 + sp->value(y)) - 1.0;
+            };
+            model.top = top;
+            return model;
+        }
+        auto spT = std::make_shared<QuadraticSpline>(
+            make_shape_preserving_spline(s.height_m, s.temperature_k));
+        T = [spT](double y) { return spT->value(y); };
+        Tslope_r = [spT](double y) { return spT->slope(y); };
+        Tslope_l = Tslope_r;
+        breaks = spT->knots;
+        if (!s.pressure_pa.empty()) {
+            have_pressure = true;
+            std::vector<double> lp;
+            for (double p : s.pressure_pa) lp.push_back(std::log(p));
+            auto spP =
+                std::make_shared<QuadraticSpline>(make_shape_preserving_spline(s.height_m, lp));
+            lnp = [spP](double y) { return spP->value(y); };
+            lnp_slope = [spP](double y) { return spP->slope(y); };
+        }
+        if (!s.relative_humidity.empty()) {
+            auto spH = std::make_shared<QuadraticSpline>(
+                make_shape_preserving_spline(s.height_m, s.relative_humidity));
+            rh = [spH](double y) { return std::clamp(spH->value(y), 0.0, 1.0); };
+            rh_slope = [spH](double y) { return spH->slope(y); };
+        }
+    }
+    if (!rh) {
+        const double h = spec.relative_humidity;
+        rh = [h](double) { return h; };
+        rh_slope = [](double) { return 0.0; };
+    }
+    // The temperature must stay physical over the whole profile.
+    {
+        const auto edges = sorted_edges(breaks, top);
+        constexpr int kProbes = 4000;
+        for (int k = 0; k <= kProbes; ++k) {
+            const double y = top * k / kProbes;
+            const double t = T(y);
+            if (!(std::isfinite(t) && t > 0.0))
+                return make_error("the temperature falls to " + shortest(t - 273.15) + " degC at " +
+                                  sig(y, 6) + " m: the profile is not physical");
+        }
+        for (double y : edges)
+            if (!(T(y) > 0.0))
+                return make_error("the temperature falls to " + shortest(T(y) - 273.15) +
+                                  " degC at " + sig(y, 6) + " m: the profile is not physical");
+    }
+    // Pressure: given, hydrostatic or constant.
+    std::function<double(double)> p, p_slope;
+    if (have_pressure) {
+        p = [lnp](double y) { return std::exp(lnp(y)); };
+        p_slope = [lnp, lnp_slope](double y) { return std::exp(lnp(y)) * lnp_slope(y); };
+    } else if (spec.hydrostatic) {
+        auto I = std::make_shared<InverseTemperatureIntegral>(T, sorted_edges(breaks, top));
+        const double p0 = spec.ground_pressure_pa;
+        p = [I, p0](double y) { return p0 * std::exp(-kHydrostaticScale * (*I)(y)); };
+        p_slope = [I, p0, T](double y) {
+            return -p0 * std::exp(-kHydrostaticScale * (*I)(y)) * kHydrostaticScale / T(y);
+        };
+    } else {
+        const double p0 = spec.ground_pressure_pa;
+        p = [p0](double) { return p0; };
+        p_slope = [](double) { return 0.0; };
+    }
+    const IndexSettings index = spec.index;
+    auto m_of = [index](double t, double pr, double h) { return refractivity(index, {t, pr, h}); };
+    auto m_at = [=](double y) { return m_of(T(y), p(y), rh(y)); };
+    const double m0 = m_at(0.0);
+    f.n0_sq = (1.0 + m0) * (1.0 + m0);
+    f.top = top;
+    f.breakpoints = breaks;
+    f.excess = [=](double y) {
+        const double m = m_at(std::min(y, top));
+        return (m - m0) * (2.0 + m + m0);
+    };
+    f.excess_slope = [=](double y, int side) {
+        if (side > 0 ? y >= top : y > top) return 0.0;
+        const double t = T(y), pr = p(y), h = rh(y);
+        const double m = m_of(t, pr, h);
+        const double dT = side > 0 ? Tslope_r(y) : Tslope_l(y);
+        const double dp = p_slope(y);
+        double dm;
+        if (index.formula == IndexFormula::GladstoneDale) {
+            dm = m * (dp / pr - dT / t);
+        } else {
+            const double dt_step = 1e-3, dp_step = 1e-4 * pr, dh_step = 1e-4;
+            const double m_T =
+                (m_of(t + dt_step, pr, h) - m_of(t - dt_step, pr, h)) / (2.0 * dt_step);
+            const double m_p =
+                (m_of(t, pr + dp_step, h) - m_of(t, pr - dp_step, h)) / (2.0 * dp_step);
+            const double hl = std::max(0.0, h - dh_step), hh = std::min(1.0, h + dh_step);
+            const double m_h = hh > hl ? (m_of(t, pr, hh) - m_of(t, pr, hl)) / (hh - hl) : 0.0;
+            dm = m_T * dT + m_p * dp + m_h * rh_slope(y);
+        }
+        return 2.0 * (1.0 + m) * dm;
+    };
+    model.temperature_k = [T, top](double y) { return T(std::min(y, top)); };
+    model.pressure_pa = [p, top](double y) { return p(std::min(y, top)); };
+    model.refractivity = [m_at, top](double y) { return m_at(std::min(y, top)); };
+    model.top = top;
+    return model;
+}
+
+Result<std::shared_ptr<const QuadraticProfile>> fit_air(const AirSpec& spec,
+                                                        const FitSettings& settings,
+                                                        FitReport* report) {
+    auto model = make_air_model(spec);
+    if (!model) return model.error();
+    const double R = spec.earth_radius_m;
+    if (spec.source == AirSpec::Source::Sounding && spec.sounding.kind == Sounding::Kind::Index &&
+        R == 0.0) {
+        // The spline of n^2 is the model itself.
+        const auto& s = spec.sounding;
+        const double n0 = s.index.front();
+        std::vector<double> e;
+        for (double n : s.index) e.push_back((n - n0) * (n + n0));
+        const QuadraticSpline sp = make_shape_preserving_spline(s.height_m, e);
+        auto q = QuadraticProfile::make(sp.knots, sp.slopes, sp.curvatures, n0 * n0, 0.0);
+        if (!q) return q.error();
+        if (report) {
+            report->pieces = q->piece_count();
+            report->max_error_n = 0.0;
+            report->worst_height = 0.0;
+        }
+        return std::make_shared<const QuadraticProfile>(std::move(*q));
+    }
+    ProfileFunction f =
+        R > 0.0 ? flatten(model->physical, R, spec.earth_extension_m) : model->physical;
+    auto q = fit_quadratic_profile(f, settings, report);
+    if (!q) return q.error();
+    return std::make_shared<const QuadraticProfile>(std::move(*q));
+}
+
+}  // namespace mirage

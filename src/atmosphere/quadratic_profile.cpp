@@ -1,0 +1,436 @@
+#include "atmosphere/quadratic_profile.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "util/check.h"
+#include "util/format.h"
+
+namespace mirage {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Sparse table over `values`: level k holds the max (or min) of 2^k consecutive entries.
+std::vector<std::vector<double>> sparse_table(std::vector<double> values, bool take_max) {
+    std::vector<std::vector<double>> t;
+    t.push_back(std::move(values));
+    for (size_t len = 2; len <= t[0].size(); len *= 2) {
+        const auto& prev = t.back();
+        std::vector<double> level(t[0].size() - len + 1);
+        for (size_t i = 0; i < level.size(); ++i) {
+            const double a = prev[i], b = prev[i + len / 2];
+            level[i] = take_max ? std::max(a, b) : std::min(a, b);
+        }
+        t.push_back(std::move(level));
+    }
+    return t;
+}
+
+// The max (min) of entries l..r (inclusive, l <= r) of a sparse table.
+double query(const std::vector<std::vector<double>>& t, int l, int r, bool take_max) {
+    const int len = r - l + 1;
+    const int k = static_cast<int>(std::bit_width(static_cast<unsigned>(len))) - 1;
+    const double a = t[k][l], b = t[k][r - (1 << k) + 1];
+    return take_max ? std::max(a, b) : std::min(a, b);
+}
+
+// Smallest and largest of e + b u + c u^2 over [u1, u2].
+void quadratic_range(double e, double b, double c, double u1, double u2, double& lo, double& hi) {
+    auto v = [&](double u) { return e + (b + c * u) * u; };
+    lo = std::min(v(u1), v(u2));
+    hi = std::max(v(u1), v(u2));
+    if (c != 0.0) {
+        const double us = -b / (2.0 * c);
+        if (us > u1 && us < u2) {
+            lo = std::min(lo, v(us));
+            hi = std::max(hi, v(us));
+        }
+    }
+}
+
+}  // namespace
+
+Result<QuadraticProfile> QuadraticProfile::make(std::vector<double> knots,
+                                                std::vector<double> slopes,
+                                                std::vector<double> curvatures, double n0_sq,
+                                                double earth_radius) {
+    if (knots.size() < 2) return make_error("a quadratic profile needs at least two knots");
+    if (slopes.size() + 1 != knots.size() || curvatures.size() + 1 != knots.size())
+        return make_error("a quadratic profile needs one slope and one curvature per piece");
+    if (knots[0] != 0.0) return make_error("the first knot of a quadratic profile must be at 0 m");
+    if (!(std::isfinite(n0_sq) && n0_sq > 0.0))
+        return make_error("n^2 at the ground " + shortest(n0_sq) + " must be finite and > 0");
+    if (!(std::isfinite(earth_radius) && earth_radius >= 0.0))
+        return make_error("Earth radius " + shortest(earth_radius) + " m must be >= 0");
+    for (size_t j = 0; j + 1 < knots.size(); ++j) {
+        if (!(knots[j + 1] > knots[j]) || !std::isfinite(knots[j + 1]))
+            return make_error("knots of a quadratic profile must increase: " + shortest(knots[j]) +
+                              " m then " + shortest(knots[j + 1]) + " m");
+        if (!std::isfinite(slopes[j]) || !std::isfinite(curvatures[j]))
+            return make_error("piece " + std::to_string(j) +
+                              " of a quadratic profile is not finite");
+    }
+    QuadraticProfile p;
+    p.y_ = std::move(knots);
+    p.b_ = std::move(slopes);
+    p.c_ = std::move(curvatures);
+    p.n0_sq_ = n0_sq;
+    p.earth_radius_ = earth_radius;
+    const size_t m = p.b_.size();
+    p.e_.assign(m + 1, 0.0);
+    p.inc_.assign(m, 0.0);
+    p.end_slope_.assign(m, 0.0);
+    p.root_abs_c_.assign(m, 0.0);
+    for (size_t j = 0; j < m; ++j) {
+        const double h = p.y_[j + 1] - p.y_[j];
+        p.inc_[j] = (p.b_[j] + p.c_[j] * h) * h;
+        p.end_slope_[j] = p.b_[j] + 2.0 * p.c_[j] * h;
+        p.root_abs_c_[j] = std::sqrt(std::fabs(p.c_[j]));
+        p.e_[j + 1] = p.e_[j] + p.inc_[j];
+        if (p.b_[j] != 0.0 || p.c_[j] != 0.0) p.homogeneous_ = false;
+    }
+    p.build_tables();
+    double lo = 0.0, hi = 0.0;
+    p.excess_range(0.0, p.top(), lo, hi);
+    if (!(n0_sq + lo > 0.0))
+        return make_error("the quadratic profile's n^2 falls to " + shortest(n0_sq + lo) +
+                          ": it must stay positive");
+    return p;
+}
+
+void QuadraticProfile::build_tables() {
+    const int m = piece_count();
+    std::vector<double> ks(m + 1, 0.0), mins(m), maxs(m);
+    for (int j = 0; j <= m; ++j) {
+        double s = 0.0;
+        if (j < m) s = std::fabs(b_[j]);
+        if (j > 0) {
+            const double h = y_[j] - y_[j - 1];
+            s = std::max(s, std::fabs(b_[j - 1] + 2.0 * c_[j - 1] * h));
+        }
+        ks[j] = s;
+    }
+    for (int j = 0; j < m; ++j)
+        quadratic_range(e_[j], b_[j], c_[j], 0.0, y_[j + 1] - y_[j], mins[j], maxs[j]);
+    knot_slope_max_ = sparse_table(std::move(ks), true);
+    piece_min_ = sparse_table(std::move(mins), false);
+    piece_max_ = sparse_table(std::move(maxs), true);
+}
+
+int QuadraticProfile::piece_at(double y) const {
+    if (y < 0.0) return -1;
+    if (y >= y_.back()) return piece_count();
+    return static_cast<int>(std::upper_bound(y_.begin(), y_.end(), y) - y_.begin()) - 1;
+}
+
+double QuadraticProfile::excess(double y) const {
+    const int j = piece_at(y);
+    if (j < 0) return piece_value(0, y);
+    if (j >= piece_count()) return e_.back();
+    return piece_value(j, y - y_[j]);
+}
+
+double QuadraticProfile::n(double y) const { return std::sqrt(n_sq(y)); }
+
+double QuadraticProfile::slope(double y) const {
+    const int j = piece_at(y);
+    if (j < 0) return b_[0] + 2.0 * c_[0] * y;
+    if (j >= piece_count()) return 0.0;
+    return b_[j] + 2.0 * c_[j] * (y - y_[j]);
+}
+
+double QuadraticProfile::max_abs_slope(double ya, double yb) const {
+    int a = -1, b = -1;
+    return max_abs_slope(ya, yb, a, b);
+}
+
+double QuadraticProfile::max_abs_slope(double ya, double yb, int& hint_a, int& hint_b) const {
+    if (ya > yb) {
+        std::swap(ya, yb);
+        std::swap(hint_a, hint_b);
+    }
+    ya = std::max(ya, 0.0);
+    yb = std::max(yb, 0.0);
+    const int m = piece_count();
+    const int ja = hint_a = piece_at(ya, hint_a);
+    const int jb = hint_b = yb == ya ? ja : piece_at(yb, hint_b);
+    auto slope_in = [&](int j, double y) {
+        return j >= m ? 0.0 : b_[j] + 2.0 * c_[j] * (y - y_[j]);
+    };
+    double s = std::max(std::fabs(slope_in(ja, ya)), std::fabs(slope_in(jb, yb)));
+    if (jb > ja) s = std::max(s, query(knot_slope_max_, ja + 1, std::min(jb, m), true));
+    return s;
+}
+
+void QuadraticProfile::n_sq_range(double ya, double yb, double& lo, double& hi) const {
+    excess_range(ya, yb, lo, hi);
+    lo += n0_sq_;
+    hi += n0_sq_;
+}
+
+int QuadraticProfile::find_piece_reaching(int j, int dir, double level) const {
+    const int m = piece_count();
+    const auto& t = piece_min_;
+    const int levels = static_cast<int>(t.size());
+    if (dir > 0) {
+        if (j < 0) j = 0;
+        if (j >= m) return m;
+        if (t[0][j] <= level) return j;
+        int pos = j + 1;
+        for (int L = levels - 1; L >= 0; --L) {
+            const int len = 1 << L;
+            if (pos + len <= m && t[L][pos] > level) pos += len;
+        }
+        return pos;  // m when none
+    }
+    if (j >= m) j = m - 1;
+    if (j < 0) return -1;
+    if (t[0][j] <= level) return j;
+    int pos = j - 1;
+    for (int L = levels - 1; L >= 0; --L) {
+        const int len = 1 << L;
+        if (pos - len + 1 >= 0 && t[L][pos - len + 1] > level) pos -= len;
+    }
+    return pos;  // -1 when none
+}
+
+void QuadraticProfile::excess_range(double ya, double yb, double& lo, double& hi) const {
+    if (ya > yb) std::swap(ya, yb);
+    ya = std::max(ya, 0.0);
+    yb = std::max(yb, 0.0);
+    const int m = piece_count();
+    const int ja = piece_at(ya), jb = piece_at(yb);
+    lo = kInf;
+    hi = -kInf;
+    auto add = [&](double l, double h) {
+        lo = std::min(lo, l);
+        hi = std::max(hi, h);
+    };
+    auto partial = [&](int j, double y1, double y2) {
+        if (j >= m) {
+            add(e_.back(), e_.back());
+            return;
+        }
+        double l, h;
+        quadratic_range(e_[j], b_[j], c_[j], y1 - y_[j], y2 - y_[j], l, h);
+        add(l, h);
+    };
+    if (ja == jb) {
+        partial(ja, ya, yb);
+    } else {
+        partial(ja, ya, y_[ja + 1]);
+        if (jb >= m) {
+            add(e_.back(), e_.back());
+        } else {
+            partial(jb, y_[jb], yb);
+        }
+        const int last_full = std::min(jb, m) - 1;
+        if (last_full >= ja + 1) {
+            add(query(piece_min_, ja + 1, last_full, false),
+                query(piece_max_, ja + 1, last_full, true));
+        }
+    }
+}
+
+Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
+                                               const FitSettings& settings, FitReport* report) {
+    MIRAGE_CHECK(f.excess && f.excess_slope);
+    if (!(f.top > 0.0 && std::isfinite(f.top)))
+        return make_error("the profile's top " + shortest(f.top) + " m must be finite and > 0");
+    if (!(settings.tolerance_n > 0.0))
+        return make_error("fit tolerance " + shortest(settings.tolerance_n) + " must be > 0");
+    std::vector<double> edges{0.0};
+    for (double b : f.breakpoints) {
+        if (b > 0.0 && b < f.top) edges.push_back(b);
+    }
+    edges.push_back(f.top);
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+
+    std::vector<double> knots{0.0}, slopes, curvatures;
+    double worst = 0.0, worst_y = 0.0;
+    auto n_of = [&](double e) { return std::sqrt(f.n0_sq + e); };
+    // The largest error of the interval's two quadratics at the checked heights, in n.
+    struct Trial {
+        double err = 0.0, err_y = 0.0, s_mid = 0.0, c_left = 0.0, c_right = 0.0;
+        bool finite = true;
+    };
+    auto trial = [&](double a, double b, double fa, double sa, double fb, double sb) {
+        Trial t;
+        const double h = b - a, mid = a + 0.5 * h;
+        // Schumaker's midpoint knot: the slope there makes the two halves meet.
+        t.s_mid = 2.0 * (fb - fa) / h - 0.5 * (sa + sb);
+        t.c_left = (t.s_mid - sa) / h;
+        t.c_right = (sb - t.s_mid) / h;
+        const double f_mid = fa + (sa + t.c_left * 0.5 * h) * 0.5 * h;
+        t.finite = std::isfinite(t.s_mid) && std::isfinite(f_mid);
+        constexpr int kChecks = 12;
+        for (int side = 0; side < 2 && t.finite; ++side) {
+            for (int q = (side == 0 ? 1 : 0); q < kChecks; ++q) {
+                const double u = 0.5 * h * q / kChecks;
+                const double y = (side == 0 ? a : mid) + u;
+                const double fit = side == 0 ? fa + (sa + t.c_left * u) * u
+                                             : f_mid + (t.s_mid + t.c_right * u) * u;
+                const double truth = f.excess(y);
+                if (!std::isfinite(truth)) {
+                    t.finite = false;
+                    break;
+                }
+                const double dn = std::fabs(fit - truth) / (n_of(fit) + n_of(truth));
+                if (dn > t.err) {
+                    t.err = dn;
+                    t.err_y = y;
+                }
+            }
+        }
+        return t;
+    };
+    // Marching from the bottom of each smooth stretch with step-size control: the error of
+    // the interpolant grows as h^3, so the next interval's length is predicted from the last
+    // error.  An interval is kept when its checked error is within 0.9 of the tolerance (the
+    // error is smooth, and 23 checked heights find its maximum to about 1 %).
+    const double accept = 0.9 * settings.tolerance_n;
+    for (size_t k = 0; k + 1 < edges.size(); ++k) {
+        const double A = edges[k], B = edges[k + 1];
+        double a = A, fa = f.excess(A), sa = f.excess_slope(A, +1);
+        double h = B - A;
+        while (a < B) {
+            double b = a + h;
+            if (b > B - 0.1 * h) b = B;
+            const double fb = f.excess(b);
+            const double sb = b == B ? f.excess_slope(B, -1) : f.excess_slope(b, +1);
+            const Trial t = trial(a, b, fa, sa, fb, sb);
+            if (!t.finite)
+                return make_error("the profile is not finite near " + shortest(0.5 * (a + b)) +
+                                  " m");
+            const double hb = b - a;
+            const double ratio = t.err > 0.0 ? std::cbrt(0.7 * settings.tolerance_n / t.err) : 2.0;
+            if (t.err > accept) {
+                if (hb * 0.5 < settings.min_interval)
+                    return make_error("the profile changes too fast near " + sig(t.err_y, 6) +
+                                      " m to be fitted within " + shortest(settings.tolerance_n) +
+                                      " in n (intervals of " + sig(hb, 3) + " m still miss by " +
+                                      sig(t.err, 3) + ")");
+                h = hb * std::clamp(ratio, 0.1, 0.9);
+                continue;
+            }
+            knots.push_back(a + 0.5 * hb);
+            knots.push_back(b);
+            slopes.push_back(sa);
+            curvatures.push_back(t.c_left);
+            slopes.push_back(t.s_mid);
+            curvatures.push_back(t.c_right);
+            if (t.err > worst) {
+                worst = t.err;
+                worst_y = t.err_y;
+            }
+            if (static_cast<int>(slopes.size()) > settings.max_pieces)
+                return make_error(
+                    "the profile needs more than " + std::to_string(settings.max_pieces) +
+                    " pieces to be fitted within " + shortest(settings.tolerance_n) + " in n");
+            a = b;
+            fa = fb;
+            sa = b == B ? sa : sb;
+            h = hb * std::clamp(ratio, 0.5, 4.0);
+        }
+    }
+    auto model = QuadraticProfile::make(std::move(knots), std::move(slopes), std::move(curvatures),
+                                        f.n0_sq, f.earth_radius);
+    if (!model) return model.error();
+    if (report) {
+        report->pieces = model->piece_count();
+        report->max_error_n = worst;
+        report->worst_height = worst_y;
+    }
+    return model;
+}
+
+std::vector<Duct> find_ducts(const QuadraticProfile& p) {
+    std::vector<Duct> ducts;
+    const int m = p.piece_count();
+    // Local maxima of n^2: inside a piece (c < 0, vertex inside) or at a knot where the slope
+    // goes from positive to non-positive.
+    std::vector<double> peaks;
+    for (int j = 0; j < m; ++j) {
+        const double h = p.knot(j + 1) - p.knot(j);
+        if (p.c(j) < 0.0) {
+            const double us = -p.b(j) / (2.0 * p.c(j));
+            if (us > 0.0 && us < h) peaks.push_back(p.knot(j) + us);
+        }
+        if (j > 0) {
+            const double left = p.b(j - 1) + 2.0 * p.c(j - 1) * (p.knot(j) - p.knot(j - 1));
+            if (left > 0.0 && p.b(j) <= 0.0 && !(p.b(j) == 0.0 && p.c(j) > 0.0))
+                peaks.push_back(p.knot(j));
+        }
+    }
+    // The top is where n^2 stops changing; a peak there is no duct (the sky side is flat).
+    for (double y : peaks) {
+        double lo_below, hi_below, lo_above, hi_above;
+        p.n_sq_range(0.0, y, lo_below, hi_below);
+        p.n_sq_range(y, p.top(), lo_above, hi_above);
+        const double spill = std::max(lo_below, lo_above);
+        const double peak = p.n_sq(y);
+        if (!(peak > spill)) continue;
+        // The edges: the nearest heights below and above the peak where n^2 falls to the
+        // spill level.
+        auto edge = [&](int dir) {
+            double y_here = y;
+            int j = std::min(p.piece_at(y), m - 1);
+            if (dir < 0 && j > 0 && p.knot(j) == y) --j;  // a peak on a knot: start below it
+            for (; j >= 0 && j < m; j += dir) {
+                const double y_end = dir > 0 ? p.knot(j + 1) : p.knot(j);
+                const double lo_y = std::min(y_here, y_end), hi_y = std::max(y_here, y_end);
+                double lo, hi;
+                p.n_sq_range(lo_y, hi_y, lo, hi);
+                if (lo <= spill) {
+                    // Where n^2 is smallest on this stretch, and the start of the monotone
+                    // descent to it (after a maximum inside the stretch, if there is one).
+                    const double u_vertex = p.c(j) != 0.0 ? -p.b(j) / (2.0 * p.c(j)) : kInf;
+                    const double y_vertex = p.knot(j) + u_vertex;
+                    const bool inside = y_vertex > lo_y && y_vertex < hi_y;
+                    double y_min = p.n_sq(y_end) <= p.n_sq(y_here) ? y_end : y_here;
+                    double y_from = y_here;
+                    if (inside && p.c(j) > 0.0) y_min = y_vertex;
+                    if (inside && p.c(j) < 0.0) y_from = y_vertex;
+                    double a = y_from, b = y_min;  // n^2(a) > spill >= n^2(b)
+                    for (int it = 0; it < 200 && a != b; ++it) {
+                        const double mid = 0.5 * (a + b);
+                        if (mid == a || mid == b) break;
+                        if (p.n_sq(mid) > spill) {
+                            a = mid;
+                        } else {
+                            b = mid;
+                        }
+                    }
+                    return 0.5 * (a + b);
+                }
+                y_here = y_end;
+            }
+            return y_here;
+        };
+        Duct d;
+        d.peak = y;
+        d.peak_sq = peak;
+        d.spill_sq = spill;
+        d.bottom = edge(-1);
+        d.top = edge(+1);
+        bool merged = false;
+        for (auto& other : ducts) {
+            if (std::fabs(other.bottom - d.bottom) < 1e-9 && std::fabs(other.top - d.top) < 1e-9) {
+                if (d.peak_sq > other.peak_sq) other = d;
+                merged = true;
+            }
+        }
+        if (!merged) ducts.push_back(d);
+    }
+    std::sort(ducts.begin(), ducts.end(),
+              [](const Duct& a, const Duct& b) { return a.bottom < b.bottom; });
+    return ducts;
+}
+
+}  // namespace mirage

@@ -1,0 +1,146 @@
+// A piecewise-quadratic n^2(y): the model of any stratified atmosphere on which the exact-path
+// engine (quadratic_path.h) works.  Between knots y_j < y_{j+1}
+//   n^2(y) = n0^2 + e_j + b_j u + c_j u^2,   u = y - y_j,
+// continuous everywhere, with a continuous slope except at knots where the profile itself has a
+// corner (an inversion without smoothing).  Above the top knot n^2 stays at its top value, so
+// rays go straight there.  With an Earth radius R the heights are the conformally flattened
+// heights y = R ln(r / R) of earth_flattening.h and n^2 is n*^2 = (n r / R)^2.
+//
+// A profile given as a function (temperatures, soundings) is fitted by Hermite interpolation
+// with a knot in the middle of every interval (Schumaker's C^1 quadratic spline), the
+// intervals halved until |n_fit - n| <= tolerance everywhere.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "util/result.h"
+
+namespace mirage {
+
+class QuadraticProfile {
+  public:
+    /// Builds the model from its knots (y[0] = 0, increasing; the last is the top) and per piece
+    /// j < knots - 1 the slope b_j and half the second derivative c_j of n^2 at its start; the
+    /// values at the knots follow from n0_sq and the pieces (e_0 = 0, e_{j+1} = e_j + b_j h_j +
+    /// c_j h_j^2).  Refused: fewer than two knots, knots not increasing, non-finite values,
+    /// n^2 <= 0 anywhere.
+    static Result<QuadraticProfile> make(std::vector<double> knots, std::vector<double> slopes,
+                                         std::vector<double> curvatures, double n0_sq,
+                                         double earth_radius);
+
+    int piece_count() const { return static_cast<int>(b_.size()); }
+    const std::vector<double>& knots() const { return y_; }
+    double knot(int j) const { return y_[j]; }
+    double top() const { return y_.back(); }
+    double n0_sq() const { return n0_sq_; }
+    double earth_radius() const { return earth_radius_; }  // 0: flat
+    /// Piece j's coefficients: n^2 - n0^2 = e + b u + c u^2 on [knot(j), knot(j+1)].
+    double e(int j) const { return e_[j]; }
+    double b(int j) const { return b_[j]; }
+    double c(int j) const { return c_[j]; }
+    /// The increment of n^2 over piece j, b_j h_j + c_j h_j^2 (e(j+1) - e(j) by definition).
+    double increment(int j) const { return inc_[j]; }
+
+    /// The piece holding height y: j with knot(j) <= y < knot(j+1); -1 below 0, piece_count()
+    /// at or above the top.
+    int piece_at(double y) const;
+    /// piece_at(y), trying `hint` and its neighbours first.
+    int piece_at(double y, int hint) const {
+        const int m = piece_count();
+        if (hint >= 0 && hint < m) {
+            if (y >= y_[hint]) {
+                if (y < y_[hint + 1]) return hint;
+                if (hint + 1 < m && y < y_[hint + 2]) return hint + 1;
+            } else if (hint > 0 && y >= y_[hint - 1]) {
+                return hint - 1;
+            }
+        }
+        return piece_at(y);
+    }
+
+    /// n^2(y) - n0^2 (the constant top value above the top; the lowest piece continued below 0).
+    double excess(double y) const;
+    double n_sq(double y) const { return n0_sq_ + excess(y); }
+    double n(double y) const;
+    /// d(n^2)/dy at y (the right-hand value at a corner).
+    double slope(double y) const;
+    /// The largest |d(n^2)/dy| over the heights [ya, yb] (in either order): it bounds a ray's
+    /// curvature there, |y''| = |d(n^2)/dy| / (2 beta^2).
+    double max_abs_slope(double ya, double yb) const;
+    /// The same, with the pieces of ya and yb looked for first where `hint_a` and `hint_b` say
+    /// (and updated): consecutive queries of a path are mostly in the same pieces.
+    double max_abs_slope(double ya, double yb, int& hint_a, int& hint_b) const;
+    /// The smallest and largest n^2 over [ya, yb].
+    void n_sq_range(double ya, double yb, double& lo, double& hi) const;
+    /// The smallest and largest n^2 - n0^2 over [ya, yb].
+    void excess_range(double ya, double yb, double& lo, double& hi) const;
+    /// The first piece k >= j (dir > 0) or the last k <= j (dir < 0) whose smallest n^2 - n0^2
+    /// is at most `level`; piece_count() (dir > 0) or -1 (dir < 0) when there is none.  For
+    /// finding where a ray turns (n^2 = beta^2) in O(log pieces).
+    int find_piece_reaching(int j, int dir, double level) const;
+    /// The slope of n^2 at the end of piece j (at knot j + 1, from below).
+    double end_slope(int j) const { return end_slope_[j]; }
+    /// sqrt(|c_j|).
+    double root_abs_c(int j) const { return root_abs_c_[j]; }
+    /// Whether n^2 is the same at every height.
+    bool homogeneous() const { return homogeneous_; }
+
+  private:
+    std::vector<double> y_, e_, b_, c_, inc_, end_slope_, root_abs_c_;
+    double n0_sq_ = 1.0;
+    double earth_radius_ = 0.0;
+    bool homogeneous_ = true;
+    // Sparse tables (level k covers 2^k entries): the largest |slope| at each knot (either
+    // side), and each piece's smallest and largest n^2 - n0^2.
+    std::vector<std::vector<double>> knot_slope_max_, piece_min_, piece_max_;
+
+    double piece_value(int j, double u) const { return e_[j] + (b_[j] + c_[j] * u) * u; }
+    void build_tables();
+};
+
+/// A profile to fit: n^2(y) - n0^2 and its slope, smooth between breakpoints.
+struct ProfileFunction {
+    std::function<double(double)> excess;             // n^2(y) - n0^2
+    std::function<double(double, int)> excess_slope;  // d/dy; side -1 left, +1 right limit
+    double n0_sq = 1.0;                               // n^2 at y = 0
+    std::vector<double> breakpoints;  // heights in (0, top) where the smoothness may change
+    double top = 1000.0;              // the fit covers [0, top]; constant above
+    double earth_radius = 0.0;        // recorded in the model (the function is already flat)
+};
+
+struct FitSettings {
+    double tolerance_n = 1e-10;  // largest |n_fit - n| over [0, top]
+    double min_interval = 1e-6;  // m: a profile that needs finer intervals is refused
+    int max_pieces = 1 << 20;    // refused beyond
+};
+
+/// What the fit achieved.
+struct FitReport {
+    int pieces = 0;
+    double max_error_n = 0.0;  // the largest |n_fit - n| found at the checked heights
+    double worst_height = 0.0;
+};
+
+/// Fits the C^1 piecewise-quadratic model (C^0 at breakpoints where the slope jumps): Hermite
+/// interpolation with a midpoint knot on intervals marched up from the ground, each checked at
+/// 23 heights and kept when every error is within 0.9 of the tolerance (the margin covers the
+/// errors between the checked heights; the tests check the bound densely).
+Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
+                                               const FitSettings& settings,
+                                               FitReport* report = nullptr);
+
+/// A height range where level rays are trapped (a duct): around a local maximum of n^2 up to
+/// the level at which the maximum's basin spills (towards the ground or the sky).
+struct Duct {
+    double bottom = 0.0;    // lowest height of a trapped level ray (m, model heights)
+    double top = 0.0;       // highest
+    double peak = 0.0;      // where n^2 is largest in the duct
+    double spill_sq = 0.0;  // n^2 at the duct's edges: rays with beta^2 above it are trapped
+    double peak_sq = 0.0;   // n^2 at the peak
+};
+
+/// Every duct of the model, lowest first.
+std::vector<Duct> find_ducts(const QuadraticProfile& profile);
+
+}  // namespace mirage

@@ -1,0 +1,265 @@
+#include "atmosphere/quadratic_path.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "air_fixtures.h"
+#include "atmosphere/exact_path.h"
+
+namespace mirage {
+namespace {
+
+using testing::exponential_spec;
+using testing::fit_or_die;
+
+struct RandomRay {
+    double y0, elev;
+};
+
+std::vector<RandomRay> random_rays(std::mt19937_64& rng, int count, double y_lo, double y_hi,
+                                   double elev_lo, double elev_hi) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<RandomRay> rays;
+    for (int k = 0; k < count; ++k) {
+        const double y0 = y_lo * std::pow(y_hi / y_lo, unit(rng));
+        const double mag = elev_lo * std::pow(elev_hi / elev_lo, unit(rng));
+        rays.push_back({y0, unit(rng) < 0.6 ? -mag : mag});
+    }
+    return rays;
+}
+
+// The exponential presets fitted to |dn| <= eps and traced by the general engine, against
+// their closed forms: the same fate and turning points on every ray, and heights that differ
+// by no more than the fit allows.  Two profiles whose index differs by at most eps give rays
+// from one start whose directions at equal heights differ by at most sqrt(4 eps) (n cos(e) =
+// beta, for beta and n each off by eps), so their heights part by at most d sqrt(4 eps).
+TEST(QuadraticPath, MatchesTheExponentialClosedFormsOnTheirFittedProfiles) {
+    const double eps = 1e-13;
+    std::mt19937_64 rng(7);
+    for (const char* preset : {"paper", "hot-road", "paper-superior", "cold-sea"}) {
+        auto q = fit_or_die(exponential_spec(preset), eps);
+        ASSERT_TRUE(q);
+        const Atmosphere general = Atmosphere::quadratic(q);
+        const Atmosphere closed = Atmosphere::exponential(*preset_profile(preset));
+        int turning = 0, grounded = 0;
+        for (const auto& r : random_rays(rng, 400, 0.05, 6.0, 1e-6, 0.5)) {
+            auto a = ExactPath::make(general, r.y0, M_PI / 2 - r.elev);
+            auto e = ExactPath::make(closed, r.y0, M_PI / 2 - r.elev);
+            ASSERT_TRUE(a.ok() && e.ok());
+            const std::string what = std::string(preset) + " y0=" + std::to_string(r.y0) +
+                                     " elev=" + std::to_string(r.elev) + " " + e->class_name();
+            ASSERT_EQ(a->fate(), e->fate()) << what;
+            ASSERT_EQ(a->turning_point_count(), e->turning_point_count()) << what;
+            ASSERT_EQ(a->hits_ground(), e->hits_ground()) << what;
+            turning += e->turning_point_count();
+            grounded += e->hits_ground();
+            if (e->turning_point_count() == 1) {
+                // n^2 off by 2 eps n (and beta^2 by as much) moves the level point by
+                // 4 eps / |(n^2)'| there.
+                const double yt = e->turning_point(0).y;
+                EXPECT_NEAR(a->turning_point(0).y, yt, 1e-12 + 4.5 * eps / std::fabs(q->slope(yt)))
+                    << what;
+            }
+            for (double d : {0.3, 1.0, 4.0, 15.0, 60.0, 250.0}) {
+                if (e->hits_ground() && d > e->dz_ground()) continue;
+                EXPECT_NEAR(a->height_at(d), e->height_at(d), 1e-9 + d * std::sqrt(4.0 * eps))
+                    << what << " d=" << d;
+            }
+        }
+        EXPECT_GT(turning, 20) << preset;
+        EXPECT_GT(grounded, 10) << preset;
+    }
+}
+
+// Every point of a path solves the ray equation of its own model: slope^2 beta^2 = n^2 - beta^2
+// at the path's height, with n^2 - beta^2 carried as (n^2 - n0^2) - level.  A wrong closed form,
+// a wrong crossing time or a wrong piece breaks this at once.
+TEST(QuadraticPath, SolvesTheRayEquationOfItsModelAlongTheWholePath) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::vector<std::pair<const char*, AirSpec>> cases = {
+        {"road", testing::hot_road_spec()},
+        {"duct", testing::road_duct_spec()},
+        {"young", testing::young_spec(0.85)},
+        {"paper", exponential_spec("paper")}};
+    for (const auto& [name, spec] : cases) {
+        auto q = fit_or_die(spec, 1e-11);
+        ASSERT_TRUE(q);
+        const Atmosphere atm = Atmosphere::quadratic(q);
+        const double scale = spec.earth_radius_m > 0.0 ? 60.0 : 2.0;
+        int checked = 0;
+        for (const auto& r : random_rays(rng, 150, 0.05 * scale, 3.0 * scale, 1e-6, 0.05)) {
+            auto path = ExactPath::make(atm, r.y0, M_PI / 2 - r.elev);
+            ASSERT_TRUE(path.ok()) << path.message();
+            const double beta2 = path->beta() * path->beta();
+            const double level =
+                q->excess(r.y0) - q->n_sq(r.y0) * std::pow(std::cos(path->i_rad()), 2);
+            const double reach = std::min(path->dz_ground(), 20000.0 * scale / 2.0);
+            for (int k = 0; k < 40; ++k) {
+                const double d = reach * unit(rng);
+                const double y = path->height_at(d), s = path->slope_at(d);
+                ASSERT_TRUE(std::isfinite(y) && std::isfinite(s)) << name << " d=" << d;
+                ASSERT_GE(y, -1e-9) << name;
+                const double Q = q->excess(y) - level;
+                // Q is known to about eps |n^2 - n0^2| (cancellation in the level).
+                const double tol = 64.0 * 2.2e-16 * (std::fabs(q->excess(y)) + std::fabs(level)) +
+                                   1e-9 * std::fabs(Q);
+                EXPECT_NEAR(s * s * beta2, Q, tol)
+                    << name << " y0=" << r.y0 << " elev=" << r.elev << " d=" << d << " y=" << y;
+                ++checked;
+            }
+        }
+        EXPECT_EQ(checked, 6000) << name;
+    }
+}
+
+// Across every knot of a sweep the path and its slope are continuous.
+TEST(QuadraticPath, IsContinuousWithAContinuousSlopeAcrossEveryPiece) {
+    auto q = fit_or_die(testing::hot_road_spec(), 1e-11);
+    ASSERT_TRUE(q);
+    for (double elev : {-0.004, -0.0015, 0.002}) {
+        auto path = QuadraticPath::make(*q, 1.5, M_PI / 2 - elev);
+        ASSERT_TRUE(path.ok());
+        const Sweep& s = path->sweep();
+        ASSERT_GT(s.segments.size(), 10u);
+        for (size_t k = 1; k < s.segments.size(); ++k) {
+            const double t = s.segments[k].t0;
+            const double h = 1e-7 * (1.0 + t);
+            const double below = sweep_height(s, t - h), above = sweep_height(s, t + h);
+            const double slope = sweep_slope(s, t);
+            const double curv = path->curvature_bound(below, above);
+            EXPECT_NEAR(above - below, 2.0 * h * slope, 1e-14 + curv * h * h) << "knot " << k;
+            EXPECT_NEAR(sweep_slope(s, t - h), sweep_slope(s, t + h), 1e-14 + 2.0 * h * curv)
+                << "knot " << k;
+            EXPECT_NEAR(s.segments[k - 1].y1, sweep_height(s, t), 1e-12) << "knot " << k;
+        }
+    }
+}
+
+// A ray trapped in a duct turns for ever: its turning heights alternate, its path is
+// symmetric about every turning point and repeats with twice the half period.
+TEST(QuadraticPath, DuctedRaysArePeriodicAndSymmetricAboutEveryTurningPoint) {
+    auto q = fit_or_die(testing::road_duct_spec(), 1e-11);
+    ASSERT_TRUE(q);
+    const auto ducts = find_ducts(*q);
+    ASSERT_EQ(ducts.size(), 1u);
+    // On flat ground a profile whose index falls all the way up traps every ray with beta above
+    // its top index between the hot ground and the sky: the duct reaches the top.
+    EXPECT_NEAR(ducts[0].top, q->top(), 1e-7);
+    for (double y0 : {ducts[0].peak, 0.5 * (ducts[0].bottom + ducts[0].top)})
+        for (double elev : {0.0, 4e-4, -7e-4}) {
+            auto path = QuadraticPath::make(*q, y0, M_PI / 2 - elev);
+            ASSERT_TRUE(path.ok());
+            ASSERT_EQ(path->fate(), PathFate::Ducted);
+            ASSERT_EQ(path->turning_point_count(), -1);
+            EXPECT_FALSE(path->hits_ground());
+            const TurningPoint t0 = path->turning_point(0), t1 = path->turning_point(1);
+            const double half = t1.dz - t0.dz;
+            ASSERT_GT(half, 0.0);
+            EXPECT_NE(t0.lowest, t1.lowest);
+            for (int k = 0; k < 8; ++k) {
+                const TurningPoint tk = path->turning_point(k);
+                EXPECT_NEAR(tk.dz, t0.dz + k * half, 1e-9 * tk.dz);
+                EXPECT_DOUBLE_EQ(tk.y, k % 2 == 0 ? t0.y : t1.y);
+                EXPECT_NEAR(path->height_at(tk.dz), tk.y, 1e-9);
+                EXPECT_NEAR(path->slope_at(tk.dz), 0.0, 1e-9);
+                EXPECT_GE(tk.y, ducts[0].bottom - 1e-9);
+                EXPECT_LE(tk.y, ducts[0].top + 1e-9);
+                for (double u : {0.1, 0.37, 0.8}) {
+                    const double du = u * half;
+                    if (tk.dz - du < 0.0) continue;
+                    EXPECT_NEAR(path->height_at(tk.dz - du), path->height_at(tk.dz + du), 1e-9)
+                        << "turning point " << k << " u=" << u;
+                }
+            }
+            for (double d : {3.0, 17.0, 41.0}) {
+                EXPECT_NEAR(path->height_at(d + 2.0 * half), path->height_at(d), 1e-9);
+                EXPECT_NEAR(path->height_at(d + 20.0 * half), path->height_at(d), 1e-8);
+            }
+            EXPECT_EQ(path->first_turning_point_after(t0.dz + 2.5 * half), 3);
+        }
+}
+
+TEST(QuadraticPath, HomogeneousAirGivesStraightLines) {
+    auto q = QuadraticProfile::make({0.0, 10.0}, {0.0}, {0.0}, 1.0003 * 1.0003, 0.0);
+    ASSERT_TRUE(q.ok());
+    auto up = QuadraticPath::make(*q, 2.0, M_PI / 2 - 0.1);
+    ASSERT_TRUE(up.ok());
+    EXPECT_EQ(up->fate(), PathFate::Straight);
+    EXPECT_NEAR(up->height_at(50.0), 2.0 + 50.0 * std::tan(0.1), 1e-13);
+    auto down = QuadraticPath::make(*q, 2.0, M_PI / 2 + 0.1);
+    ASSERT_TRUE(down.ok());
+    EXPECT_TRUE(down->hits_ground());
+    EXPECT_NEAR(down->dz_ground(), 2.0 / std::tan(0.1), 1e-12);
+}
+
+// Above the profile's top the air is homogeneous: a ray from there goes straight down to the
+// top, then bends.
+TEST(QuadraticPath, StartsAboveTheTopGoStraightUntilTheyReachIt) {
+    auto q = fit_or_die(testing::hot_road_spec(), 1e-11);
+    ASSERT_TRUE(q);
+    const double top = q->top();
+    auto path = QuadraticPath::make(*q, top + 50.0, M_PI / 2 + 0.02);
+    ASSERT_TRUE(path.ok());
+    const double d_top = 50.0 / std::tan(0.02);
+    EXPECT_NEAR(path->height_at(0.5 * d_top), top + 25.0, 1e-9);
+    EXPECT_NEAR(path->height_at(d_top), top, 1e-9);
+    auto up = QuadraticPath::make(*q, top + 50.0, M_PI / 2 - 0.02);
+    ASSERT_TRUE(up.ok());
+    EXPECT_EQ(up->fate(), PathFate::Escape);
+    EXPECT_NEAR(up->height_at(1000.0), top + 50.0 + 1000.0 * std::tan(0.02), 1e-9);
+}
+
+TEST(QuadraticPath, RefusesStartsBelowTheGroundAndVerticalRays) {
+    auto q = fit_or_die(testing::hot_road_spec(), 1e-10);
+    ASSERT_TRUE(q);
+    auto below = QuadraticPath::make(*q, -0.5, 1.5);
+    ASSERT_FALSE(below.ok());
+    EXPECT_EQ(below.message(), "start height y0 = -0.5 m must be finite and >= 0");
+    auto vertical = QuadraticPath::make(*q, 1.0, 0.0);
+    ASSERT_FALSE(vertical.ok());
+    EXPECT_NE(vertical.message().find("strictly between 0 and pi"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mirage
+
+namespace mirage {
+namespace {
+
+// Starts exactly on knots (sounding rows, an inversion's corners), level or nearly so, in both
+// directions: every path is finite everywhere, and a level ray on the sharp bottom of an
+// inversion (a maximum of n*^2 with a corner, n*^2 falling on both sides) stays level there.
+TEST(QuadraticPath, StartsOnKnotsGiveFinitePathsAndACornerMaximumHoldsALevelRay) {
+    const std::vector<AirSpec> specs = {testing::young_spec(0.0), testing::road_duct_spec()};
+    for (const auto& spec : specs) {
+        auto q = testing::fit_or_die(spec, 1e-10);
+        ASSERT_TRUE(q);
+        const Atmosphere atm = Atmosphere::quadratic(q);
+        for (int j = 0; j <= q->piece_count(); ++j) {
+            for (double el : {0.0, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3, 0.3, -0.3}) {
+                auto path = ExactPath::make(atm, q->knot(j), M_PI / 2 - el);
+                ASSERT_TRUE(path.ok()) << path.message();
+                for (double d : {0.0, 0.5, 37.0, 1234.5, 60000.0}) {
+                    if (path->hits_ground() && d > path->dz_ground()) continue;
+                    ASSERT_TRUE(std::isfinite(path->height_at(d)))
+                        << "knot " << j << " elev " << el << " d " << d;
+                    ASSERT_TRUE(std::isfinite(path->slope_at(d)));
+                }
+            }
+        }
+    }
+    auto q = testing::fit_or_die(testing::young_spec(0.0), 1e-10);
+    const double corner = flattened_height(50.0, 6371000.0);
+    int k = q->piece_at(corner);
+    if (std::fabs(q->knot(k + 1) - corner) < std::fabs(q->knot(k) - corner)) ++k;
+    auto level = QuadraticPath::make(*q, q->knot(k), M_PI / 2);
+    ASSERT_TRUE(level.ok());
+    EXPECT_EQ(level->fate(), PathFate::Level);
+    EXPECT_EQ(level->height_at(5000.0), q->knot(k));
+}
+
+}  // namespace
+}  // namespace mirage
