@@ -6,26 +6,12 @@
 #include <cstdint>
 #include <limits>
 
+#include "atmosphere/chord_bound.h"
 #include "util/check.h"
 
 namespace mirage {
 
 namespace {
-
-// Paths are followed at most this far (m); beyond, they continue straight (as sampler.cpp).
-constexpr double kMaxDistance = 1e9;
-
-// Whether the chord over [p, q] keeps the tolerance when |y''| <= m there (sampler.cpp's test):
-// the chord errs by at most m (x - p)(q - x) / 2 at x, and the allowance is at least allow_p and
-// at least tol_m + tol_rad (start_distance + x).
-bool chord_within(double m, double p, double q, double allow_p, const SampleSettings& st) {
-    if (q <= p) return true;
-    if (m * (q - p) * (q - p) <= 8.0 * allow_p) return true;
-    if (st.tolerance_rad <= 0.0) return false;
-    const double x = std::clamp(0.5 * (p + q) - st.tolerance_rad / m, p, q);
-    const double excess = 0.5 * m * (x - p) * (q - x) - st.tolerance_rad * x;
-    return excess <= st.tolerance_m + st.tolerance_rad * st.start_distance;
-}
 
 // The step from `a` (at most to `limit`): the room halved k times for the smallest k >= 0 that
 // passes, found by galloping from the k of `guess` (the previous step, or an estimate from the
@@ -112,7 +98,7 @@ SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& st) {
     const double y0 = path.y0();
     out.points.push_back({0.0, y0});
 
-    const double max_dz = std::min(st.max_dz, kMaxDistance);
+    const double max_dz = std::min(st.max_dz, kMaxSampleDistance);
     const bool ground = path.hits_ground() && path.dz_ground() <= max_dz;
     const double dz_end = ground ? path.dz_ground() : max_dz;
     auto finish = [&](double dz_last) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "atmosphere/chord_bound.h"
 #include "util/check.h"
 
 namespace mirage {
@@ -10,10 +11,6 @@ namespace mirage {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Paths are followed at most this far (m); beyond, they continue straight.  Far larger than
-// any scene, and small enough that no coordinate overflows.
-constexpr double kMaxDistance = 1e9;
 
 // Largest |y''| over a piece of path whose lowest height is y_low.
 double curvature_bound(const ExactRay& ray, double y_low) {
@@ -43,21 +40,6 @@ bool has_asymptote(const ExactRay& ray) {
            (ray.ray_class == RayClass::SupEscapeUp && ray.k2 < 0.0);
 }
 
-// Whether the chord over the dz interval [p, q] keeps the tolerance when |y''| <= m there.
-// Linear interpolation errs by at most m (x - p)(q - x) / 2 at x; the allowance is at least
-// allow_p (it grows away from the start) and at least tol_m + tol_rad (start_distance + x)
-// (the distance from the start is at least the horizontal one).  Either bound suffices; the
-// second matters next to the start, where an angular allowance vanishes.
-bool chord_within(double m, double p, double q, double allow_p, const SampleSettings& st) {
-    if (q <= p) return true;
-    if (m * (q - p) * (q - p) <= 8.0 * allow_p) return true;
-    if (st.tolerance_rad <= 0.0) return false;
-    // max over x in [p, q] of m (x - p)(q - x)/2 - tol_rad x, a downward parabola.
-    const double x = std::clamp(0.5 * (p + q) - st.tolerance_rad / m, p, q);
-    const double excess = 0.5 * m * (x - p) * (q - x) - st.tolerance_rad * x;
-    return excess <= st.tolerance_m + st.tolerance_rad * st.start_distance;
-}
-
 // Chooses the next step from `a` (at most to `limit`) so that every dz image of [a, a+step]
 // that `within(lo, hi)` checks keeps the tolerance.  `previous` is the step before (0 for
 // none): where the search starts.
@@ -79,8 +61,7 @@ double next_step(double a, double limit, Within within, double previous) {
     int pass = 0;
     int k = 1;
     if (previous > 0.0) {
-        k = std::clamp(static_cast<int>(std::lround(std::log2(room / previous))), 1,
-                       kMaxHalvings);
+        k = std::clamp(static_cast<int>(std::lround(std::log2(room / previous))), 1, kMaxHalvings);
     }
     if (passes(k)) {
         pass = k;
@@ -134,7 +115,7 @@ SampledPath sample_path(const ExactRay& ray, const SampleSettings& st) {
     SampledPath path;
     path.points.push_back({0.0, ray.y0});
 
-    const double max_dz = std::min(st.max_dz, kMaxDistance);
+    const double max_dz = std::min(st.max_dz, kMaxSampleDistance);
     const bool ground = ray.hits_ground && ray.dz_ground <= max_dz;
     const double dz_end = ground ? ray.dz_ground : max_dz;
     auto finish = [&](double dz_last) {
@@ -180,8 +161,7 @@ SampledPath sample_path(const ExactRay& ray, const SampleSettings& st) {
                 [&](double lo, double hi) {
                     hi = std::min(hi, dz_end);
                     const double y_low = rising ? height_at(ray, lo) : height_at(ray, hi);
-                    return chord_within(curvature_bound(ray, y_low), lo, hi, allowance_at(lo),
-                                        st);
+                    return chord_within(curvature_bound(ray, y_low), lo, hi, allowance_at(lo), st);
                 },
                 previous);
             previous = step;
@@ -221,19 +201,22 @@ SampledPath sample_path(const ExactRay& ray, const SampleSettings& st) {
         const bool need_after = !straight_after && u < u_after_max;
         if (!need_before && !need_after) break;
         const double limit = std::max(need_before ? u_before : 0.0, need_after ? u_after_max : 0.0);
-        const double step = next_step(u, limit, [&](double lo, double hi) {
-            const double m = curvature_bound(ray, lowest(lo, hi));
-            bool ok = true;
-            if (lo < u_before) {
-                const double p = std::max(0.0, zt - hi);
-                ok = ok && chord_within(m, p, zt - lo, allowance_at(p), st);
-            }
-            if (need_after && lo < u_after_max) {
-                const double q = std::min(zt + hi, dz_end);
-                ok = ok && chord_within(m, zt + lo, q, allowance_at(zt + lo), st);
-            }
-            return ok;
-        }, previous);
+        const double step = next_step(
+            u, limit,
+            [&](double lo, double hi) {
+                const double m = curvature_bound(ray, lowest(lo, hi));
+                bool ok = true;
+                if (lo < u_before) {
+                    const double p = std::max(0.0, zt - hi);
+                    ok = ok && chord_within(m, p, zt - lo, allowance_at(p), st);
+                }
+                if (need_after && lo < u_after_max) {
+                    const double q = std::min(zt + hi, dz_end);
+                    ok = ok && chord_within(m, zt + lo, q, allowance_at(zt + lo), st);
+                }
+                return ok;
+            },
+            previous);
         previous = step;
         u = std::min(limit, u + step);
         us.push_back(u);
@@ -334,7 +317,6 @@ class NearSampler {
         const PathState s = state_at(ray_, dz);
         return {dz, s.y, s.slope, s.curvature};
     }
-
 
     /// Where a stretch ending there must keep the tolerance whatever else: on a surface at
     /// the ground.
@@ -611,7 +593,7 @@ double straight_end_start(const ExactRay& ray, const SampleSettings& st, double 
         if (gx == x) break;
         x = gx;
     }
-    return std::min(best, kMaxDistance);
+    return std::min(best, kMaxSampleDistance);
 }
 
 SampledPath sample_path_near(const ExactRay& ray, const SampleSettings& st,
@@ -637,7 +619,7 @@ void sample_path_near(const ExactRay& ray, const SampleSettings& st, const PathO
     path.points.push_back({0.0, ray.y0});
     NearSampler sampler(ray, st, obstacles, path);
 
-    const double max_dz = std::min(st.max_dz, kMaxDistance);
+    const double max_dz = std::min(st.max_dz, kMaxSampleDistance);
     const bool ground = ray.hits_ground && ray.dz_ground <= max_dz;
     double end = ground ? ray.dz_ground : max_dz;
     if (ground && obstacles && obstacles->ground()) sampler.set_ground_end(ray.dz_ground);
@@ -649,11 +631,11 @@ void sample_path_near(const ExactRay& ray, const SampleSettings& st, const PathO
     path.turns = vertex_ahead;
     path.dz_turn = vertex_ahead ? ray.dz_turn : 0.0;
     const bool escapes = !ground && has_asymptote(ray);
-    if (escapes && st.max_dz >= kMaxDistance && obstacles && !sampler.wedge_may_meet()) {
+    if (escapes && st.max_dz >= kMaxSampleDistance && obstacles && !sampler.wedge_may_meet()) {
         // Nothing lies near the path anywhere, its straight end included: it is kept as its
         // start, one more point of it (its turning point, else where its straight end
-        // begins, unless that is the start) and its straight end, none of them to be tested (the length is of no use
-        // either: nothing is met).
+        // begins, unless that is the start) and its straight end, none of them to be tested (the
+        // length is of no use either: nothing is met).
         const double dz = vertex_ahead ? ray.dz_turn : straight_end_start(ray, st, 0.0);
         const double y = vertex_ahead ? ray.y_turn : height_at(ray, dz);
         if (dz > 0.0) {  // (the straight end may begin at the start: no second point)

@@ -100,7 +100,10 @@ std::uint8_t encode_srgb8(float linear) {
 }
 
 float decode_srgb8(std::uint8_t code) {
-    const float x = static_cast<float>(code) / 255.0f;
+    return decode_srgb_value(static_cast<float>(code) / 255.0f);
+}
+
+float decode_srgb_value(float x) {
     if (x < 0.04045f) return x / 12.92f;
     return std::pow((x + 0.055f) / 1.055f, 2.4f);
 }

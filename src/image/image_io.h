@@ -20,6 +20,9 @@ std::uint8_t encode_srgb8(float linear);
 /// Inverse of the sRGB transfer function for an 8-bit code (exact to float precision).
 float decode_srgb8(std::uint8_t code);
 
+/// Inverse of the sRGB transfer function for a value in [0, 1].
+float decode_srgb_value(float encoded);
+
 /// The image POV-Ray's PNG would hold, as code values / 255: what `read_image` returns for
 /// that PNG.  For comparing a linear render with a PNG without writing a file.
 Image quantize_srgb8(const Image& linear);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene/material_ops.h"
+#include "scene/object_tree.h"
 #include "scene/transform.h"
 #include "util/format.h"
 
@@ -14,7 +16,8 @@ std::string place(const FileLoc& loc) {
 
 void lower_primitive(Primitive& p, const Transform& down) {
     p.transform = compose_transforms(p.transform, down);
-    p.texture.pigment.transform = compose_transforms(p.texture.pigment.transform, down);
+    transform_texture(p.texture, down);
+    if (p.interior_texture) transform_texture(*p.interior_texture, down);
 }
 
 }  // namespace
@@ -23,7 +26,12 @@ void lower_scene(Scene& scene, double height) {
     if (height == 0.0) return;
     const Transform down = make_translation(glm::dvec3(0.0, -height, 0.0));
     scene.camera.location.y -= height;
-    for (PointLight& l : scene.lights) l.location.y -= height;
+    for (PointLight& l : scene.lights) transform_light(l, down);
+    for (Fog& f : scene.fogs) {
+        // A ground fog's heights are along its up vector; its turbulence stays where it was.
+        f.offset -= height * f.up.y;
+        f.lowered_by.y += height;
+    }
     for (Primitive& p : scene.primitives) lower_primitive(p, down);
     for (UnknownObject& u : scene.unknown_objects) {
         for (auto& bound : u.bounds) {

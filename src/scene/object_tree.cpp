@@ -1,12 +1,11 @@
 // Object tree operations: transforms, inversion, texture inheritance and flattening.
 #include "scene/object_tree.h"
 
+#include "scene/material_ops.h"
 #include "scene/transform.h"
 
 namespace mirage {
 namespace {
-
-bool colour_is_opaque(const Colour& c) { return c.filter == 0.0 && c.transmit == 0.0; }
 
 /// Whether the object and everything in it can be flattened into primitives of their own.
 bool splits_into_primitives(const ObjectNode& n) {
@@ -24,14 +23,34 @@ bool splits_into_primitives(const ObjectNode& n) {
     return false;
 }
 
+/// What an object passes down to the objects in it (POV-Ray's Post_Process): its texture,
+/// interior and interior_texture, for children that have none, and no_shadow.
+struct Inherited {
+    const Texture* texture = nullptr;
+    std::shared_ptr<const Interior> interior;
+    const Texture* interior_texture = nullptr;
+    bool no_shadow = false;
+};
+
+/// The object's own items over what it inherits.  A union or CSG always has an interior
+/// (POV-Ray gives it one), which its children without one share: one medium.
+Inherited inherit(const ObjectNode& n, const Inherited& from) {
+    Inherited out;
+    out.texture = n.texture ? &*n.texture : from.texture;
+    out.interior = n.interior ? n.interior : from.interior;
+    out.interior_texture = n.interior_texture ? &*n.interior_texture : from.interior_texture;
+    out.no_shadow = n.no_shadow || from.no_shadow;
+    const bool compound = n.kind == ObjectNode::Kind::Union || n.kind == ObjectNode::Kind::Csg;
+    if (compound && !out.interior) out.interior = std::make_shared<const Interior>();
+    return out;
+}
+
 class Flattener {
   public:
     Flattener(const Texture& default_texture, Scene& scene)
         : default_texture_(default_texture), scene_(scene) {}
 
-    void object(const ObjectNode& n, const Texture* inherited, bool inherited_no_shadow) {
-        const Texture* texture = n.texture ? &*n.texture : inherited;
-        const bool no_shadow = n.no_shadow || inherited_no_shadow;
+    void object(const ObjectNode& n, const Inherited& from) {
         if (n.kind == ObjectNode::Kind::Empty) {
             unknown(n);
             return;
@@ -40,7 +59,7 @@ class Flattener {
             const int index = static_cast<int>(scene_.compounds.size());
             scene_.compounds.emplace_back();
             CompoundObject compound;
-            const int root = node(n, texture, no_shadow, index, compound);
+            const int root = node(n, from, index, compound);
             if (root < 0) {
                 scene_.compounds.pop_back();
                 return;
@@ -49,12 +68,13 @@ class Flattener {
             scene_.compounds[index] = std::move(compound);
             return;
         }
+        const Inherited here = inherit(n, from);
         switch (n.kind) {
             case ObjectNode::Kind::Shape:
-                scene_.primitives.push_back(primitive(n, texture, no_shadow, -1));
+                scene_.primitives.push_back(primitive(n, here, -1));
                 break;
             case ObjectNode::Kind::Union:
-                for (const ObjectNode& child : n.children) object(child, texture, no_shadow);
+                for (const ObjectNode& child : n.children) object(child, here);
                 break;
             case ObjectNode::Kind::Light:
                 scene_.lights.push_back(n.light);
@@ -65,26 +85,25 @@ class Flattener {
     }
 
   private:
-    Primitive primitive(const ObjectNode& n, const Texture* texture, bool no_shadow,
-                        int compound) const {
+    Primitive primitive(const ObjectNode& n, const Inherited& here, int compound) const {
         Primitive p;
         p.shape = n.shape;
         p.transform = n.transform;
-        p.texture = texture ? *texture : default_texture_;
+        p.texture = here.texture ? *here.texture : default_texture_;
         finish_pigment(p.texture.pigment);
-        p.no_shadow = no_shadow;
+        p.no_shadow = here.no_shadow;
         p.inverse = n.inverse;
         p.loc = n.loc;
+        p.interior = here.interior ? here.interior : std::make_shared<const Interior>();
+        if (here.interior_texture) p.interior_texture = *here.interior_texture;
         p.compound = compound;
         return p;
     }
 
     /// Adds the node and what is under it to `c`; returns its index, or -1 when nothing of it
     /// is a surface (a light, an unknown object).
-    int node(const ObjectNode& n, const Texture* inherited, bool inherited_no_shadow, int index,
-             CompoundObject& c) {
-        const Texture* texture = n.texture ? &*n.texture : inherited;
-        const bool no_shadow = n.no_shadow || inherited_no_shadow;
+    int node(const ObjectNode& n, const Inherited& from, int index, CompoundObject& c) {
+        const Inherited here = inherit(n, from);
         CsgNode out;
         switch (n.kind) {
             case ObjectNode::Kind::Light:
@@ -96,25 +115,27 @@ class Flattener {
             case ObjectNode::Kind::Shape:
                 out.kind = CsgKind::Primitive;
                 out.primitive = static_cast<int>(scene_.primitives.size());
-                scene_.primitives.push_back(primitive(n, texture, no_shadow, index));
+                scene_.primitives.push_back(primitive(n, here, index));
                 break;
             case ObjectNode::Kind::Union:
             case ObjectNode::Kind::Csg:
                 out.kind = n.kind == ObjectNode::Kind::Union ? CsgKind::Union : n.csg;
                 out.inverted = n.inverted;
                 for (const ObjectNode& child : n.children) {
-                    const int k = node(child, texture, no_shadow, index, c);
+                    const int k = node(child, here, index, c);
                     if (k >= 0) out.children.push_back(k);
                 }
                 break;
         }
-        // Clipping and bounding objects are never seen: their textures do not matter.
+        // Clipping and bounding objects are never seen: their textures and interiors do not
+        // matter.
+        const Inherited unseen{nullptr, nullptr, nullptr, true};
         for (const ObjectNode& clip : n.clip) {
-            const int k = node(clip, nullptr, true, index, c);
+            const int k = node(clip, unseen, index, c);
             if (k >= 0) out.clip.push_back(k);
         }
         for (const ObjectNode& bound : n.bound) {
-            const int k = node(bound, nullptr, true, index, c);
+            const int k = node(bound, unseen, index, c);
             if (k >= 0) out.bound.push_back(k);
         }
         c.nodes.push_back(std::move(out));
@@ -129,7 +150,8 @@ class Flattener {
         for (const auto* list : {&n.bound, &n.clip}) {
             for (const ObjectNode& b : *list) {
                 Scene scratch;
-                Flattener(default_texture_, scratch).object(b, nullptr, true);
+                Flattener(default_texture_, scratch)
+                    .object(b, Inherited{nullptr, nullptr, nullptr, true});
                 u.bounds.push_back(std::move(scratch.primitives));
             }
         }
@@ -142,10 +164,6 @@ class Flattener {
 
 }  // namespace
 
-void transform_texture(Texture& texture, const Transform& t) {
-    texture.pigment.transform = compose_transforms(texture.pigment.transform, t);
-}
-
 void transform_object(ObjectNode& object, const Transform& t) {
     switch (object.kind) {
         case ObjectNode::Kind::Shape:
@@ -156,7 +174,7 @@ void transform_object(ObjectNode& object, const Transform& t) {
             for (ObjectNode& child : object.children) transform_object(child, t);
             break;
         case ObjectNode::Kind::Light:
-            object.light.location = transform_point(t, object.light.location);
+            transform_light(object.light, t);
             break;
         case ObjectNode::Kind::Empty:
             break;
@@ -164,6 +182,7 @@ void transform_object(ObjectNode& object, const Transform& t) {
     for (ObjectNode& c : object.clip) transform_object(c, t);
     for (ObjectNode& b : object.bound) transform_object(b, t);
     if (object.texture) transform_texture(*object.texture, t);
+    if (object.interior_texture) transform_texture(*object.interior_texture, t);
 }
 
 void invert_object(ObjectNode& object) {
@@ -188,35 +207,8 @@ void invert_object(ObjectNode& object) {
     }
 }
 
-bool texture_is_opaque(const Texture& texture) {
-    const Pigment& p = texture.pigment;
-    switch (p.kind) {
-        case PigmentKind::Solid:
-            return colour_is_opaque(p.colour);
-        case PigmentKind::Checker:
-            return colour_is_opaque(p.checker[0]) && colour_is_opaque(p.checker[1]);
-        case PigmentKind::Gradient:
-            for (const ColourMapEntry& e : p.colour_map) {
-                if (!colour_is_opaque(e.colour)) return false;
-            }
-            return true;
-    }
-    return false;
-}
-
-void finish_pigment(Pigment& pigment) {
-    if (pigment.kind == PigmentKind::Gradient && pigment.colour_map.empty()) {
-        // POV-Ray's Gray_Default_Map (texture/pigment.cpp).
-        ColourMapEntry black, white;
-        black.position = 0.0;
-        white.position = 1.0;
-        white.colour.rgb = glm::dvec3(1.0);
-        pigment.colour_map = {black, white};
-    }
-}
-
 void flatten_object(const ObjectNode& object, const Texture& default_texture, Scene& scene) {
-    Flattener(default_texture, scene).object(object, nullptr, false);
+    Flattener(default_texture, scene).object(object, Inherited{});
 }
 
 void flatten_object(const ObjectNode& object, const Texture& default_texture,
@@ -224,7 +216,7 @@ void flatten_object(const ObjectNode& object, const Texture& default_texture,
     Scene scene;
     scene.primitives = std::move(primitives);
     scene.lights = std::move(lights);
-    Flattener(default_texture, scene).object(object, nullptr, false);
+    Flattener(default_texture, scene).object(object, Inherited{});
     primitives = std::move(scene.primitives);
     lights = std::move(scene.lights);
 }

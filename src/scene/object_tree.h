@@ -3,6 +3,7 @@
 // scene's primitives and compound objects at the end.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,9 +22,11 @@ struct ObjectNode {
         Empty,  ///< an object the lenient parser could not represent (see `unknown`)
     };
     Kind kind = Kind::Empty;
-    Shape shape;                     // Shape
-    Transform transform;             // Shape: shape space -> world space
-    std::optional<Texture> texture;  // the object's own texture, if it has one
+    Shape shape;                               // Shape
+    Transform transform;                       // Shape: shape space -> world space
+    std::optional<Texture> texture;            // the object's own texture, if it has one
+    std::shared_ptr<const Interior> interior;  // the object's own interior, if it has one
+    std::optional<Texture> interior_texture;   // the object's own interior_texture, if any
     bool no_shadow = false;
     bool inverse = false;              // Shape: POV-Ray's inverse
     CsgKind csg = CsgKind::Merge;      // Csg: Merge or Intersection

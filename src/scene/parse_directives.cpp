@@ -244,7 +244,12 @@ void SceneParser::directive_default(const Token& keyword) {
             expect_close_brace(item);
         } else if (item.is_word("finish")) {
             parse_finish_block(default_texture_.finish, item);
-        } else if (item.is_word("normal") || item.is_word("radiosity") || item.is_word("camera")) {
+        } else if (item.is_word("normal")) {
+            if (!default_texture_.normal) default_texture_.normal = Normal{};
+            expect_open_brace(item);
+            parse_normal_body(*default_texture_.normal, item);
+            expect_close_brace(item);
+        } else if (item.is_word("radiosity") || item.is_word("camera")) {
             skip_unsupported(item, Arity::Block, "#default item '" + item.text() + "'");
         } else {
             fail(item,

@@ -342,6 +342,7 @@ ObjectNode SceneParser::parse_light_source(const Token& kw) {
             transform_object(node, tr);
             continue;
         }
+        if (parse_light_item(node.light)) continue;  // spotlight, area_light, fade, media...
         if (t.is_word("shadowless")) {
             next();
             node.light.shadowless = true;
@@ -377,6 +378,7 @@ void SceneParser::parse_object_modifiers(ObjectNode& node, const Token& kw) {
             transform_object(node, tr);
             continue;
         }
+        if (parse_material_modifier(node)) continue;  // normal, interior, material, hollow
         if (is_keyword(t)) {
             const std::string& w = t.text();
             if (w == "texture") {

@@ -114,10 +114,7 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
                 expect_open_brace(layer);
                 Texture top = parse_texture_body(layer);
                 expect_close_brace(layer);
-                if (!texture_is_opaque(top)) {
-                    unsupported(layer, "layered texture with filter or transmit");
-                }
-                tex = top;
+                layer_texture(tex, std::move(top), layer);
             }
             return finish_other(Value{tex});
         }
@@ -145,6 +142,7 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
             Token kw = next();
             return finish_other(parse_function_value(kw));
         }
+        if (auto m = parse_material_value()) return finish_other(std::move(*m));
         static const char* const kUnsupportedValues[] = {
             "normal",     "interior",    "material",  "media",       "density",
             "fog",        "rainbow",     "spline",    "function",    "pigment_map",

@@ -22,12 +22,41 @@ struct ItemArity {
 };
 
 constexpr ItemArity kUnsupportedGlobalSettings[] = {
-    {"adc_bailout", Arity::Float},     {"irid_wavelength", Arity::Colour},
-    {"number_of_waves", Arity::Float}, {"noise_generator", Arity::Float},
-    {"photons", Arity::Block},         {"radiosity", Arity::Block},
-    {"subsurface", Arity::Block},      {"hf_gray_16", Arity::OptionalFloat},
+    {"photons", Arity::Block},     {"radiosity", Arity::Block},
+    {"subsurface", Arity::Block},  {"hf_gray_16", Arity::OptionalFloat},
     {"mm_per_unit", Arity::Float},
 };
+
+/// What a declared value is, when it is a material (for Scene::material_symbols).
+const char* material_kind(const Value& v) {
+    if (std::holds_alternative<Texture>(v.data)) return "texture";
+    if (std::holds_alternative<Pigment>(v.data)) return "pigment";
+    if (std::holds_alternative<Finish>(v.data)) return "finish";
+    if (std::holds_alternative<ColourMapValue>(v.data)) return "color_map";
+    if (std::holds_alternative<SkySphere>(v.data)) return "sky_sphere";
+    if (const auto* n = std::get_if<Numeric>(&v.data); n && n->size == 5) return "colour";
+    if (const auto* m = std::get_if<MaterialValue>(&v.data)) {
+        switch (m->kind) {
+            case MaterialValue::Kind::Normal:
+                return "normal";
+            case MaterialValue::Kind::Interior:
+                return "interior";
+            case MaterialValue::Kind::Material:
+                return "material";
+            case MaterialValue::Kind::Fog:
+                return "fog";
+            case MaterialValue::Kind::PigmentMap:
+                return "pigment_map";
+            case MaterialValue::Kind::NormalMap:
+                return "normal_map";
+            case MaterialValue::Kind::TextureMap:
+                return "texture_map";
+            case MaterialValue::Kind::SlopeMap:
+                return "slope_map";
+        }
+    }
+    return nullptr;
+}
 
 }  // namespace
 
@@ -36,6 +65,12 @@ Scene SceneParser::parse(std::shared_ptr<SourceFile> main_file) {
     push_frame(main_file, 0, main_file->tokens.size() - 1, FrameContext::Kind::Main, "", Token{});
     parse_top_level();
     export_symbols();
+    // POV-Ray takes the noise generator from the last #version unless the scene sets it.
+    scene_.global.language_version = language_version_;
+    scene_.global.assumed_gamma_given = gamma_set_;
+    if (!explicit_noise_generator_) {
+        scene_.global.noise_generator = language_version_ >= 3.5 - 1e-9 ? 2 : 1;
+    }
     return std::move(scene_);
 }
 
@@ -106,7 +141,11 @@ bool SceneParser::parse_top_level_item() {
                 directive_default(next());
                 return true;
             }
-            if (w == "fog" || w == "media" || w == "rainbow") {
+            if (w == "fog") {
+                scene_.fogs.push_back(parse_fog_block(next()));
+                return true;
+            }
+            if (w == "media" || w == "rainbow") {
                 Token item = next();
                 skip_unsupported(item, Arity::Block, "atmospheric effect '" + w + "'");
                 return true;
@@ -172,6 +211,7 @@ void SceneParser::parse_global_settings(const Token& kw) {
             parse_float();
             continue;
         }
+        if (parse_material_global_setting()) continue;
         if (t.is_word("charset")) {
             Token item = next();
             unsupported(item, "global setting 'charset'");
@@ -254,6 +294,7 @@ void SceneParser::export_symbols() {
         if (sym->loc.file == "<image size>") continue;
         Declared d;
         d.loc = sym->loc;
+        if (const char* kind = material_kind(sym->value)) scene_.material_symbols[name] = kind;
         if (auto* n = std::get_if<Numeric>(&sym->value.data)) {
             if (n->size == 1) {
                 d.value = n->v[0];

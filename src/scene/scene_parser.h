@@ -414,9 +414,42 @@ class SceneParser {
     // ---- materials (parse_materials.cpp) ----
     Texture parse_texture_body(const Token& keyword);
     void parse_pigment_body(Pigment& pigment, const Token& keyword);
+    void parse_normal_body(Normal& normal, const Token& keyword);
     void parse_finish_block(Finish& finish, const Token& keyword);
+    void parse_interior_block(Interior& interior, const Token& keyword);
+    Material parse_material_block(Material base, const Token& keyword);
+    Fog parse_fog_block(const Token& keyword);
     std::vector<ColourMapEntry> parse_colour_map(const Token& keyword);
     void set_texture(ObjectNode& object, Texture texture, const Token& at);
+    /// The texture `top` laid over `texture` (POV-Ray's Link_Textures), an error at `at` when
+    /// a patterned texture is involved.
+    void layer_texture(Texture& texture, Texture top, const Token& at);
+    /// An object modifier of the materials (normal, interior, material, hollow) at the next
+    /// token: parses it into `object` and returns true, or returns false.
+    bool parse_material_modifier(ObjectNode& object);
+    /// A light source item beyond the colour and shadowless (spotlight, area_light, fade...):
+    /// parses it and returns true, or returns false.
+    bool parse_light_item(PointLight& light);
+    /// The value of a #declare of a normal, interior, material, fog or map, when the next
+    /// token starts one.
+    std::optional<Value> parse_material_value();
+    /// global_settings items of the materials (noise_generator, number_of_waves...).
+    bool parse_material_global_setting();
+
+    struct PatternTargets;  // where a pattern's maps and lists go (parse_materials.cpp)
+    enum class PatternUse { Pigment, Normal, Texture };
+    void parse_pattern(Pattern& pattern, PatternUse use, PatternTargets& targets,
+                       const Token& keyword);
+    bool parse_pattern_type(Pattern& pattern, PatternUse use, PatternTargets& targets);
+    void parse_blend_list(Pattern& pattern, int count, PatternUse use, PatternTargets& targets);
+    void parse_warp(Pattern& pattern, const Token& keyword);
+    void parse_image_map(Pattern& pattern, PatternUse use, const Token& keyword, double* amount);
+    std::vector<PigmentMapEntry> parse_pigment_map(const Token& keyword);
+    std::vector<NormalMapEntry> parse_normal_map(const Token& keyword);
+    std::vector<TextureMapEntry> parse_texture_map(const Token& keyword);
+    std::vector<SlopeMapEntry> parse_slope_map(const Token& keyword);
+    bool explicit_noise_generator_ = false;
+    bool skipped_pattern_ = false;  // lenient mode skipped an unsupported pattern
 
     // ---- the scene (parser.cpp) ----
     void parse_top_level();

@@ -13,6 +13,7 @@
 #include "scene/camera.h"
 #include "scene/function.h"
 #include "scene/lexer.h"
+#include "scene/material_value.h"
 #include "scene/object_tree.h"
 #include "scene/scene.h"
 
@@ -80,12 +81,11 @@ struct OpaqueValue {
                          // a kind mirage never evaluates
     FileLoc loc;         // where the reason lies (empty with the reason)
 };
-using UnsupportedValue = OpaqueValue;
 
 struct Value {
     std::variant<Numeric, std::string, ObjectNode, Texture, Pigment, Finish, Transform,
                  ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
-                 UnsupportedValue, SkySphere, std::shared_ptr<const FunctionCode>>
+                 OpaqueValue, SkySphere, MaterialValue, std::shared_ptr<const FunctionCode>>
         data;
 };
 

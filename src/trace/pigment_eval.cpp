@@ -2,8 +2,10 @@
 
 #include <cmath>
 
-#include "trace/shape_intersect.h"
+#include "scene/material_ops.h"
+#include "trace/image_map.h"
 #include "trace/single_precision.h"
+#include "trace/warps.h"
 
 namespace mirage {
 
@@ -27,24 +29,23 @@ PigmentColour mix(const PigmentColour& a, const PigmentColour& b, double fractio
     return out;
 }
 
-/// POV-Ray's Search_Blend_Map and the interpolation of Compute_Pigment.
-PigmentColour colour_map_lookup(const std::vector<ColourMapEntry>& map, double value) {
-    if (map.empty()) {
-        // POV-Ray's default map for gradient (Gray_Default_Map): black at 0, white at 1.
-        const double v = std::min(std::max(value, 0.0), 1.0);
-        PigmentColour c;
-        c.rgb = glm::dvec3(v);
-        return c;
-    }
+/// POV-Ray's Search_Blend_Map over positions held in single precision: the entries below
+/// and above `value` (the same one when `value` is on or beyond an entry at an end).
+template <class Entry>
+void search_map(const std::vector<Entry>& map, double value, std::size_t& prev, std::size_t& cur) {
     const std::size_t last = map.size() - 1;
-    std::size_t prev = 0;
-    std::size_t cur = 0;
+    prev = cur = 0;
     if (value >= to_single(map[last].position)) {
         prev = cur = last;
     } else {
         while (value > to_single(map[cur].position)) prev = cur++;
     }
     if (value == to_single(map[cur].position)) prev = cur;
+}
+
+PigmentColour colour_map_lookup(const std::vector<ColourMapEntry>& map, double value) {
+    std::size_t prev, cur;
+    search_map(map, value, prev, cur);
     const PigmentColour c_cur = from_colour(map[cur].colour);
     if (prev == cur) return c_cur;
     const double p0 = to_single(map[prev].position);
@@ -54,44 +55,73 @@ PigmentColour colour_map_lookup(const std::vector<ColourMapEntry>& map, double v
 
 }  // namespace
 
+double greyscale(const glm::dvec3& rgb) { return 0.297 * rgb.x + 0.589 * rgb.y + 0.114 * rgb.z; }
+
 double pattern_value(const Pigment& pigment, const glm::dvec3& p) {
-    switch (pigment.kind) {
-        case PigmentKind::Checker: {
-            // checker_pattern; POV-Ray sets its frequency to 0, so no wave is applied.
-            const int value =
-                static_cast<int>(std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
-                                 std::floor(p.z + kPovEpsilon));
-            return (value & 1) ? 1.0 : 0.0;
-        }
-        case PigmentKind::Gradient: {
-            // gradient_pattern with the axis normalised as POV-Ray's parser does, then
-            // Evaluate_TPat's ramp wave with frequency 1 and phase 0.
-            const double length = glm::length(pigment.gradient_axis);
-            const glm::dvec3 axis =
-                length > 0.0 ? pigment.gradient_axis * (1.0 / length) : pigment.gradient_axis;
-            double value = glm::dot(p, axis);
-            if (value > 1.0) value = std::fmod(value, 1.0);
-            value = std::fmod(value * 1.0 + 0.0, 1.00001);
-            if (value < 0.0) value -= std::floor(value);
-            return value;
-        }
-        case PigmentKind::Solid:
-            return 0.0;
+    return evaluate_pattern(pigment, p, default_pattern_context());
+}
+
+bool compute_pigment(const Pigment& pigment, const glm::dvec3& point, const PatternContext& ctx,
+                     PigmentColour& out) {
+    if (pigment.kind == PatternKind::Solid) {
+        out = from_colour(pigment.colour);
+        return true;
     }
-    return 0.0;
+    const glm::dvec3 p = warp_point(pigment, point);
+    if (pigment.kind == PatternKind::ImageMap) {
+        return image_map_colour(pigment, p, out);
+    }
+    if (pigment.kind == PatternKind::Average) {
+        // Do_Average_Pigments: the entries' weights are their positions.
+        out = PigmentColour{};
+        float total = 0.0f;
+        for (const PigmentMapEntry& e : pigment.pigment_map) {
+            PigmentColour c;
+            compute_pigment(*e.pigment, p, ctx, c);
+            const double w = to_single(e.position);
+            out.rgb += c.rgb * w;
+            out.filter += c.filter * w;
+            out.transmit += c.transmit * w;
+            total += static_cast<float>(w);
+        }
+        if (total != 0.0f) {
+            out.rgb /= static_cast<double>(total);
+            out.filter /= static_cast<double>(total);
+            out.transmit /= static_cast<double>(total);
+        }
+        return true;
+    }
+    const double value = evaluate_pattern(pigment, p, ctx);
+    if (!pigment.pigment_map.empty()) {
+        std::size_t prev, cur;
+        search_map(pigment.pigment_map, value, prev, cur);
+        // The entries are evaluated at the warped point (POV-Ray's Compute_Pigment).
+        bool found = compute_pigment(*pigment.pigment_map[cur].pigment, p, ctx, out);
+        if (prev != cur) {
+            PigmentColour below;
+            found |= compute_pigment(*pigment.pigment_map[prev].pigment, p, ctx, below);
+            const double p0 = to_single(pigment.pigment_map[prev].position);
+            const double p1 = to_single(pigment.pigment_map[cur].position);
+            out = mix(below, out, (value - p0) / (p1 - p0));
+        }
+        return found;
+    }
+    if (pigment.kind == PatternKind::Checker && pigment.colour_map.empty()) {
+        out = from_colour(pigment.checker[value > 0.5 ? 1 : 0]);
+        return true;
+    }
+    out = colour_map_lookup(
+        pigment.colour_map.empty() ? default_colour_map(pigment.kind) : pigment.colour_map, value);
+    return true;
 }
 
 PigmentColour evaluate_pigment(const Pigment& pigment, const glm::dvec3& world_point) {
-    if (pigment.kind == PigmentKind::Solid) return from_colour(pigment.colour);
-    const glm::dvec3 p = glm::dvec3(pigment.transform.inverse * glm::dvec4(world_point, 1.0));
-    const double value = pattern_value(pigment, p);
-    if (pigment.kind == PigmentKind::Checker) {
-        return from_colour(pigment.checker[value > 0.5 ? 1 : 0]);
-    }
-    return colour_map_lookup(pigment.colour_map, value);
+    PigmentColour c;
+    compute_pigment(pigment, world_point, default_pattern_context(), c);
+    return c;
 }
 
-glm::dvec3 sky_colour(const Scene& scene, const glm::dvec3& direction) {
+glm::dvec3 sky_colour(const Scene& scene, const glm::dvec3& direction, const PatternContext& ctx) {
     // ComputeSky for language version 3.7: layers as a layered texture of a genuine sphere.
     glm::dvec3 colour(0.0);
     glm::dvec3 filter(1.0);
@@ -100,7 +130,8 @@ glm::dvec3 sky_colour(const Scene& scene, const glm::dvec3& direction) {
         // POV-Ray transforms the direction as a point (MInvTransPoint).
         const glm::dvec3 p = glm::dvec3(sky.transform.inverse * glm::dvec4(direction, 1.0));
         for (auto it = sky.pigments.rbegin(); it != sky.pigments.rend(); ++it) {
-            const PigmentColour c = evaluate_pigment(*it, p);
+            PigmentColour c;
+            compute_pigment(*it, p, ctx, c);
             const double opacity = 1.0 - c.filter - c.transmit;
             colour += c.rgb * opacity * filter * to_single(sky.emission);
             filter *= c.rgb * c.filter + glm::dvec3(c.transmit);

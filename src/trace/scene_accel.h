@@ -84,6 +84,11 @@ class SceneAccel {
     const Aabb& item_box(int k) const { return boxes_[k]; }
 
     int primitive_count() const { return static_cast<int>(shapes_.size()); }
+    /// The compound objects (Scene::compounds) and POV-Ray's inside test of one of them.
+    int compound_count() const { return static_cast<int>(compounds_.size()); }
+    bool inside_compound_object(int compound, const glm::dvec3& point) const {
+        return inside_compound(compounds_[compound], shapes_, point);
+    }
     const PreparedShape& shape(int primitive) const { return shapes_[primitive]; }
     /// World bounds of the finite objects (empty when there are none).
     const Aabb& finite_bounds() const { return finite_bounds_; }

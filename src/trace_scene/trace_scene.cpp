@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -27,6 +28,19 @@ std::string lower_extension(const std::string& path) {
 }
 
 }  // namespace
+
+void apply_output_gamma(Image& image, const GlobalSettings& global) {
+    const bool legacy = global.language_version < 3.7 - 1e-9 && !global.assumed_gamma_given;
+    if (!legacy && global.assumed_gamma == 1.0) return;
+    for (float& v : image.pixels) {
+        if (legacy) {
+            // No gamma handling at all: the file holds the rendered values.
+            v = decode_srgb_value(std::min(std::max(v, 0.0f), 1.0f));
+        } else {
+            v = v > 0.0f ? std::pow(v, static_cast<float>(global.assumed_gamma)) : 0.0f;
+        }
+    }
+}
 
 std::string path_mode_name(PathMode mode) {
     switch (mode) {
@@ -120,6 +134,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     auto rendered = render(scene, rs, *propagator);
     if (!rendered) return rendered.error();
     report.render = std::move(*rendered);
+    apply_output_gamma(report.render.image, scene.global);
     if (!opt.output.empty()) {
         if (auto s = write_image(report.render.image, opt.output, &outputs); !s) return s.error();
         if (auto s = outputs.commit(); !s) return s.error();

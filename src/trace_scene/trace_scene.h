@@ -45,6 +45,12 @@ struct TraceReport {
     std::string output;         // the file written, if any
 };
 
+/// POV-Ray's output gamma: the rendered values are in the scene's working gamma
+/// (assumed_gamma), which the file's sRGB encoding undoes; a scene of #version 3.6 or older
+/// without assumed_gamma gets no gamma handling at all (the file holds the values as they
+/// are).  Turns `image` into the linear values that write_png encodes to those codes.
+void apply_output_gamma(Image& image, const GlobalSettings& global);
+
 /// Traces the scene.  On failure nothing was written and the message names the place at
 /// fault (file:line:column for the scene, the option for a bad value).
 Result<TraceReport> trace_scene(const TraceOptions& options);

@@ -11,6 +11,7 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "scene/parser.h"
+#include "trace/fog.h"
 #include "trace_scene/trace_scene.h"
 
 namespace mirage {
@@ -188,6 +189,76 @@ TEST(Ground, TheTracerSeesTheSameMirageOverALowerFloor) {
     EXPECT_GT(other->pixels_over, 200) << "PSNR " << other->psnr_db;
 }
 
+TEST(Ground, TheShadingIsTheSameOverALowerFloor) {
+    // What the shading places in space moves down with the scene: a spotlight's point_at, a
+    // patterned texture, a normal, a layered texture, an interior_texture and a ground fog
+    // (the scene's textures move with its floor; the fog's turbulence cannot move in POV-Ray:
+    // LowerSceneMovesEverythingWithAPlace checks it stays where it was).
+    auto scene = [](double floor, const std::string& ground_line) {
+        auto y = [&](double v) {
+            std::ostringstream s;
+            s << v + floor;
+            return s.str();
+        };
+        const std::string up = "translate <0, " + y(0) + ", 0>";
+        return "#version 3.7;\n#declare Mirage_Preset = \"paper\";\n" + ground_line +
+               "#include \"mirage.inc\"\n"
+               "global_settings { assumed_gamma 1.0 }\n"
+               "camera { location <0, " +
+               y(1.5) + ", 0> look_at <0, " + y(1.2) +
+               ", 10> right x * image_width / image_height angle 60 }\n"
+               "light_source { <-3, " +
+               y(8) + ", 2>, color rgb 1 spotlight point_at <0, " + y(0) +
+               ", 12> radius 12 falloff 20 }\n"
+               "light_source { <30, " +
+               y(40) +
+               ", -20>, color rgb 0.4 }\n"
+               "fog { fog_type 2 distance 30 color rgb <0.8, 0.8, 0.9> fog_offset " +
+               y(0.3) +
+               " fog_alt 0.6 }\n"
+               "plane { y, " +
+               y(0) +
+               " texture { pigment { bozo color_map { [0 rgb <0.8, 0.7, 0.5>] [1 rgb "
+               "<0.4, 0.3, 0.2>] } scale 0.7 } normal { bumps 0.6 scale 0.3 } " +
+               up +
+               " } }\n"
+               "sphere { <-2, " +
+               y(1.2) +
+               ", 12>, 1 texture { pigment { rgb <0.2, 0.4, 0.9> } } texture { pigment { "
+               "gradient y color_map { [0.5 rgbt 1] [0.5 rgb <1, 0.9, 0.1>] } scale 0.5 } " +
+               up +
+               " } }\n"
+               "cylinder { <2, " +
+               y(0) + ", 12>, <2, " + y(2) +
+               ", 12>, 0.9 open texture { pigment { rgb 0.9 } } interior_texture { pigment "
+               "{ marble color_map { [0 rgb <0.9, 0.1, 0.1>] [1 rgb <0.1, 0.9, 0.1>] } scale "
+               "0.4 } " +
+               up + " } }\n";
+    };
+    const std::string dir = temp_dir("shading");
+    const std::string at_zero = write_scene(dir, "zero.pov", scene(0.0, ""));
+    const std::string lowered =
+        write_scene(dir, "lowered.pov", scene(-1.0, "#declare Mirage_Ground_Height = -1;\n"));
+    auto trace = [&](const std::string& file, const std::string& png) {
+        TraceOptions o;
+        o.scene = file;
+        o.output = dir + "/" + png;
+        o.width = 80;
+        o.height = 60;
+        o.progress = false;
+        auto r = trace_scene(o);
+        EXPECT_TRUE(r.ok()) << r.message();
+        auto im = read_image(o.output);
+        EXPECT_TRUE(im.ok());
+        return im.ok() ? *im : Image(1, 1);
+    };
+    const Image a = trace(at_zero, "zero.png");
+    const Image b = trace(lowered, "lowered.png");
+    auto same = compare_images(a, b, 2.5 / 255.0);
+    ASSERT_TRUE(same.ok());
+    EXPECT_LE(same->pixels_over, 3) << "PSNR " << same->psnr_db;
+}
+
 TEST(Ground, LowerSceneMovesEverythingWithAPlace) {
     auto s = parse_scene_text(R"(
 camera { location <0, 2, -5> look_at <0, 2, 0> }
@@ -203,6 +274,41 @@ sphere { <0, 3, 0>, 1 pigment { gradient y } }
     EXPECT_DOUBLE_EQ(scene.lights[0].location.y, 7.5);
     EXPECT_DOUBLE_EQ(scene.primitives[0].transform.matrix[3][1], -2.5);
     EXPECT_DOUBLE_EQ(scene.primitives[0].texture.pigment.transform.matrix[3][1], -2.5);
+}
+
+TEST(Ground, LowerSceneKeepsTheShadingWhereItWas) {
+    auto s = parse_scene_text(R"(
+camera { location <0, 2, -5> look_at <0, 2, 0> }
+light_source { <1, 10, 1> color rgb 1 spotlight point_at <0, 3, 4> }
+fog { fog_type 2 distance 5 color rgb 0.8 fog_offset 1.5 fog_alt 0.5 turbulence 0.7 }
+cylinder { <0, 3, 0>, <0, 4, 0>, 1 open
+           texture { pigment { rgb 1 } normal { bumps 0.5 } }
+           interior_texture { pigment { marble } } }
+)",
+                              "scene.pov", ParseOptions{});
+    ASSERT_TRUE(s.ok()) << s.message();
+    Scene scene = *s;
+    lower_scene(scene, 2.5);
+    EXPECT_DOUBLE_EQ(scene.lights[0].point_at.y, 0.5);
+    const Primitive& p = scene.primitives[0];
+    ASSERT_TRUE(p.texture.normal && p.interior_texture);
+    EXPECT_DOUBLE_EQ(p.texture.normal->transform.matrix[3][1], -2.5);
+    EXPECT_DOUBLE_EQ(p.interior_texture->pigment.transform.matrix[3][1], -2.5);
+    // The fog seen along a ray is the same ray's fog before lowering, its turbulence too.
+    const glm::dvec3 origin(0.3, 2.0, -5.0), direction = glm::normalize(glm::dvec3(0.1, -0.2, 1));
+    const glm::dvec3 down(0.0, 2.5, 0.0);
+    for (double depth : {1.0, 3.0, 7.0}) {
+        const glm::dvec3 before = apply_fog(s->fogs, origin, direction, depth, glm::dvec3(0.2), 2);
+        const glm::dvec3 after =
+            apply_fog(scene.fogs, origin - down, direction, depth, glm::dvec3(0.2), 2);
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(after[i], before[i], 1e-12) << depth;
+    }
+    // Without the turbulence's correction the fog would differ: the check can fail.
+    std::vector<Fog> moved = scene.fogs;
+    moved[0].lowered_by = glm::dvec3(0.0);
+    const glm::dvec3 before = apply_fog(s->fogs, origin, direction, 7.0, glm::dvec3(0.2), 2);
+    const glm::dvec3 wrong = apply_fog(moved, origin - down, direction, 7.0, glm::dvec3(0.2), 2);
+    EXPECT_GT(glm::length(wrong - before), 1e-6);
 }
 
 }  // namespace

@@ -151,15 +151,19 @@ TEST(Errors, UnsupportedInStrictMode) {
               "scene.pov:1:1: unsupported object 'isosurface'\n"
               "isosurface { function { x } }\n"
               "^");
-    EXPECT_EQ(parse_error("sphere { 0, 1 normal { bumps 0.5 } }"),
-              "scene.pov:1:15: unsupported modifier 'normal' in 'sphere'\n"
-              "sphere { 0, 1 normal { bumps 0.5 } }\n"
+    EXPECT_EQ(parse_error("sphere { 0, 1 photons { target } }"),
+              "scene.pov:1:15: unsupported modifier 'photons' in 'sphere'\n"
+              "sphere { 0, 1 photons { target } }\n"
               "              ^");
-    EXPECT_EQ(parse_error("light_source { 0, 1 spotlight }"),
-              "scene.pov:1:21: unsupported light source modifier 'spotlight' (only point "
+    EXPECT_EQ(parse_error("light_source { 0, 1 looks_like { sphere { 0, 1 } } }"),
+              "scene.pov:1:21: unsupported light source modifier 'looks_like' (only point "
               "lights)\n"
-              "light_source { 0, 1 spotlight }\n"
+              "light_source { 0, 1 looks_like { sphere { 0, 1 } } }\n"
               "                    ^");
+    EXPECT_EQ(parse_error("sphere { 0, 1 pigment { julia <0.3, 0.5>, 30 } }"),
+              "scene.pov:1:25: unsupported pattern 'julia'\n"
+              "sphere { 0, 1 pigment { julia <0.3, 0.5>, 30 } }\n"
+              "                        ^");
     EXPECT_EQ(parse_error("global_settings { radiosity { } }"),
               "scene.pov:1:19: unsupported global setting 'radiosity'\n"
               "global_settings { radiosity { } }\n"

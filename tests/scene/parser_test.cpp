@@ -58,18 +58,18 @@ isosurface {
     max_gradient 4
 }
 #declare Blob = blob { threshold 0.5 sphere { 0, 1, 1 } }
-light_source { <5, 5, -5>, rgb 1 fade_distance 10 }
+light_source { <5, 5, -5>, rgb 1 photons { refraction on } }
 sphere {
     <0, 1, 0>, 1
-    normal { bumps 0.5 scale 0.1 }
-    pigment { marble turbulence 0.5 color_map { [0 rgb 1] [1 rgb 0] } }
-    finish { phong 1 metallic }
+    photons { target }
+    pigment { julia <0.3, 0.5>, 30 color_map { [0 rgb 1] [1 rgb 0] } }
+    finish { phong 1 subsurface { translucency 0.5 } }
     hollow
-    interior { ior 1.5 }
+    interior { ior 1.5 media { absorption 1 } }
     translate x
 }
 union { object { Blob } plane { y, 0 } }
-fog { distance 10 color rgb 1 }
+media { scattering { 1, 0.1 } }
 )";
     auto strict = parse_scene_text(scene, "scene.pov", ParseOptions{});
     ASSERT_FALSE(strict.ok());
@@ -94,12 +94,12 @@ fog { distance 10 color rgb 1 }
     std::vector<std::string> expected{
         "object 'isosurface' @3:1",
         "object 'blob' @8:17",
-        "light source modifier 'fade_distance' (only point lights) @9:34",
-        "modifier 'normal' in 'sphere' @12:5",
-        "pigment pattern 'marble' @13:15",
-        "finish item 'metallic' @14:22",
-        "modifier 'interior' in 'sphere' @16:5",
-        "atmospheric effect 'fog' @20:1",
+        "light source modifier 'photons' (only point lights) @9:34",
+        "modifier 'photons' in 'sphere' @12:5",
+        "pattern 'julia' @13:15",
+        "finish item 'subsurface' @14:22",
+        "interior item 'media' @16:24",
+        "atmospheric effect 'media' @20:1",
     };
     EXPECT_EQ(skipped, expected);
 }

@@ -70,6 +70,9 @@ inline std::string pigment_text(const Pigment& p) {
             }
             out << transform_text(p.transform.matrix);
             break;
+        default:
+            out << "/* pattern not written */";
+            break;
     }
     out << " }";
     return out.str();

@@ -57,7 +57,10 @@ inline Pigment gradient(const glm::dvec3& axis, std::vector<ColourMapEntry> map,
 }
 
 inline Texture texture(const Pigment& pigment, const Finish& finish = {}) {
-    return Texture{pigment, finish};
+    Texture t;
+    t.pigment = pigment;
+    t.finish = finish;
+    return t;
 }
 
 inline Primitive primitive(Shape shape, const Texture& tex, const Transform& t = {}) {

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <mutex>
 
 #include "scene_builders.h"
+#include "trace/curved_propagator.h"
 #include "trace/single_precision.h"
 
 namespace mirage {
@@ -55,13 +57,16 @@ TEST(Shading, LitSphereMatchesPovRaysFormula) {
         const glm::dvec3 l = glm::normalize(glm::dvec3(0.0, 0.0, -10.0) - p);
         const double cos_in = glm::dot(n, l);
         glm::dvec3 expected = pigment * to_single(glm::dvec3(0.1));
-        expected += std::pow(cos_in, 2.0) * 0.6 * pigment * light_colour;
+        // POV-Ray holds the finish's values in single precision.
+        expected += std::pow(cos_in, 2.0) * to_single(0.6) * pigment * light_colour;
         const glm::dvec3 r = d - 2.0 * glm::dot(d, n) * n;
         // Phong only where the mirror direction leans toward the light (pow of an even
         // exponent would hide the sign).
-        if (glm::dot(r, l) > 0.0) expected += 0.7 * std::pow(glm::dot(r, l), 40.0) * light_colour;
+        if (glm::dot(r, l) > 0.0) {
+            expected += to_single(0.7) * std::pow(glm::dot(r, l), 40.0) * light_colour;
+        }
         const glm::dvec3 h = glm::normalize(-d + l);
-        expected += 0.5 * std::pow(glm::dot(h, n), 1.0 / 0.05) * light_colour;
+        expected += 0.5 * std::pow(glm::dot(h, n), to_single(1.0 / 0.05)) * light_colour;
         const glm::dvec3 got = rig.trace(origin, d);
         EXPECT_NEAR(glm::length(got - expected), 0.0, 1e-9) << "x0 = " << x0;
     }
@@ -135,7 +140,7 @@ TEST(Shading, ShadowsAreCastAndSkippedAsPovRayDoes) {
     const glm::dvec3 p = at(fill, under, &fill_counters);
     EXPECT_EQ(fill_counters.shadow_rays, 0u);
     const glm::dvec3 l = glm::normalize(glm::dvec3(0.0, 10.0, 0.0) - under);
-    const double diffuse = 0.6 * glm::dot(glm::dvec3(0, 1, 0), l);
+    const double diffuse = to_single(0.6) * glm::dot(glm::dvec3(0, 1, 0), l);
     EXPECT_NEAR(p.x, static_cast<double>(0.1f) + diffuse, 1e-9);
     EXPECT_LT(p.x, lit);  // the lit, non-shadowless case had a highlight on top
 }
@@ -213,35 +218,70 @@ TEST(Shading, ZeroRoughnessIsPovRaysExponentZero) {
                 1e-12);
 }
 
-TEST(CheckSupported, RefusesTransparencyAndOtherGammas) {
+/// Records the rays the shader hands to the propagator (the rays in the air) and follows
+/// them along the paper's curved paths.
+class RecordingCurved final : public Propagator {
+  public:
+    explicit RecordingCurved(const CurvedSettings& s) : curved_(s) {}
+    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override {
+        PathHit hit = curved_.propagate(accel, start);
+        std::lock_guard<std::mutex> lock(mutex_);
+        starts.push_back(start);
+        hits.push_back(hit);
+        return hit;
+    }
+    mutable std::vector<RayStart> starts;
+    mutable std::vector<PathHit> hits;
+
+  private:
+    CurvedPropagator curved_;
+    mutable std::mutex mutex_;
+};
+
+TEST(Shading, RaysThroughGlassGoStraightInsideAndCurvedOutside) {
+    CurvedSettings curved;
+    curved.profile = *preset_profile("paper");
+    curved.tolerance_rad = 1e-4;
+    const RecordingCurved recording(curved);
     Scene s;
-    Primitive glass = primitive(Sphere{}, texture(solid(Colour{glm::dvec3(1.0), 0.0, 0.7})));
-    glass.loc = FileLoc{"glass.pov", 12, 5};
-    s.primitives.push_back(glass);
-    auto status = check_supported(s);
-    ASSERT_FALSE(status.ok());
-    EXPECT_EQ(status.message(),
-              "glass.pov:12:5: pigment with filter or transmit: transparency is not supported by "
-              "the built-in tracer");
-    s.primitives[0].texture.pigment = checker(rgb(1, 1, 1), Colour{glm::dvec3(1.0), 0.5, 0.0});
-    EXPECT_FALSE(check_supported(s).ok());
-    s.primitives[0].texture.pigment = solid(rgb(1, 1, 1));
-    EXPECT_TRUE(check_supported(s).ok());
-
-    s.file = "g.pov";
-    s.global.assumed_gamma = 2.2;
-    status = check_supported(s);
-    ASSERT_FALSE(status.ok());
-    EXPECT_EQ(
-        status.message(),
-        "g.pov: assumed_gamma 2.2 is not supported by the built-in tracer (use assumed_gamma 1.0)");
-
-    // The sky may be transparent: POV-Ray's layering is implemented.
-    s.global.assumed_gamma = 1.0;
-    SkySphere sky;
-    sky.pigments.push_back(solid(Colour{glm::dvec3(1.0), 0.0, 0.5}));
-    s.sky_sphere = sky;
-    EXPECT_TRUE(check_supported(s).ok());
+    Finish clear;
+    clear.ambient = glm::dvec3(0.0);
+    clear.diffuse = 0.0;
+    Primitive slab = primitive(Box{{-50.0, -5.0, 8.0}, {50.0, 20.0, 9.0}},
+                               texture(solid(Colour{glm::dvec3(1.0), 1.0, 0.0}), clear));
+    Interior glass;
+    glass.ior = 1.5;
+    slab.interior = std::make_shared<const Interior>(glass);
+    s.primitives.push_back(slab);
+    s.primitives.push_back(primitive(Plane{{0.0, 0.0, 1.0}, 20.0}, Texture{}));
+    const SceneAccel accel = *SceneAccel::build(s);
+    const Shader shader(s, accel, recording);
+    TraceCounters counters;
+    const glm::dvec3 eye(0.0, 1.5, 0.0);
+    shader.trace_camera_ray(eye, glm::normalize(glm::dvec3(0.1, -0.08, 1.0)), counters);
+    // The camera ray, then the ray leaving the slab: the one inside went straight.
+    ASSERT_EQ(recording.starts.size(), 2u);
+    const PathHit& entry = recording.hits[0];
+    const RayStart& out = recording.starts[1];
+    ASSERT_TRUE(entry.hit);
+    EXPECT_NEAR(entry.surface.point.z, 8.0, 1e-9);
+    EXPECT_NEAR(out.origin.z, 9.0, 1e-9);
+    // Inside, the ray is the straight refracted ray from the entry point (Snell's law with
+    // 1 / 1.5 about the slab's normal facing the ray, -z).
+    const glm::dvec3 d = entry.direction;
+    const double eta = 1.0 / 1.5, cosi = d.z;
+    const glm::dvec3 inside =
+        glm::normalize(eta * d + (eta * cosi - std::sqrt(1.0 - eta * eta * (1.0 - cosi * cosi))) *
+                                     glm::dvec3(0.0, 0.0, -1.0));
+    const glm::dvec3 expected_exit = entry.surface.point + (1.0 / inside.z) * inside;
+    EXPECT_NEAR(glm::length(out.origin - expected_exit), 0.0, 1e-9);
+    // Out of the slab the ray regains the incoming direction, and its allowance counts the
+    // path from the eye.
+    EXPECT_NEAR(glm::length(out.direction - d), 0.0, 1e-9);
+    EXPECT_NEAR(out.travelled, entry.length + glm::length(expected_exit - entry.surface.point),
+                1e-9);
+    ASSERT_TRUE(recording.hits[1].hit);
+    EXPECT_EQ(recording.hits[1].surface.primitive, 1);
 }
 
 }  // namespace
