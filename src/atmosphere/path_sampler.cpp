@@ -242,4 +242,176 @@ SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& st) {
     return out;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Sampling near what the path can meet (sample_exact_path_near).
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+class ExactNearSampler {
+  public:
+    ExactNearSampler(const ExactPath& path, const SampleSettings& st,
+                     const PathObstacles* obstacles, SampledPath& out, double dz_ground)
+        : path_(path), st_(st), obstacles_(obstacles), out_(out), dz_ground_(dz_ground) {}
+
+    double height(double dz) const { return dz >= dz_ground_ ? 0.0 : path_.height_at(dz); }
+
+    /// Where a stretch ending there must keep the tolerance whatever else: on a surface at the
+    /// ground.
+    void set_ground_end(double dz) { ground_end_ = dz; }
+
+    /// Samples the monotone run from (a, ya) to (b, yb).
+    void run(double a, double ya, double b, double yb) {
+        if (!(b > a)) return;
+        int e = 0;
+        std::frexp(b - a, &e);
+        node({a, ya}, {b, yb}, std::ldexp(1.0, e));
+    }
+
+  private:
+    struct Point {
+        double dz, y;
+    };
+
+    bool fine(const Point& a, const Point& b, double m) const {
+        return chord_within(m, a.dz, b.dz, allowed_error(path_, st_, a.dz, a.y), st_);
+    }
+
+    // Whether nothing the path can meet lies near the stretch from a to b (within one monotone
+    // run, so between the heights of its ends, and within m w^2 / 8 of its chord); then its
+    // length, estimated.
+    bool clear(const Point& a, const Point& b, double m, double& length) const {
+        const double w = b.dz - a.dz;
+        const double dy = b.y - a.y;
+        const double bulge = 0.125 * m * w * w;
+        const double y_lo = std::min(a.y, b.y), y_hi = std::max(a.y, b.y);
+        const double y0 = path_.y0();
+        const double far_dy = std::max(std::fabs(y_hi - y0), std::fabs(y_lo - y0));
+        const double reach = std::sqrt(b.dz * b.dz + far_dy * far_dy);
+        const double slack = 1e-9 * (1.0 + b.dz + std::max(std::fabs(y_lo), std::fabs(y_hi)));
+        const double margin =
+            st_.tolerance_m + st_.tolerance_rad * (st_.start_distance + reach) + slack;
+        const PathLine chord{a.dz, a.y, dy / w};
+        PathRegion region;
+        region.dz_lo = a.dz;
+        region.dz_hi = b.dz;
+        region.lower = {PathLine{a.dz, a.y - bulge - margin, chord.slope},
+                        PathLine{a.dz, y_lo - margin, 0.0}};
+        region.upper = {PathLine{a.dz, a.y + bulge + margin, chord.slope},
+                        PathLine{a.dz, y_hi + margin, 0.0}};
+        if (obstacles_->may_meet(region)) return false;
+        // The arc exceeds its chord by about w theta^2 / 24 for a turn theta (under 1e-6 of
+        // it for rays within a few degrees of level): the chord is the estimate.
+        length = std::sqrt(w * w + dy * dy);
+        return true;
+    }
+
+    void emit(const Point& b, double clear_length) {
+        out_.points.push_back({b.dz, b.y});
+        if (obstacles_) out_.clear_length.push_back(clear_length);
+    }
+
+    // The grid node [a.dz, a.dz + size], cut at the run's end b.dz.
+    void node(const Point& a, const Point& b, double size) {
+        const double m = path_.curvature_bound(a.y, b.y);
+        if (fine(a, b, m)) {
+            emit(b, 0.0);
+            return;
+        }
+        double length = 0.0;
+        if (obstacles_ && b.dz != ground_end_ && clear(a, b, m, length)) {
+            emit(b, length);
+            return;
+        }
+        while (a.dz + 0.5 * size >= b.dz) size *= 0.5;  // the node's part before the end
+        const double mid = a.dz + 0.5 * size;
+        MIRAGE_CHECK(mid > a.dz && mid < b.dz);
+        const Point p{mid, height(mid)};
+        node(a, p, 0.5 * size);
+        node(p, b, 0.5 * size);
+    }
+
+    const ExactPath& path_;
+    const SampleSettings& st_;
+    const PathObstacles* obstacles_;
+    SampledPath& out_;
+    double dz_ground_;
+    double ground_end_ = std::numeric_limits<double>::quiet_NaN();
+};
+
+}  // namespace
+
+void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
+                            const PathObstacles* obstacles, SampledPath& out) {
+    MIRAGE_CHECK(st.tolerance_m > 0.0 || st.tolerance_rad > 0.0);
+    MIRAGE_CHECK(st.max_dz >= 0.0);
+    if (path.straight()) {
+        out = sample_exact_path(path, st);
+        out.clear_length.clear();
+        out.end_clear = false;
+        return;
+    }
+    out.points.clear();
+    out.clear_length.clear();
+    out.end = PathEnd::Straight;
+    out.end_slope = 0.0;
+    out.end_clear = false;
+    out.turns = false;
+    out.dz_turn = 0.0;
+    const double y0 = path.y0();
+    out.points.push_back({0.0, y0});
+
+    const double max_dz = std::min(st.max_dz, kMaxSampleDistance);
+    const bool ground = path.hits_ground() && path.dz_ground() <= max_dz;
+    double end = ground ? path.dz_ground() : max_dz;
+    ExactNearSampler sampler(path, st, obstacles, out, ground ? path.dz_ground() : kInf);
+    if (ground && obstacles && obstacles->ground()) sampler.set_ground_end(path.dz_ground());
+
+    // The turning points before the end split the path into monotone runs.
+    std::vector<double> starts{0.0};
+    const int count = path.turning_point_count();
+    for (int k = 0; count < 0 || k < count; ++k) {
+        const double t = path.turning_point(k).dz;
+        if (t >= end) break;
+        if (t > starts.back()) starts.push_back(t);
+    }
+    if (starts.size() > 1) {
+        out.turns = true;
+        out.dz_turn = starts[1];
+    }
+    // An escaping path goes straight once its asymptote keeps the tolerance: from the first
+    // distance on a doubling grid after its last turn where the departure bound allows it.
+    bool straight = false;
+    if (!ground && path.fate() == PathFate::Escape && std::isfinite(path.asymptotic_slope())) {
+        const double from = starts.back();
+        const double scale = std::max(1e-3, 1e-3 * (from + std::fabs(y0)));
+        for (double step = scale; from + step < end; step *= 2.0) {
+            const double t = from + step;
+            if (path.asymptote_departure(t) <= allowed_error(path, st, t, path.height_at(t))) {
+                end = t;
+                straight = true;
+                break;
+            }
+        }
+    }
+    double a = 0.0, ya = y0;
+    for (size_t k = 1; k <= starts.size(); ++k) {
+        const double b = k < starts.size() ? starts[k] : end;
+        const double yb = sampler.height(b);
+        sampler.run(a, ya, b, yb);
+        a = b;
+        ya = yb;
+    }
+    if (ground) {
+        out.end = PathEnd::Ground;
+    } else if (straight) {
+        out.end = PathEnd::Straight;
+        out.end_slope = path.asymptotic_slope();
+    } else {
+        out.end = PathEnd::Cut;
+        out.end_slope = path.slope_at(out.points.back().x);
+    }
+}
+
 }  // namespace mirage

@@ -24,4 +24,18 @@ SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& setti
 /// The allowance at horizontal distance dz where the exact height is y.
 double allowed_error(const ExactPath& path, const SampleSettings& settings, double dz, double y);
 
+/// Samples the exact path to the tolerance wherever it may meet something, and coarsely where
+/// nothing can lie near it (sample_path_near of sampler.h, for any exact path).  Every monotone
+/// run (from the start or a turning point to the next turning point, the ground, the cut, or
+/// where the straight end keeps the tolerance) is cut in halves on a grid of powers of two from
+/// the run's start; a half is kept whole once its chord is within the tolerance (the chord
+/// bound with the path's curvature bound over the heights the half spans), or, with obstacles,
+/// once the band about its chord that holds the half and everything within the allowance of it
+/// (the chord +- max|y''| L^2 / 8 and the allowance, within the heights of its ends) meets
+/// nothing: marked in clear_length.  A half that ends on a surface at the ground always keeps
+/// the tolerance.  Without obstacles every segment keeps the tolerance, and with them the
+/// segments that do are the same ones.  `path`'s storage is reused.
+void sample_exact_path_near(const ExactPath& path, const SampleSettings& settings,
+                            const PathObstacles* obstacles, SampledPath& out);
+
 }  // namespace mirage

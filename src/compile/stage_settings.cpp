@@ -92,6 +92,10 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
         ctx.settings.declared = true;
     }
 
+    if (ctx.settings.air && !opt.profile)
+        return make_error(opt.scene + ": real air (" + ctx.settings.profile_label +
+                          ") is traced by `mirage trace`; the layer compiler fits the "
+                          "exponential profiles only so far (docs/atmospheres.md)");
     const Scene& scene = ctx.scene;
     ctx.camera = scene.camera;
     ctx.eye_y = ctx.camera.location.y;

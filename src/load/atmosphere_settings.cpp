@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <memory>
 #include <vector>
 
+#include "atmosphere/exact_path.h"
+#include "atmosphere/general_profile.h"
 #include "util/format.h"
 
 namespace mirage {
@@ -26,11 +30,35 @@ const char* const kKnown[] = {
     "Mirage_Ground_Height",
     "Mirage_Layers",
     "Mirage_Layer_Count",
+    // real air (the general engine)
+    "Mirage_Sounding",
+    "Mirage_Sounding_Max_Gap",
+    "Mirage_Lapse",
+    "Mirage_Inversion",
+    "Mirage_Inversion_Smoothing",
+    "Mirage_Index",
+    "Mirage_Wavelength",
+    "Mirage_Humidity",
+    "Mirage_Top",
+    "Mirage_Earth_Radius",
     // mirage.inc's own and the compiled layers' names
     "Mirage_Inc_Temp",
     "Mirage_Compiled",
     "Mirage_Layer_Texture",
 };
+
+// Every known name: kKnown and the numbered inversions (Mirage_Inversion_2, ...).
+const std::vector<std::string>& known_names() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> v(std::begin(kKnown), std::end(kKnown));
+        for (int k = 2; k <= kMaxInversions; ++k) {
+            v.push_back("Mirage_Inversion_" + std::to_string(k));
+            v.push_back("Mirage_Inversion_Smoothing_" + std::to_string(k));
+        }
+        return v;
+    }();
+    return names;
+}
 
 std::string where(const Declared& d) { return to_string(d.loc) + ": "; }
 
@@ -77,6 +105,19 @@ class Reader {
         return std::optional<std::string>(std::get<std::string>(d->value));
     }
 
+    Result<std::optional<glm::dvec3>> vector(const char* name, const char* example) const {
+        const Declared* d = find(name);
+        if (!d) return std::optional<glm::dvec3>();
+        if (!std::holds_alternative<glm::dvec3>(d->value))
+            return make_error(where(*d) + std::string(name) + " must be a vector, e.g. " + example);
+        const glm::dvec3 v = std::get<glm::dvec3>(d->value);
+        if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
+            return make_error(where(*d) + std::string(name) + " must have finite components");
+        return std::optional<glm::dvec3>(v);
+    }
+
+    bool has(const char* name) const { return find(name) != nullptr; }
+
     std::string at(const char* name) const {
         const Declared* d = find(name);
         return d ? where(*d) : scene_.file + ": ";
@@ -91,15 +132,183 @@ class Reader {
     if (!var##_result) return var##_result.error(); \
     auto var = *var##_result
 
+// A number within [lo, hi], named with its place, its limits and its unit.
+Result<std::optional<double>> ranged(const Reader& r, const char* name, double lo, double hi,
+                                     const char* unit) {
+    auto v = r.number(name);
+    if (!v) return v.error();
+    if (*v && !(**v >= lo && **v <= hi))
+        return make_error(r.at(name) + name + " = " + shortest(**v) + " must be from " +
+                          shortest(lo) + " to " + shortest(hi) + " (" + unit + ")");
+    return *v;
+}
+
+// Whether the scene declares real air that only the general engine traces.
+bool real_air_forms_declared(const Reader& r) {
+    for (const char* name : {"Mirage_Sounding", "Mirage_Sounding_Max_Gap", "Mirage_Lapse",
+                             "Mirage_Inversion", "Mirage_Inversion_Smoothing", "Mirage_Index",
+                             "Mirage_Wavelength", "Mirage_Humidity", "Mirage_Top"})
+        if (r.has(name)) return true;
+    return false;
+}
+
+std::string inversion_name(int k, bool smoothing) {
+    std::string name = smoothing ? "Mirage_Inversion_Smoothing" : "Mirage_Inversion";
+    return k == 1 ? name : name + "_" + std::to_string(k);
+}
+
+// Real air: the spec of the general engine, from a sounding or the temperature forms, or an
+// exponential profile declared already (s.profile) on the curved Earth.
+Status read_real_air(const Reader& r, const Scene& scene, AtmosphereSettings& s) {
+    AirSpec spec;
+    std::string label;
+    // The place that names the air as a whole, for what make_air_model finds.
+    std::string first = r.at("Mirage_Earth_Radius");
+    MIRAGE_TRY(radius, r.number("Mirage_Earth_Radius"));
+    if (radius && !(*radius == 0.0 || (*radius >= kMinEarthRadiusM && *radius <= kMaxEarthRadiusM)))
+        return make_error(r.at("Mirage_Earth_Radius") +
+                          "Mirage_Earth_Radius = " + shortest(*radius) +
+                          " must be 0 (flat ground) or from " + shortest(kMinEarthRadiusM) +
+                          " to " + shortest(kMaxEarthRadiusM) + " (m)");
+    if (s.declared && !real_air_forms_declared(r)) {
+        // An exponential profile: on flat ground the closed forms, as without the setting.
+        if (*radius == 0.0) return Ok{};
+        spec.source = AirSpec::Source::Exponential;
+        spec.exponential = s.profile;
+        spec.earth_radius_m = *radius;
+        s.air = std::make_shared<const AirSpec>(spec);
+        s.profile_label += ", Earth radius " + shortest(*radius / 1000.0) + " km";
+        return Ok{};
+    }
+    MIRAGE_TRY(sounding, r.text("Mirage_Sounding", "road.csv"));
+    MIRAGE_TRY(gap, ranged(r, "Mirage_Sounding_Max_Gap", 1e-3, kMaxFormHeightM, "m"));
+    MIRAGE_TRY(lapse, ranged(r, "Mirage_Lapse", -kMaxLapseKPerKm, kMaxLapseKPerKm, "K per km"));
+    MIRAGE_TRY(t_air, ranged(r, "Mirage_Air_Temperature", 100.0, 400.0, "K"));
+    MIRAGE_TRY(t_ground, ranged(r, "Mirage_Ground_Temperature", 100.0, 400.0, "K"));
+    MIRAGE_TRY(height, ranged(r, "Mirage_Scale_Height", kMinScaleHeightM, kMaxFormHeightM, "m"));
+    MIRAGE_TRY(pressure, ranged(r, "Mirage_Pressure", 1.0, 2000.0, "hPa"));
+    MIRAGE_TRY(index, r.text("Mirage_Index", "ciddor"));
+    MIRAGE_TRY(wavelength, ranged(r, "Mirage_Wavelength", 300.0, 1690.0, "nm, Ciddor's range"));
+    MIRAGE_TRY(humidity, ranged(r, "Mirage_Humidity", 0.0, 100.0, "%"));
+    MIRAGE_TRY(top, ranged(r, "Mirage_Top", 1e-3, kMaxFormHeightM, "m"));
+    std::vector<Inversion> inversions;
+    for (int k = 1; k <= kMaxInversions; ++k) {
+        const std::string name = inversion_name(k, false);
+        const std::string smooth_name = inversion_name(k, true);
+        MIRAGE_TRY(v, r.vector(name.c_str(), "<50, 60, 2> (bottom m, top m, rise K)"));
+        MIRAGE_TRY(smooth,
+                   ranged(r, smooth_name.c_str(), 0.0, kMaxSmoothingM, "m, standard deviation"));
+        if (!v) {
+            if (smooth)
+                return make_error(r.at(smooth_name.c_str()) + smooth_name + " without " + name);
+            for (int j = k + 1; j <= kMaxInversions; ++j) {
+                const std::string later = inversion_name(j, false);
+                if (r.has(later.c_str()))
+                    return make_error(r.at(later.c_str()) + later + " without " + name +
+                                      " (number them without gaps)");
+            }
+            break;
+        }
+        const std::string at = r.at(name.c_str()) + name + " = <" + shortest(v->x) + ", " +
+                               shortest(v->y) + ", " + shortest(v->z) + ">: ";
+        if (!(v->x >= 0.0 && v->y > v->x && v->y <= kMaxFormHeightM))
+            return make_error(at +
+                              "its bottom must be at least 0 and its top above the bottom "
+                              "and at most " +
+                              shortest(kMaxFormHeightM) + " m");
+        if (!(std::abs(v->z) <= kMaxFormDeltaK))
+            return make_error(at + "its temperature rise must be from " +
+                              shortest(-kMaxFormDeltaK) + " to " + shortest(kMaxFormDeltaK) + " K");
+        inversions.push_back({v->x, v->y, v->z, smooth ? *smooth : 0.0});
+        if (first == r.at("Mirage_Earth_Radius")) first = r.at(name.c_str());
+    }
+    if (sounding) {
+        if (lapse || !inversions.empty() || t_air || t_ground || height)
+            return make_error(r.at("Mirage_Sounding") +
+                              "Mirage_Sounding gives the whole profile: leave out Mirage_Lapse, "
+                              "Mirage_Inversion and the Mirage_..._Temperature values");
+        namespace fs = std::filesystem;
+        fs::path path(*sounding);
+        if (path.is_relative()) path = fs::path(scene.file).parent_path() / path;
+        SoundingRules rules;
+        if (gap) rules.max_gap_m = *gap;
+        auto read = read_sounding(path.string(), rules);
+        if (!read)
+            return make_error(r.at("Mirage_Sounding") + "Mirage_Sounding: " + read.message());
+        spec.source = AirSpec::Source::Sounding;
+        spec.sounding = std::move(*read);
+        s.input_files.push_back(path.string());
+        label = "sounding " + *sounding + " (" + std::to_string(spec.sounding.height_m.size()) +
+                " rows of " + (spec.sounding.kind == Sounding::Kind::Index ? "n" : "temperature") +
+                ")";
+        first = r.at("Mirage_Sounding");
+    } else {
+        if (gap)
+            return make_error(r.at("Mirage_Sounding_Max_Gap") +
+                              "Mirage_Sounding_Max_Gap without Mirage_Sounding");
+        if ((t_ground || height) && !(t_ground && height))
+            return make_error(r.at(t_ground ? "Mirage_Ground_Temperature" : "Mirage_Scale_Height") +
+                              "a surface layer needs both Mirage_Ground_Temperature and "
+                              "Mirage_Scale_Height");
+        if (t_ground && !t_air)
+            return make_error(r.at("Mirage_Ground_Temperature") +
+                              "a surface layer needs Mirage_Air_Temperature (the air above it)");
+        AirColumn& col = spec.column;
+        spec.source = AirSpec::Source::Column;
+        col.ground_temperature_k = t_air ? *t_air : 288.15;
+        col.lapse_k_per_m = lapse ? 1e-3 * *lapse : 0.0;
+        label = "air at " + shortest(col.ground_temperature_k) + " K";
+        if (lapse) label += ", lapse " + shortest(*lapse) + " K/km";
+        if (t_ground) {
+            col.layers.push_back({*t_ground - *t_air, *height});
+            label +=
+                ", " + shortest(*t_ground) + " K at the ground (scale " + shortest(*height) + " m)";
+        }
+        for (const Inversion& v : inversions)
+            label += ", inversion " + shortest(v.delta_k) + " K from " + shortest(v.bottom_m) +
+                     " to " + shortest(v.top_m) + " m" +
+                     (v.smoothing_m > 0.0 ? " (smoothed " + shortest(v.smoothing_m) + " m)" : "");
+        col.inversions = std::move(inversions);
+        if (t_air) first = r.at("Mirage_Air_Temperature");
+        if (lapse) first = r.at("Mirage_Lapse");
+    }
+    if (index) {
+        auto f = parse_index_formula(*index);
+        if (!f) return make_error(r.at("Mirage_Index") + "Mirage_Index: " + f.message());
+        spec.index.formula = *f;
+    }
+    if (wavelength) spec.index.wavelength_nm = *wavelength;
+    if (humidity) spec.relative_humidity = 0.01 * *humidity;
+    if (pressure) spec.ground_pressure_pa = 100.0 * *pressure;
+    if (top) spec.top_m = *top;
+    spec.earth_radius_m = radius ? *radius : kEarthRadiusM;
+    label += spec.index.formula == IndexFormula::Ciddor
+                 ? ", Ciddor " + shortest(spec.index.wavelength_nm) + " nm"
+                 : ", Gladstone-Dale";
+    label += spec.earth_radius_m > 0.0
+                 ? ", Earth radius " + shortest(spec.earth_radius_m / 1000.0) + " km"
+                 : ", flat ground";
+    // The whole air checked once here, with the place of the setting that describes it.
+    if (auto model = make_air_model(spec); !model)
+        return make_error((top ? r.at("Mirage_Top") : first) + model.message());
+    s.air = std::make_shared<const AirSpec>(std::move(spec));
+    s.profile = Profile{};
+    s.profile.kind = ProfileKind::None;
+    s.profile_label = std::move(label);
+    s.declared = true;
+    return Ok{};
+}
+
 }  // namespace
 
 Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     for (const auto& [name, d] : scene.symbols) {
         if (name.rfind("Mirage_", 0) != 0) continue;
-        if (std::find(std::begin(kKnown), std::end(kKnown), name) != std::end(kKnown)) continue;
+        const auto& known = known_names();
+        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
         std::string best;
         size_t best_d = 4;
-        for (const char* k : kKnown) {
+        for (const std::string& k : known) {
             const size_t dist = distance(name, k);
             if (dist < best_d) {
                 best_d = dist;
@@ -122,6 +331,17 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     MIRAGE_TRY(pressure, r.number("Mirage_Pressure"));
     const bool explicit_profile = eta0 || eta1 || alpha;
     const bool air = t_air || t_ground || height || pressure;
+    const bool exponential = preset || explicit_profile || kind_name;
+    // Real air: a sounding or temperature forms the exponential fit cannot say; the
+    // Mirage_..._Temperature values then describe it exactly.
+    const bool forms = real_air_forms_declared(r);
+    if (forms && exponential)
+        return make_error(r.at(preset      ? "Mirage_Preset"
+                               : kind_name ? "Mirage_Profile"
+                                           : "Mirage_Eta0") +
+                          "declare the atmosphere one way: an exponential profile (Mirage_Preset, "
+                          "Mirage_Profile) or real air (Mirage_Sounding, Mirage_Lapse, "
+                          "Mirage_Inversion, ...)");
     const int ways = (preset ? 1 : 0) + (explicit_profile ? 1 : 0) + (air ? 1 : 0);
     if (ways > 1)
         return make_error(r.at(preset ? "Mirage_Preset" : "Mirage_Eta0") +
@@ -158,7 +378,7 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
         if (auto v = validate(s.profile, names); !v) return v.error();
         s.profile_label = "explicit " + std::string(profile_kind_name(kind));
         s.declared = kind != ProfileKind::None;
-    } else if (air) {
+    } else if (air && !forms && !r.has("Mirage_Earth_Radius")) {
         if (!t_air || !t_ground || !height)
             return make_error(r.at(t_air ? "Mirage_Air_Temperature" : "Mirage_Ground_Temperature") +
                               "real air needs Mirage_Air_Temperature, Mirage_Ground_Temperature "
@@ -169,6 +389,9 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
         s.profile_label = "air " + shortest(*t_ground) + " K at the ground, " + shortest(*t_air) +
                           " K aloft (" + std::string(profile_kind_name(p->kind)) + ")";
         s.declared = true;
+    }
+    if (forms || r.has("Mirage_Earth_Radius")) {
+        if (auto st = read_real_air(r, scene, s); !st) return st.error();
     }
     MIRAGE_TRY(tol, r.number("Mirage_Tolerance"));
     if (tol) {
@@ -193,7 +416,7 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
         s.unit_m = *unit;
         // The profile the tracer and the compiler use has alpha per scene unit.
         const Profile scaled = profile_in_scene_units(s);
-        if (s.declared && !validate(scaled))
+        if (s.declared && !s.air && !validate(scaled))
             return make_error(r.at("Mirage_Unit") + "Mirage_Unit = " + shortest(*unit) +
                               " makes alpha " + shortest(scaled.alpha) +
                               " per scene unit, outside " + shortest(kMinAlpha) + " to " +
@@ -239,6 +462,48 @@ Profile profile_in_scene_units(const AtmosphereSettings& s) {
     Profile p = s.profile;
     p.alpha *= s.unit_m;  // exp(-alpha y): alpha per metre times metres per unit
     return p;
+}
+
+bool bends_rays(const AtmosphereSettings& s) {
+    return s.declared && (s.air || s.profile.kind != ProfileKind::None);
+}
+
+double fit_tolerance_for(double tolerance_rad) {
+    const double eps = std::pow(0.5 * tolerance_rad / M_PI, 2);
+    return std::clamp(eps, kMinFitTolerance, kMaxFitTolerance);
+}
+
+namespace {
+
+// A model with heights in metres rescaled to units of unit_m metres.
+Result<QuadraticProfile> in_scene_units(const QuadraticProfile& m, double unit_m) {
+    std::vector<double> knots(m.knots().size()), slopes(m.piece_count()),
+        curvatures(m.piece_count());
+    for (size_t j = 0; j < knots.size(); ++j) knots[j] = m.knots()[j] / unit_m;
+    for (int j = 0; j < m.piece_count(); ++j) {
+        slopes[j] = m.b(j) * unit_m;  // d(n^2)/dy per unit: per metre times metres per unit
+        curvatures[j] = m.c(j) * unit_m * unit_m;
+    }
+    return QuadraticProfile::make(std::move(knots), std::move(slopes), std::move(curvatures),
+                                  m.n0_sq(), m.earth_radius() / unit_m);
+}
+
+}  // namespace
+
+Result<Atmosphere> scene_atmosphere(const AtmosphereSettings& s, double tolerance_rad,
+                                    int* pieces) {
+    if (pieces) *pieces = 0;
+    if (!s.air) return Atmosphere::exponential(profile_in_scene_units(s));
+    FitSettings fs;
+    fs.tolerance_n = fit_tolerance_for(tolerance_rad);
+    FitReport report;
+    auto fitted = fit_air(*s.air, fs, &report);
+    if (!fitted) return fitted.error();
+    if (pieces) *pieces = report.pieces;
+    if (s.unit_m == 1.0) return Atmosphere::quadratic(*fitted);
+    auto scaled = in_scene_units(**fitted, s.unit_m);
+    if (!scaled) return scaled.error();
+    return Atmosphere::quadratic(std::make_shared<const QuadraticProfile>(std::move(*scaled)));
 }
 
 }  // namespace mirage

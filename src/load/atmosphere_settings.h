@@ -1,14 +1,19 @@
 // The atmosphere a scene declares with Mirage_... values (see pov_includes/mirage.inc).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "atmosphere/profile.h"
 #include "scene/scene.h"
 #include "util/result.h"
 
 namespace mirage {
+
+class Atmosphere;  // atmosphere/exact_path.h
+struct AirSpec;    // atmosphere/general_profile.h
 
 enum class LayerMode { Adaptive, Uniform };
 
@@ -23,6 +28,21 @@ constexpr double kMaxUnitM = 1e3;   // and a kilometre at most
 // The camera and Mirage_Extent lie within this many scene units of the origin: paths are
 // followed no farther (atmosphere/sampler.cpp), and no coordinate overflows on the way.
 constexpr double kMaxCoordinate = 1e9;
+// Real air (Mirage_Sounding, the temperature forms, Mirage_Earth_Radius): the ranges of the
+// settings, checked where each is read.
+constexpr double kEarthRadiusM = 6371000.0;  // the default of real-air scenes
+constexpr double kMinEarthRadiusM = 1e5;     // Mirage_Earth_Radius: 0 (flat) or from this
+constexpr double kMaxEarthRadiusM = 1e9;     // to this
+constexpr double kMaxLapseKPerKm = 100.0;    // |Mirage_Lapse|
+constexpr double kMaxFormHeightM = 1e4;      // inversions, Mirage_Top
+constexpr double kMaxFormDeltaK = 100.0;     // |temperature steps| of inversions, layers
+constexpr double kMaxSmoothingM = 100.0;     // Mirage_Inversion_Smoothing
+constexpr double kMinScaleHeightM = 1e-3;    // a surface layer's scale height
+constexpr int kMaxInversions = 8;            // Mirage_Inversion, Mirage_Inversion_2, ...
+// The fitted model's |n_fit - n| bound: chosen from the path tolerance so that ray directions
+// stay within half of it (pi sqrt(eps) <= tolerance / 2), within these limits.
+constexpr double kMinFitTolerance = 1e-13;
+constexpr double kMaxFitTolerance = 1e-10;
 
 struct AtmosphereSettings {
     Profile profile;               // in metres; ProfileKind::None when the scene declares none
@@ -34,7 +54,16 @@ struct AtmosphereSettings {
     double ground_height = 0.0;    // the profile's y = 0 in the scene, scene units
     LayerMode layers = LayerMode::Adaptive;
     int layer_count = 0;  // uniform mode
+    // Real air, traced by the general engine (atmosphere/general_profile.h): set when the
+    // scene declares a sounding, a temperature form beyond the exponential fit, or an Earth
+    // radius.  In metres; `profile` then stays ProfileKind::None unless the air is an
+    // exponential profile on the curved Earth.
+    std::shared_ptr<const AirSpec> air;
+    std::vector<std::string> input_files;  // files the atmosphere was read from (a sounding)
 };
+
+/// Whether the scene's atmosphere bends rays at all.
+bool bends_rays(const AtmosphereSettings& settings);
 
 /// Reads the Mirage_... declarations of a parsed scene.  An error names the declaration's
 /// file, line and column and the bad value; unknown Mirage_ names are errors too (a typo
@@ -51,5 +80,16 @@ Status check_layer_count(double count, const std::string& name);
 
 /// The profile in scene units: heights in units of unit_m metres.
 Profile profile_in_scene_units(const AtmosphereSettings& settings);
+
+/// The fit tolerance (|n_fit - n|) for paths sampled to `tolerance_rad`: directions through the
+/// model stay within tolerance_rad / 2 of the true ones (pi sqrt(eps)), clamped to
+/// [kMinFitTolerance, kMaxFitTolerance].
+double fit_tolerance_for(double tolerance_rad);
+
+/// The scene's atmosphere in scene units, for paths sampled to `tolerance_rad`: the
+/// exponential closed forms (profile_in_scene_units), or real air's fitted model with its
+/// heights (and Earth radius) in scene units.  `pieces` (may be null) gets the model's size.
+Result<Atmosphere> scene_atmosphere(const AtmosphereSettings& settings, double tolerance_rad,
+                                    int* pieces = nullptr);
 
 }  // namespace mirage

@@ -100,6 +100,8 @@ Result<MirageScene> load_mirage_scene(const SceneLoadOptions& options) {
     auto settings = settle_mirage_scene(loaded.scene, options);
     if (!settings) return settings.error();
     loaded.settings = std::move(*settings);
+    // A sounding is an input of the scene: listed with its files, so no output replaces it.
+    for (const std::string& f : loaded.settings.input_files) loaded.scene.files.push_back(f);
     return loaded;
 }
 

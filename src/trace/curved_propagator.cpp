@@ -248,11 +248,111 @@ bool bends_at_most(const ExactRayOrigin& o, double sin_i, bool rising, double li
     return std::asin(s_max) - std::asin(s_min) <= limit;
 }
 
+// The horizontal reach of the scene's bounded objects from the eye: the farthest corner of
+// their boxes, kept per thread for the last scene asked for.
+double scene_reach(const SceneAccel& accel, const glm::dvec3& eye) {
+    struct Slot {
+        bool valid = false;
+        std::uint64_t id = 0;
+        glm::dvec3 eye{0.0};
+        double reach = 0.0;
+    };
+    thread_local Slot slot;
+    if (slot.valid && slot.id == accel.id() && slot.eye == eye) return slot.reach;
+    double reach = 0.0;
+    for (int i = 0; i < accel.box_count(); ++i) {
+        const Aabb& b = accel.item_box(i);
+        if (b.empty() || !b.finite()) continue;
+        const double dx = std::max(std::abs(b.lo.x - eye.x), std::abs(b.hi.x - eye.x));
+        const double dz = std::max(std::abs(b.lo.z - eye.z), std::abs(b.hi.z - eye.z));
+        reach = std::max(reach, std::hypot(dx, dz));
+    }
+    slot = {true, accel.id(), eye, reach};
+    return reach;
+}
+
+// With no bounded object to follow paths to, they are followed this far (scene units).
+constexpr double kMinGeneralReach = 1e4;
+
+double general_max_dz(const CurvedSettings& settings, const SceneAccel* accel,
+                      const glm::dvec3& origin) {
+    if (settings.max_dz > 0.0) return settings.max_dz;
+    const glm::dvec3 eye = settings.eye ? *settings.eye : origin;
+    const double reach = accel ? scene_reach(*accel, eye) : 0.0;
+    return std::max(2.0 * reach, kMinGeneralReach);
+}
+
+}  // namespace
+
+double general_path_reach(const SceneAccel& accel, const glm::dvec3& eye) {
+    return std::max(2.0 * scene_reach(accel, eye), kMinGeneralReach);
+}
+
+namespace {
+
+// Whether a ray of the general engine from y0 with sin i = sin_i turns by at most `limit`
+// anywhere: from the invariant n(y) sin i(y) = beta over the heights it can reach without
+// turning (above the start rising, below it descending); false when it can turn.
+bool general_bends_at_most(const Atmosphere& atm, double y0, double sin_i, bool rising,
+                           double limit) {
+    double lo, hi;
+    if (rising) {
+        atm.n_range(y0, kInf, lo, hi);
+    } else {
+        atm.n_range(0.0, y0, lo, hi);
+    }
+    const double beta = atm.n(y0) * sin_i;
+    const double s_max = beta / lo;
+    if (!(s_max < 1.0)) return false;
+    return std::asin(s_max) - std::asin(beta / hi) <= limit;
+}
+
+// The general engine's path of a ray (settings.general) into `cp`; false when it goes
+// straight (as near_surfaces_path says).  `accel` (may be null) is the scene it is sampled
+// for; `reference`: to the tolerance all along (sample_exact_path).
+bool general_path(const CurvedSettings& settings, const SceneAccel* accel, const glm::dvec3& origin,
+                  const glm::dvec3& direction, double travelled, bool reference, CurvedPath& cp) {
+    const Atmosphere& atm = *settings.general;
+    if (!atm.has_gradient()) return false;
+    if (origin.y < -ground_slack(origin)) return false;
+    if (origin.y > kMaxHeight) return false;
+    if (origin.y <= 0.0 && direction.y <= 0.0) return false;
+    const double hl = std::hypot(direction.x, direction.z);
+    if (hl < kVerticalSin) return false;
+    const double y0 = std::max(origin.y, 0.0);
+    const double sin_i = hl / std::hypot(hl, direction.y);
+    if (general_bends_at_most(atm, y0, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad))
+        return false;
+    auto path = ExactPath::make(atm, y0, std::atan2(hl, direction.y));
+    MIRAGE_CHECK(path.ok());
+    cp.general.emplace(std::move(*path));
+    cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
+    SampleSettings ss;
+    ss.tolerance_rad = settings.tolerance_rad;
+    ss.start_distance = travelled;
+    ss.max_dz = general_max_dz(settings, accel, origin);
+    if (reference) {
+        cp.path = sample_exact_path(*cp.general, ss);
+    } else if (accel && !accel->unbounded_elsewhere()) {
+        thread_local std::vector<SceneAccel::Crossing> crossings;
+        const EyeIndex* eye =
+            settings.eye && origin == *settings.eye ? &eye_index(*accel, origin) : nullptr;
+        const SceneObstacles obstacles(*accel, origin, cp.heading, crossings, eye);
+        sample_exact_path_near(*cp.general, ss, &obstacles, cp.path);
+    } else {
+        sample_exact_path_near(*cp.general, ss, nullptr, cp.path);
+    }
+    return true;
+}
+
 // The ray's path for PathSampling::NearSurfaces, into `cp` (its storage reused); false when
 // the ray goes straight.  `accel` (may be null) is the scene the path is sampled for.
 bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
                         const glm::dvec3& origin, const glm::dvec3& direction, double travelled,
                         CurvedPath& cp) {
+    if (settings.general)
+        return general_path(settings, accel, origin, direction, travelled, false, cp);
+    cp.general.reset();
     const Profile& p = settings.profile;
     if (p.kind == ProfileKind::None || p.eta1 == 0.0) return false;
     // Below the ground the atmosphere is not defined: the band model's bottom layer has the
@@ -326,8 +426,11 @@ PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec
             return march.result();
         }
     }
-    const double slope =
-        cp.path.end == PathEnd::Ground ? slope_at(cp.ray, cp.ray.dz_ground) : cp.path.end_slope;
+    double slope = cp.path.end_slope;
+    if (cp.path.end == PathEnd::Ground) {
+        slope = cp.general ? cp.general->slope_at(cp.general->dz_ground())
+                           : slope_at(cp.ray, cp.ray.dz_ground);
+    }
     MIRAGE_CHECK(std::isfinite(slope));
     const glm::dvec3 final_direction = glm::normalize(glm::dvec3(heading.x, slope, heading.y));
     if (cp.path.end_clear) {
@@ -360,6 +463,13 @@ bool goes_straight(const CurvedSettings& settings, const glm::dvec3& origin,
 
 std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm::dvec3& origin,
                                       const glm::dvec3& direction, double travelled) {
+    if (settings.general) {
+        CurvedPath cp;
+        if (!general_path(settings, nullptr, origin, direction, travelled,
+                          settings.sampling == PathSampling::Reference, cp))
+            return std::nullopt;
+        return cp;
+    }
     if (settings.sampling == PathSampling::Reference) {
         if (goes_straight(settings, origin, direction)) return std::nullopt;
         return reference_path(settings, origin, direction, travelled);
@@ -373,10 +483,16 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm:
 std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const SceneAccel& accel,
                                       const glm::dvec3& origin, const glm::dvec3& direction,
                                       double travelled) {
+    CurvedPath cp;
+    if (settings.general) {
+        if (!general_path(settings, &accel, origin, direction, travelled,
+                          settings.sampling == PathSampling::Reference, cp))
+            return std::nullopt;
+        return cp;
+    }
     if (settings.sampling == PathSampling::Reference) {
         return curved_path(settings, origin, direction, travelled);
     }
-    CurvedPath cp;
     if (!near_surfaces_path(settings, &accel, origin, direction, travelled, cp))
         return std::nullopt;
     return cp;
@@ -387,12 +503,16 @@ PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin, con
 }
 
 CurvedPropagator::CurvedPropagator(const CurvedSettings& settings) : settings_(settings) {
-    MIRAGE_CHECK(settings.profile.kind == ProfileKind::None || settings.tolerance_rad > 0.0);
+    MIRAGE_CHECK((settings.profile.kind == ProfileKind::None && !settings.general) ||
+                 settings.tolerance_rad > 0.0);
 }
 
 PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& start) const {
     if (settings_.sampling == PathSampling::Reference) {
-        const auto cp = curved_path(settings_, start.origin, start.direction, start.travelled);
+        const auto cp =
+            settings_.general
+                ? curved_path(settings_, accel, start.origin, start.direction, start.travelled)
+                : curved_path(settings_, start.origin, start.direction, start.travelled);
         if (!cp) return straight_.propagate(accel, start);
         return march_curved_path(accel, start.origin, *cp);
     }

@@ -8,7 +8,9 @@
 #include <optional>
 #include <vector>
 
+#include "atmosphere/exact_path.h"
 #include "atmosphere/exact_ray.h"
+#include "atmosphere/path_sampler.h"
 #include "atmosphere/sampler.h"
 #include "scene/scene.h"
 #include "trace/propagator.h"
@@ -29,8 +31,17 @@ enum class PathSampling {
 };
 
 struct CurvedSettings {
-    Profile profile;             // heights in scene units, ground at y = 0 (see
-                                 // profile_in_scene_units); ProfileKind::None: straight rays
+    Profile profile;  // heights in scene units, ground at y = 0 (see
+                      // profile_in_scene_units); ProfileKind::None: straight rays
+    // Any other atmosphere (real air, the curved Earth): its piecewise-quadratic model in
+    // scene units, whose exact paths (atmosphere/exact_path.h) rays then follow; `profile` is
+    // not used.  The scene is read as drawn in the model's frame: heights above the ground
+    // (the flattened heights, with an Earth radius) and horizontal distances along it.
+    std::optional<Atmosphere> general = std::nullopt;
+    // With `general`: how far (horizontally, scene units) a path is followed at most; beyond,
+    // it goes on straight.  0: twice the horizontal reach of the scene's bounded objects from
+    // the eye (a ray trapped in a duct turns for ever).
+    double max_dz = 0.0;
     double tolerance_rad = 0.0;  // largest path error, as an angle seen from the eye, rad
     PathSampling sampling = PathSampling::NearSurfaces;
     // Where the camera rays start.  Rays from there share an index, by azimuth, of the boxes
@@ -41,7 +52,8 @@ struct CurvedSettings {
 /// One ray's path in its vertical plane: the exact ray and its sampled polyline, and the
 /// plane's horizontal direction.
 struct CurvedPath {
-    ExactRay ray;
+    ExactRay ray;                      // the exponential profiles
+    std::optional<ExactPath> general;  // CurvedSettings::general
     SampledPath path;
     glm::dvec2 heading{0.0, 1.0};  // unit (x, z) direction of the vertical plane
 };
@@ -112,6 +124,11 @@ class ScanlinePropagator final : public Propagator {
     StraightPropagator straight_;
     std::vector<Row> rows_;  // index: image row, top first
 };
+
+/// With the general engine: how far paths from `eye` are followed when CurvedSettings::max_dz
+/// is 0: twice the horizontal reach of the scene's bounded objects from it (the farthest corner
+/// of their boxes), and at least 1e4 scene units.
+double general_path_reach(const SceneAccel& accel, const glm::dvec3& eye);
 
 /// Whether the camera is level: up along +y, direction and right horizontal (within 1e-9
 /// relative).

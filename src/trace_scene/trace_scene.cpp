@@ -13,6 +13,7 @@
 #include "scene/ground.h"
 #include "trace/curved_propagator.h"
 #include "trace/object_query.h"
+#include "trace/scene_accel.h"
 #include "util/format.h"
 #include "util/output_set.h"
 
@@ -89,7 +90,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     report.tolerance_px = settings.tolerance_px;
     report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
     const Profile profile = profile_in_scene_units(settings);
-    const bool bends = settings.declared && profile.kind != ProfileKind::None;
+    const bool bends = bends_rays(settings);
     if (opt.atmosphere && bends && !camera_has_one_viewpoint(scene.camera)) {
         // Paths are followed to a tolerance of an angle of one pixel seen from the eye.
         return make_error(
@@ -109,6 +110,21 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     CurvedSettings curved;
     curved.profile = profile;
     curved.tolerance_rad = report.tolerance_px * report.pixel_rad;
+    if (settings.air && opt.atmosphere) {
+        // Real air: the general engine's model, fitted finely enough for this tolerance.
+        auto atmosphere = scene_atmosphere(settings, curved.tolerance_rad, &report.model_pieces);
+        if (!atmosphere) return make_error(opt.scene + ": " + atmosphere.message());
+        curved.general = std::move(*atmosphere);
+        // Paths are followed to the declared extent, else to twice the scene's reach: the
+        // same for every ray, the rows' of --scanline-paths among them.
+        if (settings.extent) {
+            curved.max_dz = *settings.extent;
+        } else {
+            auto accel = SceneAccel::build(scene);
+            if (!accel) return accel.error();
+            curved.max_dz = general_path_reach(*accel, scene.camera.location);
+        }
+    }
     if (opt.reference_sampling) curved.sampling = PathSampling::Reference;
     curved.eye = scene.camera.location;
     std::unique_ptr<Propagator> propagator;
@@ -145,7 +161,9 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
 
 std::string trace_summary(const TraceReport& r) {
     std::ostringstream out;
-    out << r.scene << ": atmosphere " << r.atmosphere << ", " << path_mode_name(r.mode);
+    out << r.scene << ": atmosphere " << r.atmosphere;
+    if (r.model_pieces > 0) out << " (fitted: " << r.model_pieces << " pieces)";
+    out << ", " << path_mode_name(r.mode);
     if (r.mode != PathMode::Straight) {
         out << " within " << sig(r.tolerance_px, 3) << " px ("
             << sig(r.tolerance_px * r.pixel_rad, 3) << " rad)";

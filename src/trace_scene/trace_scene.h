@@ -41,6 +41,7 @@ struct TraceReport {
     PathMode mode = PathMode::Straight;
     double tolerance_px = 0.0;  // the paths' largest error, pixels
     double pixel_rad = 0.0;     // one pixel's angle at the image centre, rad
+    int model_pieces = 0;       // real air: the fitted model's pieces (0: closed forms)
     RenderResult render;        // the image (linear) and the render's statistics
     std::string output;         // the file written, if any
 };

@@ -35,6 +35,7 @@ struct Loaded {
     Scene scene;
     Profile profile;
     double tolerance_px = 0.5;
+    AtmosphereSettings settings;
 };
 
 Loaded load(const std::string& path, int width, int height) {
@@ -42,7 +43,7 @@ Loaded load(const std::string& path, int width, int height) {
     EXPECT_TRUE(loaded.ok()) << loaded.message();
     EXPECT_TRUE(loaded->settings.declared) << path;
     Loaded l{std::move(loaded->scene), profile_in_scene_units(loaded->settings),
-             loaded->settings.tolerance_px};
+             loaded->settings.tolerance_px, loaded->settings};
     return l;
 }
 
@@ -52,6 +53,16 @@ CurvedSettings curved(const Loaded& l, int width, int height, PathSampling sampl
     s.tolerance_rad = l.tolerance_px * pixel_angle_rad(l.scene.camera, width, height);
     s.sampling = sampling;
     s.eye = l.scene.camera.location;
+    if (l.settings.air) {
+        // Real air: the general engine's paths, followed to twice the scene's reach (as
+        // `mirage trace` does), with or without the scene at hand.
+        auto atmosphere = scene_atmosphere(l.settings, s.tolerance_rad);
+        EXPECT_TRUE(atmosphere.ok()) << atmosphere.message();
+        if (atmosphere.ok()) s.general = *atmosphere;
+        auto accel = SceneAccel::build(l.scene);
+        EXPECT_TRUE(accel.ok()) << accel.message();
+        if (accel.ok()) s.max_dz = general_path_reach(*accel, l.scene.camera.location);
+    }
     return s;
 }
 
