@@ -19,8 +19,9 @@
 #                        320x240 unless W H are given, MODEL=bands or trace) into
 #                        build/animate/NAME/: NAME.mp4, NAME.gif, vanishing.png, summary.md
 #   make fuzz            libFuzzer on the scene parser and the Mirage_ settings reader for
-#                        FUZZ_SECONDS (default 600), in build-fuzz/ with clang; installs
-#                        FUZZ_PACKAGES first (make test needs none of them)
+#                        FUZZ_SECONDS (default 600) in FUZZ_JOBS processes (default 1), in
+#                        build-fuzz/ with clang; installs FUZZ_PACKAGES first (make test
+#                        needs none of them)
 #   make clean
 
 BUILD   ?= build
@@ -33,6 +34,7 @@ CW      ?= $(if $(filter command line,$(origin W)),$(W),320)
 CH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 FUZZ_SECONDS ?= 600
+FUZZ_JOBS    ?= 1
 FUZZ_BUILD   ?= build-fuzz
 NAME    := $(basename $(notdir $(SCENE)))
 # make animate: its own default scene and size.
@@ -96,7 +98,10 @@ bench: build
 	$(BUILD)/mirage_bench
 
 # The corpus grows in $(FUZZ_BUILD)/corpus from run to run; a crashing input is written to
-# $(FUZZ_BUILD)/artifacts/ (and belongs in tests/fuzz/crashes/ once fixed).
+# $(FUZZ_BUILD)/artifacts/ (and belongs in tests/fuzz/crashes/ once fixed).  The stack is
+# 1 GiB: with AddressSanitizer a level of the parser's nesting takes up to about 140 KiB, and in
+# the default 8 MiB the parse would stop at its stack (with its message) some 50 levels deep,
+# short of the 256 levels it allows.
 fuzz: deps
 	@sh tools/install-deps.sh $(FUZZ_PACKAGES)
 	@test -f $(FUZZ_BUILD)/CMakeCache.txt || cmake -S . -B $(FUZZ_BUILD) \
@@ -104,9 +109,10 @@ fuzz: deps
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target mirage_scene_fuzzer
 	@mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
 	python3 tools/fuzz_corpus.py $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/scene.dict
-	$(FUZZ_BUILD)/mirage_scene_fuzzer $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds \
+	ulimit -s 1048576 && $(FUZZ_BUILD)/mirage_scene_fuzzer $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds \
 	    -dict=$(FUZZ_BUILD)/scene.dict -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	    -timeout=60 -rss_limit_mb=2048 -print_final_stats=1 \
+	    $(if $(filter-out 1,$(FUZZ_JOBS)),-fork=$(FUZZ_JOBS)) \
 	    -artifact_prefix=$(FUZZ_BUILD)/artifacts/
 
 clean:

@@ -11,6 +11,7 @@ namespace {
 
 constexpr std::size_t kEchoBytes = 120;     // a longer source line is cut around the column
 constexpr std::size_t kMessageBytes = 400;  // a longer message is cut in its middle
+constexpr std::size_t kContextEnds = 8;     // a longer chain of frames shows its 8 ends
 
 bool continuation(unsigned char c) { return (c & 0xC0) == 0x80; }
 
@@ -48,9 +49,17 @@ std::string format_diagnostic(std::string_view path, int line, int column, std::
     } else {
         out += message;
     }
-    for (const std::string& c : context) {
+    // The chain of macro calls and includes by its ends: an endless recursion stops a
+    // thousand frames deep, and the frames that matter are the innermost and the outermost.
+    const std::size_t n = context.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        if (n > 2 * kContextEnds && i == kContextEnds) {
+            out += "\n  ... " + std::to_string(n - 2 * kContextEnds) + " more";
+            i = n - kContextEnds - 1;
+            continue;
+        }
         out += '\n';
-        out += c;
+        out += context[i];
     }
     if (source_line.empty()) return out;
     // The line as shown: around the column when it is long, with "..." where it is cut, and a

@@ -129,56 +129,81 @@ bool SceneParser::starts_object(const Token& t) const {
     return false;
 }
 
+// The objects' parse recurses once per level of nesting: the functions on that path fill the
+// node they are given instead of returning one, and what a level needs rarely (a copy of a
+// declared object, a mesh, an unreadable object) is made in a frame of its own, so that a
+// level costs no more stack than one node.
+
 std::optional<ObjectNode> SceneParser::parse_object() {
-    if (options_.strict) return parse_object_unguarded();
+    std::optional<ObjectNode> out(std::in_place);
+    if (!parse_object_to(*out)) out.reset();
+    return out;
+}
+
+bool SceneParser::parse_object_to(ObjectNode& out) {
+    if (options_.strict) return parse_object_unguarded(out);
     // Lenient: an object that cannot be read becomes an unknown object (no extent), and the
     // parse goes on after it.
     const int balance = brace_balance_;
     const Token start = peek(0);
     try {
-        return parse_object_unguarded();
+        return parse_object_unguarded(out);
     } catch (const ParseFailure& failure) {
         if (failure.fatal || !starts_object(start)) throw;
         recover_statement(balance);
-        ObjectNode unknown;
-        unknown.kind = ObjectNode::Kind::Empty;
-        unknown.loc = start.loc();
-        unknown.unknown = "'" + start.text() + "' that mirage cannot read (" + failure.reason +
-                          " at " + failure.loc.file + ":" + std::to_string(failure.loc.line) + ":" +
-                          std::to_string(failure.loc.column) + ")";
-        return unknown;
+        [&]() __attribute__((noinline)) {
+            ObjectNode unknown;
+            unknown.kind = ObjectNode::Kind::Empty;
+            unknown.loc = start.loc();
+            unknown.unknown = "'" + start.text() + "' that mirage cannot read (" + failure.reason +
+                              " at " + failure.loc.file + ":" + std::to_string(failure.loc.line) +
+                              ":" + std::to_string(failure.loc.column) + ")";
+            out = std::move(unknown);
+        }
+        ();
+        return true;
     }
 }
 
-std::optional<ObjectNode> SceneParser::parse_object_unguarded() {
+bool SceneParser::parse_object_unguarded(ObjectNode& out) {
     const Token t = peek(0);
-    if (!starts_object(t)) return std::nullopt;
+    if (!starts_object(t)) return false;
     Nested nested(*this, t);
     if (is_identifier(t)) {
-        Token name = next();
-        Value v = identifier_value(name);
-        auto* object = std::get_if<ObjectNode>(&v.data);
-        if (!object) fail(name, "expected an object, got " + value_type_name(v));
-        return std::move(*object);
+        copy_named_object(out);
+        return true;
     }
     Token kw = next();
     count_objects(1, kw);
     const std::string& w = kw.text();
-    if (w == "union") return parse_union(kw);
-    if (w == "difference" || w == "intersection" || w == "merge") return parse_csg(kw);
-    if (w == "object") return parse_object_statement(kw);
-    if (w == "light_source") return parse_light_source(kw);
-    if (is_unsupported_object_keyword(kw)) {
+    if (w == "union") {
+        parse_union(kw, out);
+    } else if (w == "difference" || w == "intersection" || w == "merge") {
+        parse_csg(kw, out);
+    } else if (w == "object") {
+        parse_object_statement(kw, out);
+    } else if (w == "light_source") {
+        parse_light_source(kw, out);
+    } else if (is_unsupported_object_keyword(kw)) {
         unsupported(kw, "object '" + w + "'");
-        return parse_unknown_object(kw);
+        parse_unknown_object(kw, out);
+    } else {
+        parse_shape(kw, out);
     }
-    return parse_shape(kw);
+    return true;
 }
 
-ObjectNode SceneParser::parse_unknown_object(const Token& kw) {
+void SceneParser::copy_named_object(ObjectNode& out) {
+    const Token name = next();
+    Value v = identifier_value(name);
+    auto* object = std::get_if<ObjectNode>(&v.data);
+    if (!object) fail(name, "expected an object, got " + value_type_name(v));
+    out = std::move(*object);
+}
+
+void SceneParser::parse_unknown_object(const Token& kw, ObjectNode& unknown) {
     // Its own arguments are left out; the bounded_by, clipped_by and transforms at its level
     // are read, for its extent.
-    ObjectNode unknown;
     unknown.kind = ObjectNode::Kind::Empty;
     unknown.loc = kw.loc();
     unknown.unknown = "object '" + kw.text() + "'";
@@ -207,7 +232,6 @@ ObjectNode SceneParser::parse_unknown_object(const Token& kw) {
         if (x.is_punct("}")) --depth;
     }
     expect_close_brace(kw);
-    return unknown;
 }
 
 void SceneParser::parse_bound_or_clip(ObjectNode& node) {
@@ -221,7 +245,7 @@ void SceneParser::parse_bound_or_clip(ObjectNode& node) {
         list = clip ? node.bound : node.clip;
     } else {
         list.clear();
-        while (auto object = parse_object()) list.push_back(std::move(*object));
+        parse_objects_into(list);
         if (list.empty()) {
             fail(peek(0), "expected an object in '" + item.text() + "', got " + describe(peek(0)));
         }
@@ -234,16 +258,26 @@ static bool starts_with_object_identifier(const Value* v) {
     return v && std::holds_alternative<ObjectNode>(v->data);
 }
 
-ObjectNode SceneParser::parse_shape(const Token& kw) {
+void SceneParser::parse_objects_into(std::vector<ObjectNode>& list) {
+    while (true) {
+        list.emplace_back();
+        if (!parse_object_to(list.back())) {
+            list.pop_back();
+            return;
+        }
+    }
+}
+
+void SceneParser::parse_shape(const Token& kw, ObjectNode& node) {
     expect_open_brace(kw);
     if (starts_with_object_identifier(peek_identifier_value(0))) {
-        ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
-        parse_object_modifiers(copy, kw);
-        return copy;
+        copy_named_object(node);
+        parse_object_modifiers(node, kw);
+        return;
     }
-    ObjectNode node;
     if (kw.is_word("mesh") || kw.is_word("mesh2")) {
-        node = parse_mesh(kw);
+        [&]() __attribute__((noinline)) { node = parse_mesh(kw); }
+        ();
     } else {
         node.kind = ObjectNode::Kind::Shape;
         node.loc = kw.loc();
@@ -252,82 +286,70 @@ ObjectNode SceneParser::parse_shape(const Token& kw) {
         if (kw.is_word("text")) transform_object(node, make_rotation(glm::dvec3(0.001)));
     }
     parse_object_modifiers(node, kw);
-    return node;
 }
 
-ObjectNode SceneParser::parse_union(const Token& kw) {
-    expect_open_brace(kw);
-    if (starts_with_object_identifier(peek_identifier_value(0)) && !peek_punct("}", 1)) {
-        // `union { Obj translate x }` is Obj moved; `union { A B }` is a union of two.
-        const Value* next_value = peek_identifier_value(1);
-        if (!starts_with_object_identifier(next_value) && !starts_object(peek(1))) {
-            ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
-            parse_object_modifiers(copy, kw);
-            return copy;
-        }
+/// `union { Obj translate x }` and the like: the object named, moved (true); `union { A B }`
+/// is a union of two (false).
+bool SceneParser::parse_modified_copy(const Token& kw, ObjectNode& node) {
+    if (!starts_with_object_identifier(peek_identifier_value(0)) || peek_punct("}", 1)) {
+        return false;
     }
-    ObjectNode u;
+    const Value* next_value = peek_identifier_value(1);
+    if (starts_with_object_identifier(next_value) || starts_object(peek(1))) return false;
+    copy_named_object(node);
+    parse_object_modifiers(node, kw);
+    return true;
+}
+
+void SceneParser::parse_union(const Token& kw, ObjectNode& u) {
+    expect_open_brace(kw);
+    if (parse_modified_copy(kw, u)) return;
     u.kind = ObjectNode::Kind::Union;
     u.loc = kw.loc();
-    while (auto child = parse_object()) u.children.push_back(std::move(*child));
+    parse_objects_into(u.children);
     if (u.children.size() < 2) {
         add_message(kw, "warning", "a union should have at least 2 objects");
     }
     parse_object_modifiers(u, kw);
-    return u;
 }
 
-ObjectNode SceneParser::parse_csg(const Token& kw) {
+void SceneParser::parse_csg(const Token& kw, ObjectNode& c) {
     expect_open_brace(kw);
-    if (starts_with_object_identifier(peek_identifier_value(0)) && !peek_punct("}", 1)) {
-        // `difference { Obj translate x }` is Obj moved, as for a union.
-        const Value* next_value = peek_identifier_value(1);
-        if (!starts_with_object_identifier(next_value) && !starts_object(peek(1))) {
-            ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
-            parse_object_modifiers(copy, kw);
-            return copy;
-        }
-    }
-    ObjectNode c;
+    if (parse_modified_copy(kw, c)) return;
     c.kind = ObjectNode::Kind::Csg;
     c.csg = kw.is_word("merge") ? CsgKind::Merge : CsgKind::Intersection;
     c.loc = kw.loc();
-    const bool difference = kw.is_word("difference");
-    while (auto child = parse_object()) {
-        // POV-Ray's Parse_CSG: a difference is the intersection of the first object with the
-        // inverse of every other.
-        if (difference && !c.children.empty()) invert_object(*child);
-        c.children.push_back(std::move(*child));
+    parse_objects_into(c.children);
+    // POV-Ray's Parse_CSG: a difference is the intersection of the first object with the
+    // inverse of every other.
+    if (kw.is_word("difference")) {
+        for (std::size_t i = 1; i < c.children.size(); ++i) invert_object(c.children[i]);
     }
     if (c.children.size() < 2) {
         add_message(kw, "warning", "a " + kw.text() + " should have at least 2 objects");
     }
     parse_object_modifiers(c, kw);
-    return c;
 }
 
-ObjectNode SceneParser::parse_object_statement(const Token& kw) {
+void SceneParser::parse_object_statement(const Token& kw, ObjectNode& inner) {
     expect_open_brace(kw);
-    auto inner = parse_object();
-    if (!inner) {
+    if (!parse_object_to(inner)) {
         const Token& t = peek(0);
         if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
             fail(t, "undefined identifier '" + t.text() + "'");
         }
         fail(t, "expected an object inside 'object', got " + describe(t));
     }
-    parse_object_modifiers(*inner, kw);
-    return std::move(*inner);
+    parse_object_modifiers(inner, kw);
 }
 
-ObjectNode SceneParser::parse_light_source(const Token& kw) {
+void SceneParser::parse_light_source(const Token& kw, ObjectNode& node) {
     expect_open_brace(kw);
     if (starts_with_object_identifier(peek_identifier_value(0))) {
-        ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
-        parse_object_modifiers(copy, kw);
-        return copy;
+        copy_named_object(node);
+        parse_object_modifiers(node, kw);
+        return;
     }
-    ObjectNode node;
     node.kind = ObjectNode::Kind::Light;
     node.loc = kw.loc();
     node.light.loc = kw.loc();
@@ -366,7 +388,6 @@ ObjectNode SceneParser::parse_light_source(const Token& kw) {
         break;
     }
     expect_close_brace(kw);
-    return node;
 }
 
 void SceneParser::parse_object_modifiers(ObjectNode& node, const Token& kw) {

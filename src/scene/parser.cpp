@@ -2,6 +2,8 @@
 // lenient mode's skipping.
 #include "scene/parser.h"
 
+#include <pthread.h>
+
 #include <algorithm>
 #include <cmath>
 #include <new>
@@ -60,7 +62,32 @@ const char* material_kind(const Value& v) {
 
 }  // namespace
 
+namespace {
+
+/// The lowest address the parse's recursion may use on this thread's stack: its low end
+/// plus a reserve (an eighth of the stack, at least 1 MiB) for the frames between two checks
+/// of the nesting and for what runs at the deepest level (a macro call, an include, a
+/// value's copy).  0 where the stack's bounds are not known.
+std::uintptr_t stack_floor_of_this_thread() {
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) != 0) return 0;
+    void* low = nullptr;
+    std::size_t size = 0;
+    const bool known = pthread_attr_getstack(&attr, &low, &size) == 0;
+    pthread_attr_destroy(&attr);
+    if (!known || size == 0) return 0;
+    const std::size_t reserve = std::max<std::size_t>(size / 8, std::size_t{1} << 20);
+    const auto here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
+    const auto floor = reinterpret_cast<std::uintptr_t>(low) + reserve;
+    // A stack too small for the reserve: the parse may still go as deep as half of what is
+    // left below this frame.
+    return floor < here ? floor : here - (here - reinterpret_cast<std::uintptr_t>(low)) / 2;
+}
+
+}  // namespace
+
 Scene SceneParser::parse(std::shared_ptr<SourceFile> main_file) {
+    stack_floor_ = stack_floor_of_this_thread();
     scene_.file = main_file->path;
     push_frame(main_file, 0, main_file->tokens.size() - 1, FrameContext::Kind::Main, "", Token{});
     parse_top_level();

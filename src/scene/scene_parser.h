@@ -385,11 +385,17 @@ class SceneParser {
     bool starts_object(const Token& t) const;
     bool is_unsupported_object_keyword(const Token& t) const;
     std::optional<ObjectNode> parse_object();
-    std::optional<ObjectNode> parse_object_unguarded();
-    ObjectNode parse_shape(const Token& keyword);
-    ObjectNode parse_union(const Token& keyword);
-    ObjectNode parse_csg(const Token& keyword);
-    ObjectNode parse_unknown_object(const Token& keyword);
+    // The recursive path of the object parse fills the (default) node it is given: false
+    // when no object starts here.
+    bool parse_object_to(ObjectNode& out);
+    bool parse_object_unguarded(ObjectNode& out);
+    void parse_objects_into(std::vector<ObjectNode>& list);
+    void copy_named_object(ObjectNode& out);  // the declared object named next
+    bool parse_modified_copy(const Token& keyword, ObjectNode& out);
+    void parse_shape(const Token& keyword, ObjectNode& out);
+    void parse_union(const Token& keyword, ObjectNode& out);
+    void parse_csg(const Token& keyword, ObjectNode& out);
+    void parse_unknown_object(const Token& keyword, ObjectNode& out);
     void parse_bound_or_clip(ObjectNode& object);
     // ---- shapes (parse_shapes.cpp) ----
     static bool is_shape_keyword(const std::string& word);
@@ -402,8 +408,8 @@ class SceneParser {
     std::string find_scene_file(const std::string& name, const std::string& extension) const;
     std::map<std::string, std::shared_ptr<TrueTypeFont>> fonts_;
     std::optional<Texture> parse_mesh_triangle_texture();
-    ObjectNode parse_object_statement(const Token& keyword);
-    ObjectNode parse_light_source(const Token& keyword);
+    void parse_object_statement(const Token& keyword, ObjectNode& out);
+    void parse_light_source(const Token& keyword, ObjectNode& out);
     void parse_object_modifiers(ObjectNode& object, const Token& keyword);
     bool parse_transform_item(Transform& t);
     Transform parse_transform_block(const Token& keyword);
@@ -483,6 +489,11 @@ class SceneParser {
     int macro_depth_ = 0;
 
     int nesting_ = 0;
+    // The lowest stack address the parse may reach before a Nested refuses to go deeper
+    // (set by parse(); 0: not known, only max_nesting applies).  The level count alone does
+    // not bound the stack: a level's frames are some hundred bytes in an optimized build and
+    // over 100 KiB with AddressSanitizer, and threads have smaller stacks than the main one.
+    std::uintptr_t stack_floor_ = 0;
     std::vector<ActiveDirective> directives_;  // innermost last
     std::uint64_t cond_serial_ = 0;
     std::int64_t loop_passes_ = 0;

@@ -28,11 +28,18 @@ std::string bytes_text(std::uintmax_t n) {
 // Limits
 
 SceneParser::Nested::Nested(SceneParser& parser, const Token& at) : parser_(parser) {
-    if (parser_.nesting_ >= parser_.options_.limits.max_nesting) {
+    const int limit = parser_.options_.limits.max_nesting;
+    if (parser_.nesting_ >= limit) {
+        parser_.fail_fatal(at, "nesting too deep: more than " + std::to_string(limit) +
+                                   " levels of parentheses, objects and directives inside each "
+                                   "other");
+    }
+    const auto here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
+    if (here < parser_.stack_floor_) {
         parser_.fail_fatal(at,
-                           "nesting too deep: more than " +
-                               std::to_string(parser_.options_.limits.max_nesting) +
-                               " levels of parentheses, objects and directives inside each other");
+                           "nesting too deep: " + std::to_string(parser_.nesting_) +
+                               " levels of parentheses, objects and directives inside each other "
+                               "fill the stack this parse has");
     }
     ++parser_.nesting_;
 }

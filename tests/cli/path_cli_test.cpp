@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_tool.h"
+#include "test_temp.h"
 #include "util/csv.h"
 
 namespace mirage {
@@ -75,7 +76,7 @@ TEST(PathCli, BatchReproducesTheReferenceFile) {
 }
 
 TEST(PathCli, BadCsvRowNamesTheRowAndColumn) {
-    const std::string path = std::string(::testing::TempDir()) + "bad_rays.csv";
+    const std::string path = mirage::testing::test_temp_path("bad_rays.csv").string();
     std::ofstream(path) << "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2,d3\n"
                            "A,inferior,1.000233,0.4584,2.303,1.0,1.9,1,2,3\n"
                            "B,inferior,1.000233,0.4584,2.3x,1.0,1.9,1,2,3\n";
@@ -136,7 +137,7 @@ TEST(PathCli, BadFlagsAndValuesAreNamed) {
 }
 
 TEST(PathCli, SvgDiagramIsWrittenWithTheFan) {
-    const std::string svg = std::string(::testing::TempDir()) + "fan.svg";
+    const std::string svg = mirage::testing::test_temp_path("fan.svg").string();
     std::remove(svg.c_str());
     auto r = run_tool(
         "path --preset paper --eye-height 1.5 --elevation-deg -10 --fan-count 7 --svg " + svg);
@@ -161,7 +162,9 @@ TEST(PathCli, SvgDiagramIsWrittenWithTheFan) {
 namespace mirage {
 namespace {
 
-std::string temp_path(const std::string& name) { return std::string(::testing::TempDir()) + name; }
+std::string temp_path(const std::string& name) {
+    return mirage::testing::test_temp_path(name).string();
+}
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "test_temp.h"
 #include "util/atomic_file.h"
 #include "util/csv.h"
 
@@ -15,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(DesignStudy, ComparesDesignsOnTheContinuumOfCameraRays) {
-    const fs::path dir = fs::path(::testing::TempDir()) / "mirage_design_study";
+    const fs::path dir = mirage::testing::test_temp_path("mirage_design_study");
     fs::remove_all(dir);
     fs::create_directories(dir);
     const std::string scene = (dir / "desert.pov").string();

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "test_temp.h"
+
 namespace mirage {
 namespace {
 
@@ -49,14 +51,14 @@ TEST(PovrayRender, AMissingProgramIsAnError) {
     PovrayRenderSettings s;
     s.povray = "mirage-no-such-povray";
     s.ini = "x.ini";
-    s.log = (std::filesystem::path(::testing::TempDir()) / "mirage_povray_missing.log").string();
+    s.log = mirage::testing::test_temp_path("mirage_povray_missing.log").string();
     auto r = render_povray(s);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.message(), "mirage-no-such-povray: not found on PATH");
 }
 
 TEST(LogTail, KeepsTheLastLines) {
-    const auto path = std::filesystem::path(::testing::TempDir()) / "mirage_log_tail.txt";
+    const auto path = mirage::testing::test_temp_path("mirage_log_tail.txt");
     std::ofstream(path) << "one\ntwo\nthree\n";
     EXPECT_EQ(log_tail(path.string(), 2), "two\nthree\n");
     EXPECT_EQ(log_tail(path.string(), 9), "one\ntwo\nthree\n");

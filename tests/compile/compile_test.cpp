@@ -8,6 +8,7 @@
 
 #include "../cli/run_tool.h"
 #include "image/image_io.h"
+#include "test_temp.h"
 #include "util/atomic_file.h"
 #include "util/csv.h"
 
@@ -17,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string temp_dir(const std::string& name) {
-    const fs::path d = fs::path(::testing::TempDir()) / ("mirage_compile_" + name);
+    const fs::path d = mirage::testing::test_temp_path("mirage_compile_" + name);
     fs::remove_all(d);
     fs::create_directories(d);
     return d.string();

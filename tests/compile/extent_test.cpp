@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "compile/compile.h"
+#include "test_temp.h"
 
 namespace mirage {
 namespace {
@@ -13,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string temp_dir(const std::string& name) {
-    const fs::path d = fs::path(::testing::TempDir()) / ("mirage_extent_" + name);
+    const fs::path d = mirage::testing::test_temp_path("extent_" + name);
     fs::remove_all(d);
     fs::create_directories(d);
     return d.string();

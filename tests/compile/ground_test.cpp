@@ -11,6 +11,7 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "scene/parser.h"
+#include "test_temp.h"
 #include "trace/fog.h"
 #include "trace_scene/trace_scene.h"
 
@@ -20,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string temp_dir(const std::string& name) {
-    const fs::path d = fs::path(::testing::TempDir()) / ("mirage_ground_" + name);
+    const fs::path d = mirage::testing::test_temp_path("ground_" + name);
     fs::remove_all(d);
     fs::create_directories(d);
     return d.string();

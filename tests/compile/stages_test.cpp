@@ -9,6 +9,7 @@
 #include "layers/fit.h"
 #include "layers/outcome.h"
 #include "scene/camera.h"
+#include "test_temp.h"
 
 namespace mirage {
 namespace {
@@ -16,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string temp_dir(const std::string& name) {
-    const fs::path d = fs::path(::testing::TempDir()) / ("mirage_stages_" + name);
+    const fs::path d = mirage::testing::test_temp_path("mirage_stages_" + name);
     fs::remove_all(d);
     fs::create_directories(d);
     return d.string();

@@ -13,6 +13,7 @@
 #include "layers/fit.h"
 #include "pov/emit_layers.h"
 #include "scene/camera.h"
+#include "test_temp.h"
 
 namespace mirage {
 namespace {
@@ -46,7 +47,7 @@ TEST_P(PovRayBandTest, TracerPredictsPovRaysRays) {
     const LayerStack rendered = gaps ? with_gaps(f.stack, kEye, gap) : f.stack;
 
     const fs::path dir =
-        fs::path(::testing::TempDir()) / (std::string("mirage_band_") + GetParam().name);
+        mirage::testing::test_temp_path(std::string("mirage_band_") + GetParam().name);
     fs::remove_all(dir);
     fs::create_directories(dir);
     const HorizontalBox extent{-5e5, 5e5, -5e5, 5e5};

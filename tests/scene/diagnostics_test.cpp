@@ -20,6 +20,22 @@ TEST(Diagnostics, ContextLinesComeAfterTheFirstLine) {
     EXPECT_EQ(m, "inc/a.inc:3:1: oops\n  included from scene.pov:3:1\nx\n^");
 }
 
+TEST(Diagnostics, ALongChainOfFramesShowsItsEnds) {
+    std::vector<std::string> frames;
+    for (int i = 0; i < 30; ++i) frames.push_back("  frame " + std::to_string(i));
+    const std::string m = format_diagnostic("a.inc", 1, 1, "oops", frames, "");
+    std::string want = "a.inc:1:1: oops";
+    for (int i = 0; i < 8; ++i) want += "\n  frame " + std::to_string(i);
+    want += "\n  ... 14 more";
+    for (int i = 22; i < 30; ++i) want += "\n  frame " + std::to_string(i);
+    EXPECT_EQ(m, want);
+    // Up to twice the ends, every frame is shown.
+    frames.resize(16);
+    const std::string all = format_diagnostic("a.inc", 1, 1, "oops", frames, "");
+    EXPECT_EQ(all.find("more"), std::string::npos);
+    EXPECT_NE(all.find("frame 15"), std::string::npos);
+}
+
 TEST(Diagnostics, TabsKeepTheCaretAligned) {
     std::string m = format_diagnostic("s.pov", 1, 3, "m", {}, "\t\tbad");
     EXPECT_EQ(m, "s.pov:1:3: m\n\t\tbad\n\t\t^");

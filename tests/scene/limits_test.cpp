@@ -3,10 +3,13 @@
 // reproducers of the crashes found by hand and by the fuzz target are here with their exact
 // messages (tests/fuzz/crashes/ replays them all through the fuzz target too).
 #include <gtest/gtest.h>
+#include <pthread.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 #include "parse_helpers.h"
@@ -100,6 +103,66 @@ TEST(Limits, NestingDeeperThanTheLimitIsAnErrorNotAStackOverflow) {
                  repeat("union {", 200) + "sphere { 0, 1 } sphere { 1, 1 }" + repeat("}", 200));
     EXPECT_DOUBLE_EQ(testing::float_symbol(s, "X"), 2.0);
     EXPECT_EQ(s.primitives.size(), 2u);
+}
+
+// The level count does not bound the stack by itself: a parse on a thread with a small stack
+// (or in a build with large frames) stops at the stack it has, with the same kind of message.
+TEST(Limits, NestingStopsAtTheStackThisThreadHasNotPastIt) {
+    ParseOptions o;
+    o.limits.max_nesting = 1000000;  // only the stack can stop these
+    o.limits.max_loop_passes = 1000000;
+    const std::vector<std::string> deep = {
+        repeat("union {", 200000),
+        "#declare X = " + repeat("(", 200000) + "1" + repeat(")", 200000) + ";",
+        "#declare A = " + repeat("#declare B = ", 100000) + "1;",
+    };
+    for (const std::string& text : deep) {
+        std::string message;
+        pthread_attr_t attr;
+        ASSERT_EQ(pthread_attr_init(&attr), 0);
+        ASSERT_EQ(pthread_attr_setstacksize(&attr, std::size_t{4} << 20), 0);  // 4 MiB
+        struct Job {
+            const std::string* text;
+            const ParseOptions* options;
+            std::string* message;
+        } job{&text, &o, &message};
+        pthread_t thread;
+        ASSERT_EQ(pthread_create(
+                      &thread, &attr,
+                      [](void* p) -> void* {
+                          auto* j = static_cast<Job*>(p);
+                          auto r = parse_scene_text(*j->text, "scene.pov", *j->options);
+                          *j->message = r ? "parsed" : r.message();
+                          return nullptr;
+                      },
+                      &job),
+                  0);
+        pthread_join(thread, nullptr);
+        pthread_attr_destroy(&attr);
+        EXPECT_NE(first_line(message).find(": nesting too deep: "), std::string::npos)
+            << first_line(message);
+        EXPECT_NE(first_line(message).find("fill the stack this parse has"), std::string::npos)
+            << first_line(message);
+    }
+}
+
+// An endless recursion of macros stops at the limit of frames or at the stack, whichever
+// comes first (with a Release build's frames, the stack: a #declare's value holds values of
+// several KiB); the message shows the ends of the chain, not hundreds of lines.
+TEST(Limits, AnEndlessMacroRecursionNamesItsEnds) {
+    const std::string m =
+        parse_error("#macro Inc(V) #declare V = Inc(K) #end\n#declare K = 1;\nInc(K)\n");
+    const std::string first = first_line(m);
+    EXPECT_TRUE(first.find("too many nested macro calls and include files") != std::string::npos ||
+                first.find("nesting too deep") != std::string::npos)
+        << first;
+    EXPECT_LT(std::count(m.begin(), m.end(), '\n'), 25) << m;
+    std::smatch more;
+    ASSERT_TRUE(std::regex_search(m, more, std::regex("\n  \\.\\.\\. ([0-9]+) more\n"))) << m;
+    EXPECT_GT(std::stoi(more[1]), 50) << m;
+    // The innermost frame first, the scene's own call last.
+    EXPECT_NE(m.find("\n  in macro 'Inc' called from scene.pov:1:28\n"), std::string::npos) << m;
+    EXPECT_NE(m.find("in macro 'Inc' called from scene.pov:3:1\n"), std::string::npos) << m;
 }
 
 TEST(Limits, CopiesMayNotNestOrGrowWithoutEnd) {

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "test_temp.h"
 #include "util/atomic_file.h"
 
 namespace mirage {
@@ -22,7 +23,7 @@ TEST(FindProgram, FindsOnPathAndByPath) {
 }
 
 TEST(RunProcess, RunsInTheDirectoryWithOutputInTheLog) {
-    const fs::path dir = fs::path(::testing::TempDir()) / "mirage_process_run";
+    const fs::path dir = mirage::testing::test_temp_path("mirage_process_run");
     fs::remove_all(dir);
     fs::create_directories(dir);
     const std::string log = (dir / "out.log").string();
