@@ -107,9 +107,13 @@ SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& st) {
         } else if (dz_last >= max_dz) {
             out.end = PathEnd::Cut;
             out.end_slope = path.slope_at(dz_last);
+            out.end_slope_dz = dz_last;
         } else {
             out.end = PathEnd::Straight;
             out.end_slope = path.asymptotic_slope();
+            // The slope the path leaves the profile's top with, where it does.
+            const QuadraticPath* q = path.quadratic();
+            out.end_slope_dz = q && std::isfinite(q->dz_straight()) ? q->dz_straight() : dz_last;
         }
     };
     auto height = [&](double dz) {
@@ -248,6 +252,7 @@ SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& st) {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class ExactNearSampler {
   public:
@@ -261,9 +266,15 @@ class ExactNearSampler {
     /// ground.
     void set_ground_end(double dz) { ground_end_ = dz; }
 
-    /// Samples the monotone run from (a, ya) to (b, yb).
+    /// An escaping path that meets no ground: it may stop where nothing lies beyond (its end is
+    /// then straight, with the asymptotic slope), and its far end's height is computed only if
+    /// a test needs it.
+    void set_may_stop() { may_stop_ = obstacles_ != nullptr; }
+    bool stopped() const { return stopped_; }
+
+    /// Samples the monotone run from (a, ya) to (b, yb); yb NaN: not computed yet.
     void run(double a, double ya, double b, double yb) {
-        if (!(b > a)) return;
+        if (!(b > a) || stopped_) return;
         int e = 0;
         std::frexp(b - a, &e);
         node({a, ya}, {b, yb}, std::ldexp(1.0, e));
@@ -271,11 +282,22 @@ class ExactNearSampler {
 
   private:
     struct Point {
-        double dz, y;
+        double dz, y;  // y NaN: not computed yet
     };
 
-    bool fine(const Point& a, const Point& b, double m) const {
-        return chord_within(m, a.dz, b.dz, allowed_error(path_, st_, a.dz, a.y), st_);
+    bool fine(const Point& a, double b_dz, double m) const {
+        return chord_within(m, a.dz, b_dz, allowed_error(path_, st_, a.dz, a.y), st_);
+    }
+
+    // Whether nothing the path can meet lies anywhere beyond the distance dz.
+    bool nothing_beyond(double dz) const {
+        PathRegion beyond;
+        beyond.dz_lo = dz;
+        beyond.dz_hi = kInf;
+        beyond.lower = {PathLine{dz, -kInf, 0.0}, PathLine{dz, -kInf, 0.0}};
+        beyond.upper = {PathLine{dz, kInf, 0.0}, PathLine{dz, kInf, 0.0}};
+        beyond.lower_count = beyond.upper_count = 1;
+        return !obstacles_->may_meet(beyond);
     }
 
     // Whether nothing the path can meet lies near the stretch from a to b (within one monotone
@@ -287,18 +309,18 @@ class ExactNearSampler {
         const double bulge = 0.125 * m * w * w;
         const double y_lo = std::min(a.y, b.y), y_hi = std::max(a.y, b.y);
         const double y0 = path_.y0();
-        const double far_dy = std::max(std::fabs(y_hi - y0), std::fabs(y_lo - y0));
+        const double far_dy = std::max(std::fabs(y_hi - y0), std::fabs(y_lo - y0)) + bulge;
         const double reach = std::sqrt(b.dz * b.dz + far_dy * far_dy);
         const double slack = 1e-9 * (1.0 + b.dz + std::max(std::fabs(y_lo), std::fabs(y_hi)));
         const double margin =
             st_.tolerance_m + st_.tolerance_rad * (st_.start_distance + reach) + slack;
-        const PathLine chord{a.dz, a.y, dy / w};
+        const double slope = dy / w;
         PathRegion region;
         region.dz_lo = a.dz;
         region.dz_hi = b.dz;
-        region.lower = {PathLine{a.dz, a.y - bulge - margin, chord.slope},
+        region.lower = {PathLine{a.dz, a.y - bulge - margin, slope},
                         PathLine{a.dz, y_lo - margin, 0.0}};
-        region.upper = {PathLine{a.dz, a.y + bulge + margin, chord.slope},
+        region.upper = {PathLine{a.dz, a.y + bulge + margin, slope},
                         PathLine{a.dz, y_hi + margin, 0.0}};
         if (obstacles_->may_meet(region)) return false;
         // The arc exceeds its chord by about w theta^2 / 24 for a turn theta (under 1e-6 of
@@ -312,18 +334,8 @@ class ExactNearSampler {
         if (obstacles_) out_.clear_length.push_back(clear_length);
     }
 
-    // The grid node [a.dz, a.dz + size], cut at the run's end b.dz.
-    void node(const Point& a, const Point& b, double size) {
-        const double m = path_.curvature_bound(a.y, b.y);
-        if (fine(a, b, m)) {
-            emit(b, 0.0);
-            return;
-        }
-        double length = 0.0;
-        if (obstacles_ && b.dz != ground_end_ && clear(a, b, m, length)) {
-            emit(b, length);
-            return;
-        }
+    // Halves the node [a.dz, a.dz + size] cut at b.dz, its parts before the end first.
+    void split(const Point& a, const Point& b, double size) {
         while (a.dz + 0.5 * size >= b.dz) size *= 0.5;  // the node's part before the end
         const double mid = a.dz + 0.5 * size;
         MIRAGE_CHECK(mid > a.dz && mid < b.dz);
@@ -332,12 +344,49 @@ class ExactNearSampler {
         node(p, b, 0.5 * size);
     }
 
+    // The grid node [a.dz, a.dz + size], cut at the run's end b.dz.
+    void node(const Point& a, Point b, double size) {
+        if (stopped_) return;
+        if (std::isnan(b.y)) {
+            // The far end of an escaping path: where the chord test surely fails (its bound is
+            // at least the curvature at a), a node needs b's height only if something lies
+            // beyond a; with nothing there the path stops at a.  The decisions are those made
+            // with b's height.
+            if (may_stop_ && !fine(a, b.dz, path_.curvature_bound(a.y, a.y))) {
+                if (nothing_beyond(a.dz)) {
+                    stopped_ = true;
+                    return;
+                }
+                split(a, b, size);
+                return;
+            }
+            b.y = height(b.dz);
+        }
+        const double m = path_.curvature_bound(a.y, b.y);
+        if (fine(a, b.dz, m)) {
+            emit(b, 0.0);
+            return;
+        }
+        double length = 0.0;
+        if (obstacles_ && b.dz != ground_end_ && clear(a, b, m, length)) {
+            emit(b, length);
+            return;
+        }
+        if (may_stop_ && nothing_beyond(a.dz)) {
+            stopped_ = true;
+            return;
+        }
+        split(a, b, size);
+    }
+
     const ExactPath& path_;
     const SampleSettings& st_;
     const PathObstacles* obstacles_;
     SampledPath& out_;
     double dz_ground_;
-    double ground_end_ = std::numeric_limits<double>::quiet_NaN();
+    double ground_end_ = kNaN;
+    bool may_stop_ = false;
+    bool stopped_ = false;
 };
 
 }  // namespace
@@ -364,9 +413,14 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
 
     const double max_dz = std::min(st.max_dz, kMaxSampleDistance);
     const bool ground = path.hits_ground() && path.dz_ground() <= max_dz;
-    double end = ground ? path.dz_ground() : max_dz;
+    const double end = ground ? path.dz_ground() : max_dz;
     ExactNearSampler sampler(path, st, obstacles, out, ground ? path.dz_ground() : kInf);
     if (ground && obstacles && obstacles->ground()) sampler.set_ground_end(path.dz_ground());
+    // An escaping path is followed to the cut (the end of the reach); with obstacles it stops
+    // where nothing lies beyond.
+    const bool escapes = !ground && path.fate() == PathFate::Escape && path.quadratic() &&
+                         std::isfinite(path.asymptotic_slope());
+    if (escapes) sampler.set_may_stop();
 
     // The turning points before the end split the path into monotone runs.
     std::vector<double> starts{0.0};
@@ -380,37 +434,34 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
         out.turns = true;
         out.dz_turn = starts[1];
     }
-    // An escaping path goes straight once its asymptote keeps the tolerance: from the first
-    // distance on a doubling grid after its last turn where the departure bound allows it.
-    bool straight = false;
-    if (!ground && path.fate() == PathFate::Escape && std::isfinite(path.asymptotic_slope())) {
-        const double from = starts.back();
-        const double scale = std::max(1e-3, 1e-3 * (from + std::fabs(y0)));
-        for (double step = scale; from + step < end; step *= 2.0) {
-            const double t = from + step;
-            if (path.asymptote_departure(t) <= allowed_error(path, st, t, path.height_at(t))) {
-                end = t;
-                straight = true;
-                break;
-            }
-        }
-    }
     double a = 0.0, ya = y0;
     for (size_t k = 1; k <= starts.size(); ++k) {
-        const double b = k < starts.size() ? starts[k] : end;
-        const double yb = sampler.height(b);
+        const bool last = k == starts.size();
+        const double b = last ? end : starts[k];
+        // The far end's height waits until a test needs it (escaping paths).
+        const double yb = last && escapes ? kNaN : sampler.height(b);
         sampler.run(a, ya, b, yb);
         a = b;
         ya = yb;
     }
     if (ground) {
         out.end = PathEnd::Ground;
-    } else if (straight) {
-        out.end = PathEnd::Straight;
-        out.end_slope = path.asymptotic_slope();
+    } else if (escapes) {
+        // Its direction where it is cut, at max_dz (or where it leaves the profile's top,
+        // before): the same whether it stopped early or not, and the ray's true direction
+        // there (the one the sky is seen in; on the curved Earth its local horizontal).
+        double at = max_dz;
+        if (path.height_at(max_dz) >= path.quadratic()->profile().top()) {
+            at = std::min(at, path.quadratic()->dz_straight());
+        }
+        out.end = sampler.stopped() ? PathEnd::Straight : PathEnd::Cut;
+        out.end_slope = path.slope_at(at);
+        out.end_slope_dz = at;
+        out.end_clear = sampler.stopped();
     } else {
         out.end = PathEnd::Cut;
         out.end_slope = path.slope_at(out.points.back().x);
+        out.end_slope_dz = out.points.back().x;
     }
 }
 

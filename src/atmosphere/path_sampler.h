@@ -26,14 +26,16 @@ double allowed_error(const ExactPath& path, const SampleSettings& settings, doub
 
 /// Samples the exact path to the tolerance wherever it may meet something, and coarsely where
 /// nothing can lie near it (sample_path_near of sampler.h, for any exact path).  Every monotone
-/// run (from the start or a turning point to the next turning point, the ground, the cut, or
-/// where the straight end keeps the tolerance) is cut in halves on a grid of powers of two from
-/// the run's start; a half is kept whole once its chord is within the tolerance (the chord
-/// bound with the path's curvature bound over the heights the half spans), or, with obstacles,
-/// once the band about its chord that holds the half and everything within the allowance of it
-/// (the chord +- max|y''| L^2 / 8 and the allowance, within the heights of its ends) meets
-/// nothing: marked in clear_length.  A half that ends on a surface at the ground always keeps
-/// the tolerance.  Without obstacles every segment keeps the tolerance, and with them the
+/// run (from the start or a turning point to the next turning point, the ground or the cut at
+/// max_dz) is cut in halves on a grid of powers of two from the run's start; a half is kept whole
+/// once its chord is within the tolerance (the chord bound with the path's curvature bound over the
+/// heights the half spans), or, with obstacles, once the band about its chord that holds the half
+/// and everything within the allowance of it (the chord +- max|y''| L^2 / 8 and the allowance,
+/// within the heights of its ends) meets nothing: marked in clear_length.  A half that ends on a
+/// surface at the ground always keeps the tolerance.  An escaping path ends with its asymptotic
+/// slope (the direction it leaves the profile's top with); with obstacles it stops, straight and
+/// clear, at the first node beyond which nothing lies (its far end's height is computed only where
+/// a test needs it). Without obstacles every segment keeps the tolerance, and with them the
 /// segments that do are the same ones.  `path`'s storage is reused.
 void sample_exact_path_near(const ExactPath& path, const SampleSettings& settings,
                             const PathObstacles* obstacles, SampledPath& out);

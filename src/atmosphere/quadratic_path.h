@@ -83,6 +83,7 @@ class QuadraticPath {
     double eta_start() const { return eta_p_; }
     int start_direction() const { return sg_; }  // +1 up or level, -1 down
     PathFate fate() const { return fate_; }
+    const QuadraticProfile& profile() const { return *profile_; }
 
     /// Height at horizontal distance dz >= 0 (beyond a ground hit: the tangent at the hit).
     double height_at(double dz) const;

@@ -45,8 +45,12 @@ struct SampledPath {
     std::vector<glm::dvec2> points;
     PathEnd end = PathEnd::Straight;
     double end_slope = 0.0;  // dy/dz after the last point (Straight and Cut)
-    bool turns = false;      // a turning point lies on the path (it was mirrored)
-    double dz_turn = 0.0;    // where, when it turns
+    // The distance at which end_slope is the path's own slope (path_sampler.h; 0 when not
+    // set): on the curved Earth the local horizontal there is tilted by end_slope_dz / R from
+    // the start's.
+    double end_slope_dz = 0.0;
+    bool turns = false;    // a turning point lies on the path (it was mirrored)
+    double dz_turn = 0.0;  // where, when it turns
     // Per segment (points[k] to points[k + 1]), from sample_path_near: 0 for a segment within
     // the tolerance, else nothing the path can meet lies near that stretch (the chord is
     // coarse there and need not be tested against the scene) and this is the stretch's

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -165,11 +166,26 @@ Result<Sounding> parse_sounding(std::string_view text, const std::string& source
 }
 
 Result<Sounding> read_sounding(const std::string& path, const SoundingRules& rules) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!ec && fs::exists(status) && !fs::is_regular_file(status))
+        return make_error(path +
+                          ": is not a regular file (a directory, a device or a pipe?): "
+                          "soundings are read from files");
     std::ifstream in(path, std::ios::binary);
     if (!in) return make_error(path + ": cannot open: " + std::strerror(errno));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return parse_sounding(buffer.str(), path, rules);
+    // Read in pieces, cut at the limit (a file that grows meanwhile included).
+    std::string text;
+    char piece[1 << 16];
+    while (in) {
+        in.read(piece, sizeof piece);
+        text.append(piece, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxSoundingBytes)
+            return make_error(path + ": more than the " + std::to_string(kMaxSoundingBytes >> 20) +
+                              " MiB a sounding may hold");
+    }
+    return parse_sounding(text, path, rules);
 }
 
 double QuadraticSpline::value(double x) const {

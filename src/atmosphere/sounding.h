@@ -14,6 +14,7 @@
 // times its secant, which keeps the quadratic monotone where the data are.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,9 @@ struct Sounding {
     std::vector<double> relative_humidity;  // Temperature, optional, 0 to 1
     std::vector<double> index;              // Index: n
 };
+
+/// The largest sounding file read, bytes (a million rows of four columns fit in it).
+constexpr std::size_t kMaxSoundingBytes = std::size_t{64} << 20;
 
 struct SoundingRules {
     double max_gap_m = 1000.0;  // largest allowed distance between consecutive rows

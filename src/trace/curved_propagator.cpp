@@ -327,6 +327,7 @@ bool general_path(const CurvedSettings& settings, const SceneAccel* accel, const
     MIRAGE_CHECK(path.ok());
     cp.general.emplace(std::move(*path));
     cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
+    cp.earth_radius = atm.earth_radius();
     SampleSettings ss;
     ss.tolerance_rad = settings.tolerance_rad;
     ss.start_distance = travelled;
@@ -353,6 +354,7 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
     if (settings.general)
         return general_path(settings, accel, origin, direction, travelled, false, cp);
     cp.general.reset();
+    cp.earth_radius = 0.0;
     const Profile& p = settings.profile;
     if (p.kind == ProfileKind::None || p.eta1 == 0.0) return false;
     // Below the ground the atmosphere is not defined: the band model's bottom layer has the
@@ -438,7 +440,16 @@ PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec
     } else {
         march.ray(final_direction);
     }
-    return march.result();
+    PathHit result = march.result();
+    if (!result.hit && cp.earth_radius > 0.0 && cp.path.end != PathEnd::Ground) {
+        // The slope is the path's in the flattened frame, against the local horizontal at
+        // end_slope_dz; the sky is seen from the start, whose horizontal is tilted from that
+        // by end_slope_dz / R.
+        const double e = std::atan(slope) - cp.path.end_slope_dz / cp.earth_radius;
+        result.direction =
+            glm::dvec3(std::cos(e) * heading.x, std::sin(e), std::cos(e) * heading.y);
+    }
+    return result;
 }
 
 // Whether a ray goes straight, for the reference sampling (curved_path).

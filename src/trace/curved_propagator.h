@@ -56,6 +56,7 @@ struct CurvedPath {
     std::optional<ExactPath> general;  // CurvedSettings::general
     SampledPath path;
     glm::dvec2 heading{0.0, 1.0};  // unit (x, z) direction of the vertical plane
+    double earth_radius = 0.0;     // of the general engine's flattened frame (0: flat)
 };
 
 /// The sampled path of a ray that starts at `origin` along unit `direction`, `travelled`
@@ -80,8 +81,9 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const Scen
 /// for a path that ends in the air, and along the exact path's tangent where it reaches the
 /// ground at y = 0 when no surface is there (a scene without a ground object: the ray goes
 /// on below it as through the band model's bottom layer).  An escaping ray's direction is
-/// the path's final direction, for the sky.  Segments marked clear (SampledPath::clear_length)
-/// are followed without testing them against the scene.
+/// the path's final direction, for the sky; on the curved Earth (CurvedPath::earth_radius)
+/// turned from the local horizontal where that slope holds to the start's.  Segments marked clear
+/// (SampledPath::clear_length) are followed without testing them against the scene.
 PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin,
                           const CurvedPath& path);
 

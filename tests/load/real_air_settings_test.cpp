@@ -179,6 +179,14 @@ TEST_F(RealAirSettings, ABadSoundingIsRefusedWithItsFileLineAndColumn) {
             s + ":1:10: Mirage_Sounding: " + (dir_ / "none.csv").string() + ": cannot open", 0),
         0u)
         << missing;
+    // A device or a directory is no sounding (reading /dev/zero would never end).
+    EXPECT_EQ(error("#declare Mirage_Sounding = \"/dev/zero\";"),
+              s + ":1:10: Mirage_Sounding: /dev/zero: is not a regular file (a directory, a "
+                  "device or a pipe?): soundings are read from files");
+    EXPECT_EQ(error("#declare Mirage_Sounding = \"air\";"),
+              s + ":1:10: Mirage_Sounding: " + (dir_ / "air").string() +
+                  ": is not a regular file (a directory, a device or a pipe?): soundings are read "
+                  "from files");
 }
 
 }  // namespace
