@@ -21,6 +21,7 @@
 #include "compare/compare.h"
 #include "compile/compile.h"
 #include "load/mirage_scene.h"
+#include "trace/object_query.h"
 #include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
@@ -544,6 +545,7 @@ Result<std::vector<VanishingRow>> vanishing_rows(const Animation& a) {
     SceneLoadOptions lo = scene_load_options(a.options.scene, a.options.width, a.options.height,
                                              a.options.library_paths);
     lo.strict = false;
+    lo.object_queries = tracer_object_queries();
     VanishingCache cache;
     for (const auto& f : a.plan.frames) {
         lo.animation = f.clock;

@@ -21,6 +21,7 @@
 #include "image/image_io.h"
 #include "load/mirage_scene.h"
 #include "report/contact_sheet.h"
+#include "trace/object_query.h"
 #include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
@@ -483,8 +484,9 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
                           "(Debian: apt-get install povray)");
     // The scene is read first: a scene that does not load fails here, with its place, and
     // its files are the inputs no result may replace.
-    auto loaded =
-        load_mirage_scene(scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths));
+    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    lo.object_queries = tracer_object_queries();
+    auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
     sw.outputs.protect(loaded->scene.files);
     std::error_code ec;

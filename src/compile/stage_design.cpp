@@ -146,16 +146,9 @@ ObjectQuery object_query(const SceneAccel& accel) {
             if (!h) return std::nullopt;
             return ObjectHit{h->t, h->normal, h->primitive};
         }
-        std::optional<ObjectHit> best;
-        for (int i : accel.unbounded()) {
-            ShapeHit sh;
-            const double reach = best ? best->t : t_max;
-            if (intersect_shape(accel.shape(i), o, d, 1e-6, reach, sh)) {
-                const glm::dvec3 p = o + sh.t * d;
-                best = ObjectHit{sh.t, shape_normal(accel.shape(i), p, sh.part), i};
-            }
-        }
-        return best;
+        auto h = accel.closest_unbounded_hit(o, d, 1e-6, t_max);
+        if (!h) return std::nullopt;
+        return ObjectHit{h->t, h->normal, h->primitive};
     };
 }
 

@@ -12,6 +12,7 @@ EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, doub
     const glm::dvec3& eye = ctx.camera.location;
     LayerEmitSettings es;
     es.camera_y = ctx.eye_y;
+    es.ground_height = ctx.settings.ground_height;
     es.extent = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
     es.layout = ctx.gaps ? LayerLayout::Gaps : LayerLayout::Nested;
     es.gap = ctx.gap;

@@ -7,7 +7,10 @@
 #include "compile/stages.h"
 #include "load/mirage_scene.h"
 #include "scene/camera.h"
+#include "scene/ground.h"
 #include "trace/curved_propagator.h"
+#include "trace/object_query.h"
+#include "trace/scene_extent.h"
 #include "util/format.h"
 #include "util/output_set.h"
 
@@ -16,6 +19,10 @@ namespace fs = std::filesystem;
 namespace mirage {
 
 namespace {
+
+// The reach of the atmosphere when no object bounds the scene (only planes and the like), in
+// camera heights above the ground.
+constexpr double kUnboundedSceneExtent = 1000.0;
 
 std::string place(const FileLoc& loc, const std::string& file) {
     return (loc.file.empty() ? file : to_string(loc)) + ": ";
@@ -59,6 +66,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     // replacements and the camera's place: load/mirage_scene.h.
     SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
     lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    lo.object_queries = tracer_object_queries();
     lo.tolerance_px = opt.tolerance_px;
     lo.layers = opt.layers;
     lo.layer_count = opt.layer_count;
@@ -76,6 +84,10 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     for (const auto& p : loaded->parse_options.library_paths)
         ctx.library_paths.push_back(fs::absolute(p).string());
     ctx.settings = loaded->settings;
+    // Heights above the atmosphere's ground from here on (scene/ground.h).
+    const double ground = ctx.settings.ground_height;
+    const Scene as_parsed = ground != 0.0 ? ctx.scene : Scene{};
+    lower_scene(ctx.scene, ground);
     if (opt.profile) {
         ctx.settings.profile = *opt.profile;
         ctx.settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
@@ -86,16 +98,24 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     const Scene& scene = ctx.scene;
     ctx.camera = scene.camera;
     ctx.eye_y = ctx.camera.location.y;
-    if (!(ctx.eye_y > 0.0))
-        return make_error(
-            place(ctx.camera.loc, scene.file) + "the camera is at y = " + shortest(ctx.eye_y) +
-            (scene.has_camera ? "" : " (the scene has no camera: POV-Ray's default)") +
-            ": it must be above the ground (y = 0) for an atmosphere over it");
-
-    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
+    if (!camera_has_one_viewpoint(ctx.camera))
+        return make_error(place(ctx.camera.loc, scene.file) + "the " +
+                          camera_type_name(ctx.camera.type) +
+                          " camera's rays start at different points: mirage compile fits the "
+                          "layers to the rays of one eye point");
     auto accel = SceneAccel::build(scene);
     if (!accel) return accel.error();
     ctx.accel = std::make_shared<const SceneAccel>(std::move(*accel));
+    if (!(ctx.eye_y > 0.0)) {
+        // Named with the scene's own heights, and its planes as the likely ground.
+        std::optional<double> lowest;
+        if (!ctx.accel->finite_bounds().empty()) lowest = ctx.accel->finite_bounds().lo.y + ground;
+        return make_error(
+            camera_below_ground_message(ground != 0.0 ? as_parsed : scene, ground, lowest) +
+            (scene.has_camera ? "" : " (the scene has no camera: POV-Ray's default is at y = 0)"));
+    }
+
+    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
     const glm::dvec3& eye = ctx.camera.location;
     double extent = 0.0;
     if (ctx.settings.extent) {
@@ -103,27 +123,25 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
         ctx.left_out.push_back("the atmosphere reaches " + sig(extent, 4) +
                                " units from the camera (Mirage_Extent)");
     } else {
-        const Aabb& b = ctx.accel->finite_bounds();
+        const SceneExtent objects = scene_extent(scene, *ctx.accel);
+        for (const auto& note : objects.bounded) ctx.left_out.push_back(note);
+        for (const auto& note : objects.unbounded) ctx.warnings.push_back(note);
+        const Aabb& b = objects.finite;
         if (b.empty() || !b.finite()) {
-            if (ctx.settings.declared && !scene.skipped.empty())
-                return make_error(place(scene.skipped.front().loc, scene.file) +
-                                  scene.skipped.front().what +
-                                  " has no extent mirage can compute; declare Mirage_Extent");
+            // Nothing bounds the scene (planes, objects taken as unbounded): the atmosphere
+            // reaches far, and the report says how far.
+            extent = kUnboundedSceneExtent * ctx.eye_y;
             if (ctx.settings.declared)
-                return make_error(scene.file +
-                                  ": the scene has no finite object to take the atmosphere's "
-                                  "extent from; declare Mirage_Extent (units from the camera)");
+                ctx.warnings.push_back(
+                    "no object bounds the scene: the atmosphere reaches " + sig(extent, 4) +
+                    " units (" + sig(kUnboundedSceneExtent, 4) +
+                    " camera heights) from the camera; declare Mirage_Extent to choose");
         } else {
             for (int i = 0; i < 4; ++i) {
                 const double x = (i & 1) ? b.hi.x : b.lo.x, z = (i & 2) ? b.hi.z : b.lo.z;
                 extent = std::max(extent, std::hypot(x - eye.x, z - eye.z));
             }
             extent *= 1.25;
-            if (!scene.skipped.empty())
-                ctx.warnings.push_back("objects mirage does not know (" +
-                                       scene.skipped.front().what +
-                                       ", ...) were left out of the extent; declare Mirage_Extent "
-                                       "if they lie farther away");
         }
     }
     if (extent <= 0.0) extent = 100.0 * ctx.eye_y;

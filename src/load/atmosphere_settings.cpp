@@ -27,6 +27,7 @@ const char* const kKnown[] = {
     "Mirage_Tolerance",
     "Mirage_Extent",
     "Mirage_Unit",
+    "Mirage_Ground_Height",
     "Mirage_Layers",
     "Mirage_Layer_Count",
     // real air (the general engine)
@@ -421,6 +422,8 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
                               " per scene unit, outside " + shortest(kMinAlpha) + " to " +
                               shortest(kMaxAlpha));
     }
+    MIRAGE_TRY(ground, r.number("Mirage_Ground_Height"));
+    if (ground) s.ground_height = *ground;
     MIRAGE_TRY(mode, r.text("Mirage_Layers", "adaptive"));
     if (mode) {
         if (*mode == "adaptive") {

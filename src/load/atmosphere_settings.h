@@ -51,6 +51,7 @@ struct AtmosphereSettings {
     double tolerance_px = 0.5;     // largest path error, pixels
     std::optional<double> extent;  // horizontal reach from the camera, scene units
     double unit_m = 1.0;           // metres per scene unit
+    double ground_height = 0.0;    // the profile's y = 0 in the scene, scene units
     LayerMode layers = LayerMode::Adaptive;
     int layer_count = 0;  // uniform mode
     // Real air, traced by the general engine (atmosphere/general_profile.h): set when the

@@ -68,8 +68,10 @@ Result<AtmosphereSettings> settle_mirage_scene(const Scene& scene,
                               "camera: its vectors give no ray direction (zero or parallel "
                               "direction, right and up?)");
     }
+    // (Rays from many points, as an orthographic camera's, span no angle: the commands that
+    // follow paths from an eye refuse those cameras themselves.)
     const double pixel_rad = pixel_angle_rad(camera, w, h);
-    if (!(pixel_rad >= kMinPixelRad))
+    if (camera_has_one_viewpoint(camera) && !(pixel_rad >= kMinPixelRad))
         return make_error(at + "one pixel of this camera spans " + sig(pixel_rad, 3) + " rad at " +
                           std::to_string(w) + "x" + std::to_string(h) + ", less than the " +
                           shortest(kMinPixelRad) +
@@ -87,6 +89,7 @@ Result<MirageScene> load_mirage_scene(const SceneLoadOptions& options) {
     po.image_height = options.height;
     po.strict = options.strict;
     po.limits = options.limits;
+    po.object_queries = options.object_queries;
     po.animation = options.animation;
     auto parsed = parse_scene_file(options.scene, po);
     if (!parsed) return parsed.error();

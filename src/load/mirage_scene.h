@@ -36,6 +36,7 @@ struct SceneLoadOptions {
     std::optional<int> layer_count;           // --count: replaces Mirage_Layer_Count
     std::optional<AnimationClock> animation;  // this frame's clock (unset: the thread's)
     ParseLimits limits;
+    ObjectQueries object_queries;  // trace() and the like (ParseOptions::object_queries)
 };
 
 /// A scene with its atmosphere, ready for a command.

@@ -36,6 +36,10 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
         out << "// Planes split at the camera's layer: below it plane { y, h } (inside is below),\n"
                "// above it plane { -y, -h } (inside is above); each clipped to a thin slab.\n\n";
     }
+    if (st.ground_height != 0.0) {
+        out << "// Heights above the ground at y = " << g17(st.ground_height)
+            << " (Mirage_Ground_Height): every layer is moved up there.\n";
+    }
     out << "global_settings { max_trace_level 256 }\n\n";
     out << "#declare Mirage_Layer_Texture = texture {\n"
            "    pigment { rgbf 1 }\n"
@@ -53,7 +57,10 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
     auto tail = [&](int layer) {
         // POV-Ray keeps an ior in single precision: the float value is what it will use.
         return "    texture { Mirage_Layer_Texture }\n    interior { ior " +
-               sig(pov_ior(s, k_cam, layer), 9) + " }\n    no_shadow\n}\n";
+               sig(pov_ior(s, k_cam, layer), 9) + " }\n    no_shadow\n" +
+               (st.ground_height != 0.0 ? "    translate <0, " + g17(st.ground_height) + ", 0>\n"
+                                        : std::string()) +
+               "}\n";
     };
     if (st.layout == LayerLayout::Gaps) {
         // One object per layer but the camera's: slabs between the gaps, the lowest and the

@@ -37,6 +37,8 @@ struct LayerEmitSettings {
     HorizontalBox extent;   // horizontal extent of the layers, scene units
     LayerLayout layout = LayerLayout::Nested;
     double gap = 0.0;                 // thickness of the gaps (Gaps layout), scene units
+    double ground_height = 0.0;       // Mirage_Ground_Height: every layer is raised by it (the
+                                      // heights above are above the ground, scene/ground.h)
     std::vector<std::string> header;  // comment lines at the top of the include
 };
 

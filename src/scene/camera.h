@@ -1,10 +1,11 @@
-// POV-Ray's perspective camera: how a `camera { ... }` statement sets its vectors (POV-Ray
-// 3.5 and later apply the modifiers in a fixed order, whatever order they are written in)
-// and the primary ray POV-Ray 3.7 shoots through an image position.
+// POV-Ray's cameras: how a `camera { ... }` statement sets its vectors (POV-Ray 3.5 and later
+// apply the modifiers in a fixed order, whatever order they are written in) and the primary
+// ray POV-Ray 3.7 shoots through an image position for each projection.
 #pragma once
 
 #include <glm/glm.hpp>
 #include <optional>
+#include <string>
 
 #include "scene/scene.h"
 #include "util/result.h"
@@ -14,14 +15,25 @@ namespace mirage {
 struct CameraRay {
     glm::dvec3 origin{0.0};
     glm::dvec3 direction{0.0, 0.0, 1.0};  // normalised
+    bool traced = true;  // false where POV-Ray traces no ray (outside a fisheye's circle) and
+                         // shows black; the direction continues the projection's mapping
 };
 
 /// The primary ray POV-Ray 3.7 traces for image position (x, y) in pixels of a width x height
 /// image: (col + 0.5, row + 0.5) is the centre of pixel (col, row), row 0 at the top.  As in
-/// POV-Ray's TracePixel::CreateCameraRay (perspective), the ray leaves `location` along
-/// direction + (x / width - 1/2) right + (1/2 - y / height) up; the image aspect ratio is not
-/// applied, the lengths of right and up carry it.
+/// POV-Ray's TracePixel::CreateCameraRay: for the perspective camera the ray leaves `location`
+/// along direction + (x / width - 1/2) right + (1/2 - y / height) up (the image aspect ratio
+/// is not applied, the lengths of right and up carry it); the orthographic camera moves the
+/// origin instead; fisheye, ultra_wide_angle, omnimax, panoramic, cylinder 1 to 4 and
+/// spherical map the position to angles as POV-Ray does.
 CameraRay camera_ray(const Camera& camera, double x, double y, int width, int height);
+
+/// True when every primary ray leaves the camera's location (all but the orthographic camera
+/// and cylinders 3 and 4).
+bool camera_has_one_viewpoint(const Camera& camera);
+
+/// The projection's name as POV-Ray spells it ("perspective", "cylinder 3"...).
+std::string camera_type_name(CameraType type);
 
 /// The angle between two directions (any lengths), rad; accurate for tiny angles too, where
 /// acos of the dot product is not.
@@ -34,6 +46,9 @@ double pixel_angle_rad(const Camera& camera, int width, int height);
 /// The state POV-Ray keeps for a camera while parsing: its vectors plus look_at and angle.
 /// The defaults are POV-Ray's default camera.
 struct CameraState {
+    CameraType type = CameraType::Perspective;
+    double angle_deg_given = 90.0;  // the last angle given (POV-Ray's Angle; 90 by default)
+    double v_angle_deg = 0.0;       // spherical: the vertical angle (0: not given)
     glm::dvec3 location{0.0, 0.0, 0.0};
     glm::dvec3 direction{0.0, 0.0, 1.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
@@ -45,18 +60,23 @@ struct CameraState {
 
 /// The modifiers of one camera statement, each present only when written.
 struct CameraModifiers {
+    std::optional<CameraType> type;  // the projection keyword, when given
     std::optional<glm::dvec3> location, direction, up, right, sky, look_at;
     std::optional<double> angle_deg;
+    std::optional<double> v_angle_deg;  // spherical: the second angle
     Transform transform;  // translate, rotate, scale, matrix and transform, composed in order
 };
 
 /// Applies a camera statement to `base` the way POV-Ray 3.5+ does (parse.cpp, Parse_Camera):
-/// location, direction, up, right and sky replace the base's; then `angle` rescales
-/// direction to |right| / (2 tan(angle / 2)); then `look_at` turns direction toward the
-/// point (keeping its length), sets right to sky x direction and up to direction x right
-/// (keeping their lengths and the handedness of right); last the transforms move location
-/// and turn direction, up and right (not sky).  Errors: an angle outside [0, 180) and a
-/// look_at point equal to the location.
+/// the projection keyword sets the type; location, direction, up, right and sky replace the
+/// base's; then `angle` rescales direction to |right| / (2 tan(angle / 2)) for the
+/// perspective and orthographic cameras (the others keep it as their field of view); then
+/// `look_at` turns direction toward the point (keeping its length), sets right to sky x
+/// direction and up to direction x right (keeping their lengths and the handedness of
+/// right); an orthographic camera without up and right, or with an angle, scales right and
+/// up by |look_at - location| / |direction|; last the transforms move location and turn
+/// direction, up and right (not sky).  Errors: an angle outside [0, 180) (perspective and
+/// orthographic) and a look_at point equal to the location.
 Result<CameraState> apply_camera_statement(const CameraState& base, const CameraModifiers& mods);
 
 /// The camera the scene holds (scene.h) for a parsed camera state.

@@ -17,8 +17,8 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 
 void SceneParser::push_cond(Cond type, const Token& hash, const Token& keyword) {
     if (static_cast<int>(cond_.size()) >= options_.limits.max_nesting) {
-        fail(hash, "conditional directives nested more than " +
-                       std::to_string(options_.limits.max_nesting) + " deep, mirage's limit");
+        fail_fatal(hash, "conditional directives nested more than " +
+                             std::to_string(options_.limits.max_nesting) + " deep, mirage's limit");
     }
     CondEntry e;
     e.type = type;
@@ -66,14 +66,20 @@ void SceneParser::count_loop_pass(const CondEntry& loop, const Token& at) {
     if (++loop_passes_ <= options_.limits.max_loop_passes) return;
     const Frame& frame = frames_.back();  // a loop lies in one frame: this one
     if (frame.file->path == loop.loc.file) {
-        fail_at(*frame.file, loop.loc.line, loop.loc.column, frame.context,
-                "'" + loop.directive + "' reached mirage's limit of " +
-                    std::to_string(options_.limits.max_loop_passes) +
-                    " loop passes (all loops together): an endless loop?");
+        try {
+            fail_at(*frame.file, loop.loc.line, loop.loc.column, frame.context,
+                    "'" + loop.directive + "' reached mirage's limit of " +
+                        std::to_string(options_.limits.max_loop_passes) +
+                        " loop passes (all loops together): an endless loop?");
+        } catch (ParseFailure& failure) {
+            failure.fatal = true;
+            throw;
+        }
     }
-    fail(at, "'" + loop.directive + "' at " + place(loop.loc, at) + " reached mirage's limit of " +
-                 std::to_string(options_.limits.max_loop_passes) +
-                 " loop passes (all loops together): an endless loop?");
+    fail_fatal(at, "'" + loop.directive + "' at " + place(loop.loc, at) +
+                       " reached mirage's limit of " +
+                       std::to_string(options_.limits.max_loop_passes) +
+                       " loop passes (all loops together): an endless loop?");
 }
 
 // Reads and ignores tokens (carrying out only the conditional directives) while the top of
@@ -182,7 +188,7 @@ void SceneParser::handle_directive(const Token& hash) {
     }
     if (w == "default") return directive_default(keyword);
     if (w == "fopen" || w == "fclose" || w == "read" || w == "write") {
-        fail(keyword, "unsupported directive '#" + w + "' (file input and output)");
+        return directive_file_io(keyword);  // parse_opaque.cpp
     }
     // '#' before a macro call is allowed, as in POV-Ray.
     if (is_identifier(keyword)) {
@@ -265,12 +271,13 @@ void SceneParser::directive_end(const Token& hash, const Token& keyword) {
         // #declare whose value the #end cuts), the whole body again: inside itself.
         if (depth > top.directive_depth) {
             const ActiveDirective& cut = directives_[top.directive_depth - 1];
-            fail(hash, "'#end' of the '" + top.directive + "' at " + place(top.loc, hash) +
-                           " comes inside the '" + cut.keyword + "' at " + place(cut.loc, hash) +
-                           ": a loop must end after the directives in it");
+            fail_fatal(hash, "'#end' of the '" + top.directive + "' at " + place(top.loc, hash) +
+                                 " comes inside the '" + cut.keyword + "' at " +
+                                 place(cut.loc, hash) +
+                                 ": a loop must end after the directives in it");
         }
-        fail(hash, "'#end' of the '" + top.directive + "' at " + place(top.loc, hash) +
-                       " comes after the directive it was opened in has ended");
+        fail_fatal(hash, "'#end' of the '" + top.directive + "' at " + place(top.loc, hash) +
+                             " comes after the directive it was opened in has ended");
     }
     switch (top.type) {
         case Cond::While: {

@@ -123,7 +123,10 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
         elements = array.elements.data();
     }
     expect_punct("=", "after '" + name.text() + "'");
-    Value value = parse_rvalue(name, false);
+    // The value may end inside a macro's body (#local V = F(x) with F's last token a ';'),
+    // while that macro's table is still open: the identifier belongs to this scope.
+    const std::size_t scope = tables_.size();
+    Value value = parse_declared_value(name);
     if (element) {
         auto* array = std::get_if<ArrayValue>(&sym->value.data);
         if (!array || array->elements.data() != elements || *element >= array->elements.size()) {
@@ -132,7 +135,7 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
         }
         array->elements[*element] = std::make_shared<Value>(std::move(value));
     } else {
-        declare(name, std::move(value), local);
+        declare(name, std::move(value), local, scope);
     }
 }
 
@@ -151,7 +154,7 @@ void SceneParser::directive_include(const Token& hash, const Token& keyword) {
     Token at = peek(0);
     std::string name = parse_string(/*pathname=*/true);
     if (frames_.size() > kMaxIncludeDepth + static_cast<std::size_t>(macro_depth_)) {
-        fail(at, "too many nested include files");
+        fail_fatal(at, "too many nested include files");
     }
     std::vector<std::string> searched;
     std::string found;

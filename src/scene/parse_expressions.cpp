@@ -124,9 +124,15 @@ bool SceneParser::starts_float(const Token& t) const {
             return true;
         case TokenKind::Punct:
             return t.is_punct("(") || t.is_punct("+") || t.is_punct("-") || t.is_punct("!");
-        case TokenKind::Identifier:
+        case TokenKind::Identifier: {
             if (is_keyword(t)) return is_float_function(t.text());
-            return identifier_numeric_size(t.symbol ? t.symbol : lookup(t.text())) == 1;
+            auto sym = t.symbol ? t.symbol : lookup(t.text());
+            if (sym &&
+                std::holds_alternative<std::shared_ptr<const FunctionCode>>(sym->value.data)) {
+                return true;  // a call of a user function
+            }
+            return identifier_numeric_size(sym) == 1;
+        }
         default:
             return false;
     }
@@ -396,7 +402,11 @@ Numeric SceneParser::parse_identifier_value(const Token& t) {
         if (!e) fail(at, "element of the array '" + t.text() + "' used before it is set");
         value = e.get();
     }
+    value = &use_value(t, *sym, *value);  // an opaque value's use fails here, naming its reason
     if (auto* n = std::get_if<Numeric>(&value->data)) return *n;
+    if (auto* f = std::get_if<std::shared_ptr<const FunctionCode>>(&value->data)) {
+        return Numeric::scalar(call_function_value(t, **f));  // parse_functions.cpp
+    }
     fail(t, "expected a numeric expression, got " + value_type_name(*value) + " identifier '" +
                 t.text() + "'");
 }
@@ -635,7 +645,10 @@ Numeric SceneParser::parse_function(const Token& name) {
     }
     if (f == "defined") return scalar(parse_ifdef_param() ? 1.0 : 0.0);
 
-    if (one_of(f, {"inside", "now", "trace", "min_extent", "max_extent", "vturbulence"})) {
+    if (one_of(f, {"inside", "trace", "min_extent", "max_extent"})) {
+        return parse_object_function(name);  // parse_queries.cpp
+    }
+    if (one_of(f, {"now", "vturbulence"})) {
         fail(name, "unsupported function '" + f + "'");
     }
     if (is_string_function(f)) {

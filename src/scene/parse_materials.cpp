@@ -508,9 +508,12 @@ void SceneParser::parse_pattern(Pattern& p, PatternUse use, PatternTargets& t, c
             Token item = next();
             if (use != PatternUse::Pigment) fail(item, "color_map can only be used in a pigment");
             if (refuses_maps(p.kind)) {
-                // POV-Ray refuses it too; in lenient mode the pattern may have been skipped.
+                // POV-Ray refuses it too; in lenient mode the pattern may have been skipped,
+                // and in a declaration the pigment may stand in for an opaque one (the
+                // declaration is then opaque already).
                 const std::string what = p.kind == PatternKind::Solid ? "plain colour" : "checker";
-                if (options_.strict || p.kind != PatternKind::Solid) {
+                const bool stand_in = opaque_capture_ && opaque_capture_->captured;
+                if ((options_.strict && !stand_in) || p.kind != PatternKind::Solid) {
                     fail(item, p.kind == PatternKind::Solid
                                    ? "color_map needs a pattern such as gradient (a " + what +
                                          " has none)"

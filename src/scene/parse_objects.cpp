@@ -27,17 +27,12 @@ constexpr ModifierArity kUnsupportedObjectModifiers[] = {
     {"interior", Arity::Block},
     {"material", Arity::Block},
     {"photons", Arity::Block},
-    {"bounded_by", Arity::Block},
-    {"clipped_by", Arity::Block},
     {"interior_texture", Arity::Block},
     {"radiosity", Arity::Block},
     {"no_image", Arity::OptionalFloat},
     {"no_reflection", Arity::OptionalFloat},
     {"no_radiosity", Arity::OptionalFloat},
     {"double_illuminate", Arity::OptionalFloat},
-    {"sturm", Arity::OptionalFloat},
-    {"hierarchy", Arity::OptionalFloat},
-    {"split_union", Arity::Float},
     {"cutaway_textures", Arity::None},
     {"uv_mapping", Arity::None},
     {"debug_tag", Arity::String},
@@ -68,14 +63,25 @@ constexpr ModifierArity kUnsupportedLightModifiers[] = {
 };
 
 constexpr ModifierArity kUnsupportedCameraItems[] = {
-    {"orthographic", Arity::None},     {"fisheye", Arity::None},
-    {"ultra_wide_angle", Arity::None}, {"omnimax", Arity::None},
-    {"panoramic", Arity::None},        {"spherical", Arity::None},
-    {"cylinder", Arity::Float},        {"mesh_camera", Arity::Block},
-    {"aperture", Arity::Float},        {"blur_samples", Arity::FloatOptionalFloat},
-    {"focal_point", Arity::Vector},    {"confidence", Arity::Float},
-    {"variance", Arity::Float},        {"normal", Arity::Block},
+    {"mesh_camera", Arity::Block},
+    {"aperture", Arity::Float},
+    {"blur_samples", Arity::FloatOptionalFloat},
+    {"focal_point", Arity::Vector},
+    {"confidence", Arity::Float},
+    {"variance", Arity::Float},
+    {"normal", Arity::Block},
     {"bokeh", Arity::Block},
+};
+
+struct CameraKeyword {
+    const char* name;
+    CameraType type;
+};
+constexpr CameraKeyword kCameraTypes[] = {
+    {"perspective", CameraType::Perspective}, {"orthographic", CameraType::Orthographic},
+    {"fisheye", CameraType::Fisheye},         {"ultra_wide_angle", CameraType::UltraWideAngle},
+    {"omnimax", CameraType::Omnimax},         {"panoramic", CameraType::Panoramic},
+    {"spherical", CameraType::Spherical},
 };
 
 template <std::size_t N>
@@ -89,42 +95,22 @@ const ModifierArity* find_arity(const ModifierArity (&table)[N], const std::stri
 }  // namespace
 
 bool SceneParser::is_unsupported_object_keyword(const Token& t) const {
-    return is_keyword(t) && one_of(t.text(), {"bicubic_patch",
-                                              "blob",
-                                              "cone",
-                                              "cubic",
-                                              "difference",
-                                              "height_field",
-                                              "intersection",
-                                              "isosurface",
-                                              "julia_fractal",
-                                              "lathe",
-                                              "light_group",
-                                              "merge",
-                                              "mesh",
-                                              "mesh2",
-                                              "ovus",
-                                              "parametric",
-                                              "poly",
-                                              "polygon",
-                                              "polynomial",
-                                              "prism",
-                                              "quadric",
-                                              "quartic",
-                                              "smooth_triangle",
-                                              "sor",
-                                              "sphere_sweep",
-                                              "superellipsoid",
-                                              "text",
-                                              "torus",
-                                              "triangle",
-                                              "composite"});
+    return is_keyword(t) && !is_shape_keyword(t.text()) &&
+           one_of(t.text(), {"bicubic_patch", "blob",         "cubic",
+                             "height_field",  "isosurface",   "julia_fractal",
+                             "lathe",         "light_group",  "mesh",
+                             "mesh2",         "ovus",         "parametric",
+                             "poly",          "polygon",      "polynomial",
+                             "prism",         "quartic",      "smooth_triangle",
+                             "sor",           "sphere_sweep", "superellipsoid",
+                             "text",          "triangle",     "composite"});
 }
 
 bool SceneParser::starts_object(const Token& t) const {
     if (is_keyword(t)) {
-        return one_of(t.text(), {"sphere", "plane", "box", "cylinder", "disc", "union", "object",
-                                 "light_source"}) ||
+        return is_shape_keyword(t.text()) ||
+               one_of(t.text(),
+                      {"union", "difference", "intersection", "merge", "object", "light_source"}) ||
                is_unsupported_object_keyword(t);
     }
     if (is_identifier(t)) {
@@ -136,40 +122,135 @@ bool SceneParser::starts_object(const Token& t) const {
             }
             return false;
         }
+        if (auto* opaque = std::get_if<OpaqueValue>(&sym->value.data))
+            return opaque->what == "object";
         return std::holds_alternative<ObjectNode>(sym->value.data);
     }
     return false;
 }
 
+// The objects' parse recurses once per level of nesting: the functions on that path fill the
+// node they are given instead of returning one, and what a level needs rarely (a copy of a
+// declared object, a mesh, an unreadable object) is made in a frame of its own, so that a
+// level costs no more stack than one node.
+
 std::optional<ObjectNode> SceneParser::parse_object() {
+    std::optional<ObjectNode> out(std::in_place);
+    if (!parse_object_to(*out)) out.reset();
+    return out;
+}
+
+bool SceneParser::parse_object_to(ObjectNode& out) {
+    if (options_.strict) return parse_object_unguarded(out);
+    // Lenient: an object that cannot be read becomes an unknown object (no extent), and the
+    // parse goes on after it.
+    const int balance = brace_balance_;
+    const Token start = peek(0);
+    try {
+        return parse_object_unguarded(out);
+    } catch (const ParseFailure& failure) {
+        if (failure.fatal || !starts_object(start)) throw;
+        recover_statement(balance);
+        [&]() __attribute__((noinline)) {
+            ObjectNode unknown;
+            unknown.kind = ObjectNode::Kind::Empty;
+            unknown.loc = start.loc();
+            unknown.unknown = "'" + start.text() + "' that mirage cannot read (" + failure.reason +
+                              " at " + failure.loc.file + ":" + std::to_string(failure.loc.line) +
+                              ":" + std::to_string(failure.loc.column) + ")";
+            out = std::move(unknown);
+        }
+        ();
+        return true;
+    }
+}
+
+bool SceneParser::parse_object_unguarded(ObjectNode& out) {
     const Token t = peek(0);
-    if (!starts_object(t)) return std::nullopt;
+    if (!starts_object(t)) return false;
     Nested nested(*this, t);
     if (is_identifier(t)) {
-        Token name = next();
-        Value v = identifier_value(name);
-        auto* object = std::get_if<ObjectNode>(&v.data);
-        if (!object) fail(name, "expected an object, got " + value_type_name(v));
-        return std::move(*object);
+        copy_named_object(out);
+        return true;
     }
     Token kw = next();
     count_objects(1, kw);
     const std::string& w = kw.text();
-    if (w == "union") return parse_union(kw);
-    if (w == "object") return parse_object_statement(kw);
-    if (w == "light_source") return parse_light_source(kw);
-    if (is_unsupported_object_keyword(kw)) {
+    if (w == "union") {
+        parse_union(kw, out);
+    } else if (w == "difference" || w == "intersection" || w == "merge") {
+        parse_csg(kw, out);
+    } else if (w == "object") {
+        parse_object_statement(kw, out);
+    } else if (w == "light_source") {
+        parse_light_source(kw, out);
+    } else if (is_unsupported_object_keyword(kw)) {
         unsupported(kw, "object '" + w + "'");
-        if (!peek_punct("{")) {
-            fail(peek(0), "expected '{' after '" + w + "', got " + describe(peek(0)));
-        }
-        skip_block();
-        ObjectNode empty;
-        empty.kind = ObjectNode::Kind::Empty;
-        empty.loc = kw.loc();
-        return empty;
+        parse_unknown_object(kw, out);
+    } else {
+        parse_shape(kw, out);
     }
-    return parse_shape(kw);
+    return true;
+}
+
+void SceneParser::copy_named_object(ObjectNode& out) {
+    const Token name = next();
+    Value v = identifier_value(name);
+    auto* object = std::get_if<ObjectNode>(&v.data);
+    if (!object) fail(name, "expected an object, got " + value_type_name(v));
+    out = std::move(*object);
+}
+
+void SceneParser::parse_unknown_object(const Token& kw, ObjectNode& unknown) {
+    // Its own arguments are left out; the bounded_by, clipped_by and transforms at its level
+    // are read, for its extent.
+    unknown.kind = ObjectNode::Kind::Empty;
+    unknown.loc = kw.loc();
+    unknown.unknown = "object '" + kw.text() + "'";
+    expect_open_brace(kw);
+    int depth = 0;
+    while (true) {
+        const Token& t = peek(0);
+        if (t.is_eof()) {
+            fail(t, "expected '}' to close '" + kw.text() + "' opened at " + place(kw.loc(), t) +
+                        ", got end of file");
+        }
+        if (depth == 0) {
+            if (t.is_punct("}")) break;
+            Transform tr;
+            if (parse_transform_item(tr)) {
+                transform_object(unknown, tr);
+                continue;
+            }
+            if (t.is_word("bounded_by") || t.is_word("clipped_by")) {
+                parse_bound_or_clip(unknown);
+                continue;
+            }
+        }
+        const Token x = next();
+        if (x.is_punct("{")) ++depth;
+        if (x.is_punct("}")) --depth;
+    }
+    expect_close_brace(kw);
+}
+
+void SceneParser::parse_bound_or_clip(ObjectNode& node) {
+    Token item = next();
+    const bool clip = item.is_word("clipped_by");
+    expect_open_brace(item);
+    std::vector<ObjectNode>& list = clip ? node.clip : node.bound;
+    if (peek_word(clip ? "bounded_by" : "clipped_by")) {
+        // clipped_by { bounded_by } and bounded_by { clipped_by }: the same objects.
+        next();
+        list = clip ? node.bound : node.clip;
+    } else {
+        list.clear();
+        parse_objects_into(list);
+        if (list.empty()) {
+            fail(peek(0), "expected an object in '" + item.text() + "', got " + describe(peek(0)));
+        }
+    }
+    expect_close_brace(item);
 }
 
 // `sphere { Ident ... }` and the like copy the object named (POV-Ray's Parse_Object_Id).
@@ -177,119 +258,98 @@ static bool starts_with_object_identifier(const Value* v) {
     return v && std::holds_alternative<ObjectNode>(v->data);
 }
 
-ObjectNode SceneParser::parse_shape(const Token& kw) {
-    expect_open_brace(kw);
-    if (starts_with_object_identifier(peek_identifier_value(0))) {
-        ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
-        parse_object_modifiers(copy, kw);
-        return copy;
-    }
-    ObjectNode node;
-    node.kind = ObjectNode::Kind::Shape;
-    node.loc = kw.loc();
-    const std::string& w = kw.text();
-    if (w == "sphere") {
-        Sphere s;
-        s.center = parse_vector();
-        accept_comma();
-        s.radius = parse_float();
-        node.shape = s;
-    } else if (w == "plane") {
-        Plane p;
-        Token at = peek(0);
-        glm::dvec3 n = parse_vector();
-        double length = glm::length(n);
-        if (length < kEpsilon) fail(at, "degenerate plane normal");
-        p.normal = n / length;
-        accept_comma();
-        p.distance = parse_float();
-        node.shape = p;
-    } else if (w == "box") {
-        glm::dvec3 a = parse_vector();
-        accept_comma();
-        glm::dvec3 b = parse_vector();
-        // POV-Ray sorts the corners.
-        Box box;
-        box.corner1 = glm::min(a, b);
-        box.corner2 = glm::max(a, b);
-        node.shape = box;
-    } else if (w == "cylinder") {
-        Cylinder c;
-        Token at = peek(0);
-        c.base = parse_vector();
-        accept_comma();
-        c.cap = parse_vector();
-        accept_comma();
-        c.radius = parse_float();
-        if (glm::length(c.cap - c.base) < kEpsilon) {
-            fail(at, "degenerate cylinder: the base and cap points are the same");
+void SceneParser::parse_objects_into(std::vector<ObjectNode>& list) {
+    while (true) {
+        list.emplace_back();
+        if (!parse_object_to(list.back())) {
+            list.pop_back();
+            return;
         }
-        if (accept_word("open")) c.open = true;
-        node.shape = c;
-    } else if (w == "disc") {
-        Disc d;
-        d.center = parse_vector();
-        accept_comma();
-        Token at = peek(0);
-        glm::dvec3 n = parse_vector();
-        if (glm::length(n) < kEpsilon) fail(at, "degenerate disc normal");
-        d.normal = glm::normalize(n);
-        accept_comma();
-        d.radius = parse_float();
-        accept_comma();
-        if (starts_float(peek(0))) d.hole_radius = parse_float();
-        node.shape = d;
-    } else {
-        fail(kw, "expected an object, got " + describe(kw));
     }
-    parse_object_modifiers(node, kw);
-    return node;
 }
 
-ObjectNode SceneParser::parse_union(const Token& kw) {
+void SceneParser::parse_shape(const Token& kw, ObjectNode& node) {
     expect_open_brace(kw);
-    if (starts_with_object_identifier(peek_identifier_value(0)) && !peek_punct("}", 1)) {
-        // `union { Obj translate x }` is Obj moved; `union { A B }` is a union of two.
-        const Value* next_value = peek_identifier_value(1);
-        if (!starts_with_object_identifier(next_value) && !starts_object(peek(1))) {
-            ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
-            parse_object_modifiers(copy, kw);
-            return copy;
-        }
+    if (starts_with_object_identifier(peek_identifier_value(0))) {
+        copy_named_object(node);
+        parse_object_modifiers(node, kw);
+        return;
     }
-    ObjectNode u;
+    if (kw.is_word("mesh") || kw.is_word("mesh2")) {
+        [&]() __attribute__((noinline)) { node = parse_mesh(kw); }
+        ();
+    } else {
+        node.kind = ObjectNode::Kind::Shape;
+        node.loc = kw.loc();
+        node.shape = parse_shape_arguments(kw);
+        // POV-Ray turns text by 0.001 degrees about each axis, against cracks along the axes.
+        if (kw.is_word("text")) transform_object(node, make_rotation(glm::dvec3(0.001)));
+    }
+    parse_object_modifiers(node, kw);
+}
+
+/// `union { Obj translate x }` and the like: the object named, moved (true); `union { A B }`
+/// is a union of two (false).
+bool SceneParser::parse_modified_copy(const Token& kw, ObjectNode& node) {
+    if (!starts_with_object_identifier(peek_identifier_value(0)) || peek_punct("}", 1)) {
+        return false;
+    }
+    const Value* next_value = peek_identifier_value(1);
+    if (starts_with_object_identifier(next_value) || starts_object(peek(1))) return false;
+    copy_named_object(node);
+    parse_object_modifiers(node, kw);
+    return true;
+}
+
+void SceneParser::parse_union(const Token& kw, ObjectNode& u) {
+    expect_open_brace(kw);
+    if (parse_modified_copy(kw, u)) return;
     u.kind = ObjectNode::Kind::Union;
     u.loc = kw.loc();
-    while (auto child = parse_object()) u.children.push_back(std::move(*child));
+    parse_objects_into(u.children);
     if (u.children.size() < 2) {
         add_message(kw, "warning", "a union should have at least 2 objects");
     }
     parse_object_modifiers(u, kw);
-    return u;
 }
 
-ObjectNode SceneParser::parse_object_statement(const Token& kw) {
+void SceneParser::parse_csg(const Token& kw, ObjectNode& c) {
     expect_open_brace(kw);
-    auto inner = parse_object();
-    if (!inner) {
+    if (parse_modified_copy(kw, c)) return;
+    c.kind = ObjectNode::Kind::Csg;
+    c.csg = kw.is_word("merge") ? CsgKind::Merge : CsgKind::Intersection;
+    c.loc = kw.loc();
+    parse_objects_into(c.children);
+    // POV-Ray's Parse_CSG: a difference is the intersection of the first object with the
+    // inverse of every other.
+    if (kw.is_word("difference")) {
+        for (std::size_t i = 1; i < c.children.size(); ++i) invert_object(c.children[i]);
+    }
+    if (c.children.size() < 2) {
+        add_message(kw, "warning", "a " + kw.text() + " should have at least 2 objects");
+    }
+    parse_object_modifiers(c, kw);
+}
+
+void SceneParser::parse_object_statement(const Token& kw, ObjectNode& inner) {
+    expect_open_brace(kw);
+    if (!parse_object_to(inner)) {
         const Token& t = peek(0);
         if (is_identifier(t) && !t.symbol && !lookup(t.text())) {
             fail(t, "undefined identifier '" + t.text() + "'");
         }
         fail(t, "expected an object inside 'object', got " + describe(t));
     }
-    parse_object_modifiers(*inner, kw);
-    return std::move(*inner);
+    parse_object_modifiers(inner, kw);
 }
 
-ObjectNode SceneParser::parse_light_source(const Token& kw) {
+void SceneParser::parse_light_source(const Token& kw, ObjectNode& node) {
     expect_open_brace(kw);
     if (starts_with_object_identifier(peek_identifier_value(0))) {
-        ObjectNode copy = identifier_as<ObjectNode>(next(), "an object");
-        parse_object_modifiers(copy, kw);
-        return copy;
+        copy_named_object(node);
+        parse_object_modifiers(node, kw);
+        return;
     }
-    ObjectNode node;
     node.kind = ObjectNode::Kind::Light;
     node.loc = kw.loc();
     node.light.loc = kw.loc();
@@ -328,7 +388,6 @@ ObjectNode SceneParser::parse_light_source(const Token& kw) {
         break;
     }
     expect_close_brace(kw);
-    return node;
 }
 
 void SceneParser::parse_object_modifiers(ObjectNode& node, const Token& kw) {
@@ -370,11 +429,30 @@ void SceneParser::parse_object_modifiers(ObjectNode& node, const Token& kw) {
                 continue;
             }
             if (w == "inverse") {
-                Token item = next();
-                if (node.kind == ObjectNode::Kind::Union) {
-                    unsupported(item, "modifier 'inverse' on a union");
+                next();
+                invert_object(node);
+                continue;
+            }
+            if (w == "bounded_by" || w == "clipped_by") {
+                parse_bound_or_clip(node);
+                continue;
+            }
+            if (w == "sturm" && node.kind == ObjectNode::Kind::Shape) {
+                next();
+                const bool on = allow_float(1.0) != 0.0;
+                std::visit(
+                    [&](auto& shape) {
+                        if constexpr (requires { shape.sturm; }) shape.sturm = on;
+                    },
+                    node.shape);
+                continue;
+            }
+            if (w == "split_union" || w == "hierarchy") {
+                next();  // bounding hints: no effect on the image
+                if (w == "split_union") {
+                    parse_float();
                 } else {
-                    node.inverse = !node.inverse;
+                    allow_float(1.0);
                 }
                 continue;
             }
@@ -515,8 +593,26 @@ CameraState SceneParser::parse_camera(const Token& kw) {
         }
         if (is_keyword(t)) {
             const std::string& w = t.text();
-            if (w == "perspective") {
+            bool projection = false;
+            for (const CameraKeyword& k : kCameraTypes) {
+                if (w == k.name) {
+                    next();
+                    mods.type = k.type;
+                    projection = true;
+                }
+            }
+            if (projection) continue;
+            if (w == "cylinder") {
                 next();
+                Token at = peek(0);
+                const int n = static_cast<int>(parse_float());
+                if (n < 1 || n > 4)
+                    fail(at,
+                         "cylinder camera type " + std::to_string(n) + ": valid are types 1 to 4");
+                mods.type = n == 1   ? CameraType::Cylinder1
+                            : n == 2 ? CameraType::Cylinder2
+                            : n == 3 ? CameraType::Cylinder3
+                                     : CameraType::Cylinder4;
                 continue;
             }
             std::optional<glm::dvec3>* vector = w == "location"    ? &mods.location
@@ -534,24 +630,28 @@ CameraState SceneParser::parse_camera(const Token& kw) {
             if (w == "angle") {
                 next();
                 Token at = peek(0);
-                double angle = parse_float();
-                if (other_type) {
-                    // The angle of another projection (spherical takes two) means nothing
-                    // to the perspective camera the lenient parser falls back to.
-                    accept_comma();
-                    allow_float(0.0);
-                    continue;
-                }
+                const CameraType type = mods.type.value_or(base.type);
+                // The orthographic camera's angle is optional.
+                double angle = type == CameraType::Orthographic ? allow_float(0.0) : parse_float();
+                if (other_type) continue;
                 if (angle < 0.0) fail(at, "negative viewing angle");
-                if (angle >= 180.0) fail(at, "the viewing angle must be smaller than 180 degrees");
+                const bool flat =
+                    type == CameraType::Perspective || type == CameraType::Orthographic;
+                if (flat && angle >= 180.0) {
+                    fail(at, "the viewing angle must be smaller than 180 degrees");
+                }
                 mods.angle_deg = angle;
+                if (type == CameraType::Spherical) {
+                    // angle H [, V]: the vertical angle defaults to half the horizontal.
+                    accept_comma();
+                    mods.v_angle_deg = allow_float(angle * 0.5);
+                }
                 continue;
             }
             if (const ModifierArity* m = find_arity(kUnsupportedCameraItems, w)) {
                 Token item = next();
-                if (m->arity == Arity::None || w == "cylinder") other_type = true;
-                skip_unsupported(item, m->arity,
-                                 "camera item '" + item.text() + "' (only the perspective camera)");
+                if (w == "mesh_camera") other_type = true;
+                skip_unsupported(item, m->arity, "camera item '" + item.text() + "'");
                 continue;
             }
         }

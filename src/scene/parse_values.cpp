@@ -8,6 +8,15 @@ namespace {
 
 constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 
+// A punctuation mark that continues an expression after an identifier.
+bool continues_expression(const Token& t) {
+    if (t.kind() != TokenKind::Punct) return false;
+    for (const char* p : {"+", "-", "*", "/", ".", "[", "?", "<", ">", "=", "!", "&", "|"}) {
+        if (t.text() == p) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
@@ -41,12 +50,27 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
     };
 
     if (is_identifier(t)) {
-        const Value* v = peek_identifier_value(0);
+        // A copy keeps an opaque value opaque; one used in an expression is a use.
+        const Value* v;
+        {
+            ScopedFlag copying(copying_value_, true);
+            v = peek_identifier_value(0);
+        }
         if (!v && !t.symbol && !lookup(t.text())) {
             fail(t, "undefined identifier '" + t.text() + "'");
         }
         if (v && std::holds_alternative<Numeric>(v->data)) return numeric();
+        if (v && std::holds_alternative<std::shared_ptr<const FunctionCode>>(v->data)) {
+            ScopedFlag defer(defer_directives_, true);
+            if (peek(1).is_punct("(")) return numeric();  // F(...): a call, not a copy
+        }
+        if (v && std::holds_alternative<OpaqueValue>(v->data)) {
+            ScopedFlag defer(defer_directives_, true);
+            // An operator after it, or '(' (a call of a function kept opaque): a use.
+            if (continues_expression(peek(1)) || peek(1).is_punct("(")) return numeric();
+        }
         Token name = next();
+        ScopedFlag copying(copying_value_, true);
         return finish_other(identifier_value(name));
     }
     if (starts_string(t)) return finish_other(Value{parse_string(false)});
@@ -114,6 +138,10 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
             Token kw = next();
             return finish_other(parse_array_declaration(kw));
         }
+        if (w == "function") {
+            Token kw = next();
+            return finish_other(parse_function_value(kw));
+        }
         if (auto m = parse_material_value()) return finish_other(std::move(*m));
         static const char* const kUnsupportedValues[] = {
             "normal",     "interior",    "material",  "media",       "density",
@@ -138,7 +166,7 @@ Value SceneParser::parse_unsupported_value(const Token& keyword) {
         expect_punct(")", "after the function parameters");
     }
     if (peek_punct("{")) skip_block();
-    return Value{UnsupportedValue{keyword.text()}};
+    return Value{OpaqueValue{keyword.text(), "", FileLoc{}}};
 }
 
 Value SceneParser::parse_array_declaration(const Token& keyword) {

@@ -103,28 +103,56 @@ Scene SceneParser::parse(std::shared_ptr<SourceFile> main_file) {
 
 void SceneParser::parse_top_level() {
     while (true) {
+        if (options_.strict) {
+            if (!parse_top_level_item()) return;
+            continue;
+        }
+        // Lenient: a statement that cannot be read is left out (the compiler needs only the
+        // camera, the atmosphere and the objects' extent; objects recover on their own).
+        const int balance = brace_balance_;
+        const std::size_t read = tokens_read_;
+        bool camera = false;
+        {
+            // A statement that starts with a word nobody declared is not POV-Ray either.
+            const Token& t = peek(0);
+            if (is_identifier(t) && !t.symbol && !lookup(t.text())) reject_unknown_word(t);
+        }
+        try {
+            camera = peek(0).is_word("camera");
+            if (!parse_top_level_item()) return;
+        } catch (const ParseFailure& failure) {
+            if (camera || failure.fatal) throw;
+            scene_.skipped.push_back(Skipped{failure.reason, failure.loc});
+            recover_statement(balance);
+            if (tokens_read_ == read && !peek(0).is_eof()) next();
+        }
+    }
+}
+
+bool SceneParser::parse_top_level_item() {
+    {
         const Token t = peek(0);
         if (t.is_eof()) {
             check_cond_closed_at_frame_end(t);
-            return;
+            return false;
         }
         if (is_keyword(t)) {
             const std::string& w = t.text();
             if (w == "camera") {
                 parse_camera_into_scene(next());
-                continue;
+                return true;
             }
             if (w == "background") {
                 parse_background(next());
-                continue;
+                return true;
             }
             if (w == "sky_sphere") {
                 parse_sky_sphere(next());
-                continue;
+                return true;
             }
             if (w == "global_settings") {
                 parse_global_settings(next());
-                continue;
+                return true;
             }
             if (w == "max_trace_level") {
                 // Outside global_settings: POV-Ray takes it with a warning.
@@ -133,21 +161,21 @@ void SceneParser::parse_top_level() {
                 scene_.global.max_trace_level =
                     static_cast<int>(std::clamp(level, 1.0, double(kMaxTraceLevelLimit)));
                 add_message(item, "warning", "max_trace_level belongs in global_settings");
-                continue;
+                return true;
             }
             if (w == "default") {
                 // POV-Ray still takes the old form without '#'.
                 directive_default(next());
-                continue;
+                return true;
             }
             if (w == "fog") {
                 scene_.fogs.push_back(parse_fog_block(next()));
-                continue;
+                return true;
             }
             if (w == "media" || w == "rainbow") {
                 Token item = next();
                 skip_unsupported(item, Arity::Block, "atmospheric effect '" + w + "'");
-                continue;
+                return true;
             }
             if (w == "declare" || w == "local" || w == "include") {
                 fail(t, "'" + w + "' needs a '#' before it");
@@ -156,7 +184,7 @@ void SceneParser::parse_top_level() {
         if (starts_object(t)) {
             std::optional<ObjectNode> object = parse_object();
             add_object_to_scene(*object);
-            continue;
+            return true;
         }
         reject_unknown_word(t);
         fail(t, "expected an object, camera, light_source or directive, got " + describe(t));
@@ -166,7 +194,7 @@ void SceneParser::parse_top_level() {
 void SceneParser::add_object_to_scene(const ObjectNode& object) {
     // POV-Ray gives untextured objects the default texture as each top-level object is
     // finished (Post_Process), so a later #default does not change them.
-    flatten_object(object, default_texture_, scene_.primitives, scene_.lights);
+    flatten_object(object, default_texture_, scene_);
 }
 
 void SceneParser::parse_global_settings(const Token& kw) {
@@ -315,8 +343,14 @@ void SceneParser::export_symbols() {
 // Lenient mode
 
 void SceneParser::unsupported(const Token& at, const std::string& description) {
-    if (options_.strict) fail(at, "unsupported " + description);
-    scene_.skipped.push_back(Skipped{description, at.loc()});
+    if (opaque_capture_ && !opaque_capture_->captured) {
+        // Inside a declaration: the declared value becomes opaque (see OpaqueValue).
+        opaque_capture_->captured = true;
+        opaque_capture_->reason = "unsupported " + description;
+        opaque_capture_->loc = at.loc();
+    }
+    if (options_.strict && !opaque_capture_) fail(at, "unsupported " + description);
+    if (!options_.strict) scene_.skipped.push_back(Skipped{description, at.loc()});
 }
 
 void SceneParser::skip_block() {

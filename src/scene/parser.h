@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "scene/animation_clock.h"
+#include "scene/object_queries.h"
 #include "scene/scene.h"
 #include "util/result.h"
 
@@ -52,11 +53,14 @@ struct ParseOptions {
     // (brace-matched) and recorded in Scene::skipped; camera, lights, declarations still parsed.
     bool strict = true;
     ParseLimits limits;
+    // trace(), inside(), min_extent(), max_extent(): answered by the tracer
+    // (tracer_object_queries() of trace/object_query.h); unset, a scene using them is refused.
+    ObjectQueries object_queries;
 };
 
 /// Parses the scene file at `path` (shown in messages as given).  The file must be a regular
-/// file (with its includes at most ParseLimits::max_source_bytes); a directory, a device or a pipe is refused
-/// with a message saying so.
+/// file (with its includes at most ParseLimits::max_source_bytes); a directory, a device or a pipe
+/// is refused with a message saying so.
 Result<Scene> parse_scene_file(const std::string& path, const ParseOptions& options);
 
 /// Parses scene text; `name` is the file name shown in messages, and its directory is where

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "scene/shapes.h"
 #include "util/file_loc.h"
 
 namespace mirage {
@@ -297,34 +298,6 @@ struct Interior {
     bool hollow = false;
 };
 
-// Shapes, in their own space as written in the scene file.
-struct Sphere {
-    glm::dvec3 center{0.0};
-    double radius = 1.0;
-};
-struct Plane {  // points p with dot(normal, p) = distance; normal normalised by the parser
-    glm::dvec3 normal{0.0, 1.0, 0.0};
-    double distance = 0.0;
-};
-struct Box {
-    glm::dvec3 corner1{-1.0};
-    glm::dvec3 corner2{1.0};
-};
-struct Cylinder {
-    glm::dvec3 base{0.0};
-    glm::dvec3 cap{0.0, 1.0, 0.0};
-    double radius = 1.0;
-    bool open = false;
-};
-struct Disc {
-    glm::dvec3 center{0.0};
-    glm::dvec3 normal{0.0, 1.0, 0.0};
-    double radius = 1.0;
-    double hole_radius = 0.0;
-};
-
-using Shape = std::variant<Sphere, Plane, Box, Cylinder, Disc>;
-
 /// One primitive of the scene: `union`s and `object`s are flattened by the parser, every
 /// primitive carries its world transform and its resolved texture (its own, the one it
 /// inherits from an enclosing union, or POV-Ray's default).
@@ -338,6 +311,17 @@ struct Primitive {
     std::shared_ptr<const Interior> interior;  // never null after parsing; children of a union
                                                // share its interior (one medium, as in POV-Ray)
     std::optional<Texture> interior_texture;   // seen where a ray meets the surface from inside
+    int compound = -1;  // the compound object (Scene::compounds) it is part of; -1: its own
+};
+
+/// An object the lenient parser could not represent (an unsupported kind, or one that uses
+/// an opaque value).  Its extent is what its bounded_by or clipped_by objects bound; without
+/// them it is unbounded.
+struct UnknownObject {
+    std::string what;
+    FileLoc loc;
+    std::vector<std::vector<Primitive>> bounds;  // per bounded_by or clipped_by object, its
+                                                 // primitives in world space
 };
 
 /// A light source (POV-Ray's LightSource): a point light, a spotlight or a cylinder light,
@@ -369,9 +353,28 @@ struct PointLight {
     bool media_interaction = true;
 };
 
-/// A perspective camera, held as POV-Ray holds it after parsing: the final location,
-/// direction, right, up and sky vectors with look_at, angle and transforms applied.
+/// POV-Ray 3.7's camera projections (render/tracepixel.cpp).
+enum class CameraType : std::uint8_t {
+    Perspective,
+    Orthographic,
+    Fisheye,
+    UltraWideAngle,
+    Omnimax,
+    Panoramic,
+    Cylinder1,  ///< cylinder 1: vertical cylinder, fixed viewpoint
+    Cylinder2,  ///< cylinder 2: horizontal cylinder, fixed viewpoint
+    Cylinder3,  ///< cylinder 3: vertical cylinder, viewpoint moving along the axis
+    Cylinder4,  ///< cylinder 4: horizontal cylinder, viewpoint moving along the axis
+    Spherical,
+};
+
+/// A camera, held as POV-Ray holds it after parsing: the final location, direction, right,
+/// up and sky vectors with look_at, angle and transforms applied.
 struct Camera {
+    CameraType type = CameraType::Perspective;
+    double angle_deg = 90.0;   // the angle as given (fisheye, ultra_wide_angle, panoramic,
+                               // cylinder, omnimax and spherical use it; 0 when not given)
+    double v_angle_deg = 0.0;  // spherical: the vertical angle (0: half the horizontal)
     glm::dvec3 location{0.0};
     glm::dvec3 direction{0.0, 0.0, 1.0};
     glm::dvec3 right{1.33, 0.0, 0.0};
@@ -411,6 +414,8 @@ struct Fog {
     glm::dvec3 up{0.0, 1.0, 0.0};
     std::optional<Turbulence> turbulence;
     double turb_depth = 0.5;
+    glm::dvec3 lowered_by{0.0};  // how far the scene was moved down (Mirage_Ground_Height):
+                                 // the turbulence is evaluated where POV-Ray's point is
     FileLoc loc;
 };
 
@@ -446,6 +451,8 @@ struct Scene {
     std::map<std::string, std::string> material_symbols;
     std::vector<std::string> messages;  // #warning and #debug output, with their place
     std::vector<Skipped> skipped;
+    std::vector<CompoundObject> compounds;
+    std::vector<UnknownObject> unknown_objects;  // lenient mode only
 };
 
 }  // namespace mirage

@@ -34,11 +34,19 @@
 #include "scene/scene.h"
 #include "scene/value.h"
 
+namespace mirage {
+class TrueTypeFont;
+}
+
 namespace mirage::scene_detail {
 
 /// A complete, formatted error message, thrown from deep in the parser.
 struct ParseFailure {
     std::string message;
+    std::string reason;        // the message alone, without its place (for opaque values)
+    FileLoc loc;               // its place
+    bool from_opaque = false;  // a use of an opaque value (see OpaqueValue)
+    bool fatal = false;        // a limit reached or a loop cut: the lenient parse stops too
 };
 
 /// Why a file is being read: the main file, an #include, or a macro body.  Chained to the
@@ -191,6 +199,9 @@ class SceneParser {
   private:
     // ---- errors and messages (token_stream.cpp) ----
     [[noreturn]] void fail(const Token& at, const std::string& message) const;
+    /// fail() for a limit or a broken structure: no lenient recovery goes on after it (it
+    /// would go round the same loop, or past the limit, again).
+    [[noreturn]] void fail_fatal(const Token& at, const std::string& message) const;
     [[noreturn]] void fail_at(const SourceFile& file, int line, int column,
                               const std::shared_ptr<const FrameContext>& context,
                               const std::string& message) const;
@@ -231,7 +242,7 @@ class SceneParser {
     bool is_identifier(const Token& t) const;
     /// Ends the parse at `t` when it is a word that is neither a keyword nor declared: a
     /// typo where a block's item or its closing brace belongs.
-    void reject_unknown_word(const Token& t) const;
+    void reject_unknown_word(const Token& t);
 
     void push_frame(std::shared_ptr<const SourceFile> file, std::size_t begin, std::size_t end,
                     FrameContext::Kind kind, const std::string& macro_name, const Token& at);
@@ -256,6 +267,7 @@ class SceneParser {
     void directive_version(const Token& keyword);
     void directive_message(const Token& hash, const Token& keyword);
     void directive_default(const Token& keyword);
+    void directive_file_io(const Token& keyword);  // parse_opaque.cpp
     void push_cond(Cond type, const Token& hash, const Token& keyword);
     /// Reads a float parameter of the directive at `hash` while the top entry of the
     /// conditional stack is `busy_with` (see CondEntry::busy); `read` parses it.
@@ -275,7 +287,9 @@ class SceneParser {
 
     // ---- symbols (symbols.cpp) ----
     std::shared_ptr<Symbol> lookup(const std::string& name, int* depth = nullptr) const;
-    void declare(const Token& name_token, Value value, bool local);
+    /// #local declares into the table `scope` levels deep (default: the innermost), the
+    /// scope the directive stands in even when its value ended inside a macro's body.
+    void declare(const Token& name_token, Value value, bool local, std::size_t scope = 0);
 
     // ---- values (parse_values.cpp; identifier values in symbols.cpp) ----
     Value parse_rvalue(const Token& for_name, bool is_macro_argument);
@@ -301,6 +315,31 @@ class SceneParser {
         return peek_punct("[", ahead);
     }
 
+    // ---- opaque values (parse_opaque.cpp) ----
+    /// Collects the first reason a declaration cannot be evaluated (see OpaqueValue).
+    struct OpaqueCapture {
+        bool captured = false;
+        std::string reason;
+        FileLoc loc;
+    };
+    /// The right-hand side of a #declare or #local: parse_rvalue, kept as an OpaqueValue when
+    /// something in it is unsupported (strict and lenient) or cannot be read (lenient).
+    Value parse_declared_value(const Token& name);
+    /// What the value of the identifier `name` stands for when it is used: the value itself,
+    /// or for an opaque value its lenient stand-in; fails at the use (with the opaque value's
+    /// reason) when there is none.  Inside a declaration the use makes that one opaque too.
+    const Value& use_value(const Token& name, const Symbol& symbol, const Value& value);
+    [[noreturn]] void fail_opaque_use(const Token& name, const Symbol& symbol,
+                                      const OpaqueValue& value);
+    /// After a failure in a statement that began with brace balance `balance`: skips to its end
+    /// (the braces opened since closed, or the ';' of a value without braces).
+    void recover_statement(int balance);
+    OpaqueCapture* opaque_capture_ = nullptr;
+    bool copying_value_ = false;   // parse_rvalue copies an identifier: opaque values stay so
+    int brace_balance_ = 0;        // '{' minus '}' read by next()
+    std::size_t tokens_read_ = 0;  // tokens read by next()
+    std::map<std::string, Value> stand_ins_;
+
     // ---- expressions (parse_expressions.cpp) ----
     Numeric parse_express();
     Numeric parse_logical();
@@ -310,6 +349,16 @@ class SceneParser {
     Numeric parse_num_factor();
     Numeric parse_factor_body();
     Numeric parse_function(const Token& name);
+    Numeric parse_object_function(const Token& name);  // trace, inside, min/max_extent
+    // ---- user functions (parse_functions.cpp) ----
+    /// After 'function': [( parameters )] { expression | internal(n) }.
+    Value parse_function_value(const Token& keyword);
+    std::shared_ptr<const FunctionCode> parse_function_block(const Token& keyword,
+                                                             std::vector<std::string> parameters);
+    /// A call F(a, b, ...) of a function value in a float expression.
+    double call_function_value(const Token& name, const FunctionCode& f);
+    int parse_function_expression(FunctionCode& f, int level);
+    int parse_function_primary(FunctionCode& f);
     Numeric parse_identifier_value(const Token& t);
     Numeric apply_period(const Numeric& value, const Token& dot);
     double parse_float();
@@ -336,10 +385,31 @@ class SceneParser {
     bool starts_object(const Token& t) const;
     bool is_unsupported_object_keyword(const Token& t) const;
     std::optional<ObjectNode> parse_object();
-    ObjectNode parse_shape(const Token& keyword);
-    ObjectNode parse_union(const Token& keyword);
-    ObjectNode parse_object_statement(const Token& keyword);
-    ObjectNode parse_light_source(const Token& keyword);
+    // The recursive path of the object parse fills the (default) node it is given: false
+    // when no object starts here.
+    bool parse_object_to(ObjectNode& out);
+    bool parse_object_unguarded(ObjectNode& out);
+    void parse_objects_into(std::vector<ObjectNode>& list);
+    void copy_named_object(ObjectNode& out);  // the declared object named next
+    bool parse_modified_copy(const Token& keyword, ObjectNode& out);
+    void parse_shape(const Token& keyword, ObjectNode& out);
+    void parse_union(const Token& keyword, ObjectNode& out);
+    void parse_csg(const Token& keyword, ObjectNode& out);
+    void parse_unknown_object(const Token& keyword, ObjectNode& out);
+    void parse_bound_or_clip(ObjectNode& object);
+    // ---- shapes (parse_shapes.cpp) ----
+    static bool is_shape_keyword(const std::string& word);
+    Shape parse_shape_arguments(const Token& keyword);
+    Shape parse_polygon(const Token& keyword);
+    ObjectNode parse_mesh(const Token& keyword);
+    Shape parse_text(const Token& keyword);
+    /// A file the scene names (a font, an image), looked up as POV-Ray does: as given, in the
+    /// including file's directory, then the library paths, each also with `extension` added.
+    std::string find_scene_file(const std::string& name, const std::string& extension) const;
+    std::map<std::string, std::shared_ptr<TrueTypeFont>> fonts_;
+    std::optional<Texture> parse_mesh_triangle_texture();
+    void parse_object_statement(const Token& keyword, ObjectNode& out);
+    void parse_light_source(const Token& keyword, ObjectNode& out);
     void parse_object_modifiers(ObjectNode& object, const Token& keyword);
     bool parse_transform_item(Transform& t);
     Transform parse_transform_block(const Token& keyword);
@@ -389,6 +459,7 @@ class SceneParser {
 
     // ---- the scene (parser.cpp) ----
     void parse_top_level();
+    bool parse_top_level_item();  // false at the end of the file
     void parse_global_settings(const Token& keyword);
     void parse_background(const Token& keyword);
     void parse_sky_sphere(const Token& keyword);

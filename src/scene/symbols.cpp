@@ -51,10 +51,10 @@ std::shared_ptr<Symbol> SceneParser::lookup(const std::string& name, int* depth)
     return nullptr;
 }
 
-void SceneParser::declare(const Token& name_token, Value value, bool local) {
+void SceneParser::declare(const Token& name_token, Value value, bool local, std::size_t scope) {
     const std::string& name = name_token.text();
     if (local) {
-        auto& table = tables_.back();
+        auto& table = scope > 0 && scope <= tables_.size() ? tables_[scope - 1] : tables_.back();
         auto it = table.find(name);
         if (it != table.end()) {
             it->second->value = std::move(value);
@@ -90,7 +90,7 @@ const Value* SceneParser::peek_identifier_value(std::size_t ahead) {
             return nullptr;
         }
     }
-    return &sym->value;
+    return &use_value(t, *sym, sym->value);
 }
 
 std::shared_ptr<Value>& SceneParser::index_array(ArrayValue& array, const Token& name) {
@@ -121,13 +121,14 @@ Value SceneParser::identifier_value(const Token& name) {
             value = e.get();
         }
     }
+    value = &use_value(name, *sym, *value);  // an opaque value's use fails here
     // A copy costs what it holds: objects and array elements count towards the limits, and
     // nothing nests deeper than the parser itself could (a #declare A[0] = A; in a loop would).
     Weight w;
     weigh(*value, 1, w);
     if (w.depth > options_.limits.max_nesting) {
-        fail(name, "'" + name.text() + "' holds objects or arrays nested more than " +
-                       std::to_string(options_.limits.max_nesting) + " deep, mirage's limit");
+        fail_fatal(name, "'" + name.text() + "' holds objects or arrays nested more than " +
+                             std::to_string(options_.limits.max_nesting) + " deep, mirage's limit");
     }
     count_objects(w.objects, name);
     count_array_elements(w.elements, name);

@@ -30,14 +30,16 @@ std::string bytes_text(std::uintmax_t n) {
 SceneParser::Nested::Nested(SceneParser& parser, const Token& at) : parser_(parser) {
     const int limit = parser_.options_.limits.max_nesting;
     if (parser_.nesting_ >= limit) {
-        parser_.fail(at, "nesting too deep: more than " + std::to_string(limit) +
-                             " levels of parentheses, objects and directives inside each other");
+        parser_.fail_fatal(at, "nesting too deep: more than " + std::to_string(limit) +
+                                   " levels of parentheses, objects and directives inside each "
+                                   "other");
     }
     const auto here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
     if (here < parser_.stack_floor_) {
-        parser_.fail(at, "nesting too deep: " + std::to_string(parser_.nesting_) +
-                             " levels of parentheses, objects and directives inside each other "
-                             "fill the stack this parse has");
+        parser_.fail_fatal(at,
+                           "nesting too deep: " + std::to_string(parser_.nesting_) +
+                               " levels of parentheses, objects and directives inside each other "
+                               "fill the stack this parse has");
     }
     ++parser_.nesting_;
 }
@@ -45,16 +47,16 @@ SceneParser::Nested::Nested(SceneParser& parser, const Token& at) : parser_(pars
 void SceneParser::count_objects(std::size_t count, const Token& at) {
     objects_ += count;
     if (objects_ > options_.limits.max_objects) {
-        fail(at, "more than " + std::to_string(options_.limits.max_objects) +
-                     " objects parsed or copied in all, mirage's limit");
+        fail_fatal(at, "more than " + std::to_string(options_.limits.max_objects) +
+                           " objects parsed or copied in all, mirage's limit");
     }
 }
 
 void SceneParser::count_array_elements(std::size_t count, const Token& at) {
     array_elements_ += count;
     if (array_elements_ > options_.limits.max_total_array_elements) {
-        fail(at, "more than " + std::to_string(options_.limits.max_total_array_elements) +
-                     " array elements made or copied in all, mirage's limit");
+        fail_fatal(at, "more than " + std::to_string(options_.limits.max_total_array_elements) +
+                           " array elements made or copied in all, mirage's limit");
     }
 }
 
@@ -76,8 +78,10 @@ int SceneParser::int_value(double v, const Token& at, const std::string& what, i
 
 std::string SceneParser::read_source(const std::string& path, const Token* at) {
     auto refuse = [&](const std::string& why) {
-        if (at) fail(*at, "include file '" + path + "' " + why);
-        throw ParseFailure{path + ": " + why};
+        if (at) fail_fatal(*at, "include file '" + path + "' " + why);
+        ParseFailure failure{path + ": " + why};
+        failure.fatal = true;
+        throw failure;
     };
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -171,7 +175,17 @@ void SceneParser::fail_at(const SourceFile& file, int line, int column,
                           const std::shared_ptr<const FrameContext>& context,
                           const std::string& message) const {
     throw ParseFailure{format_diagnostic(file.path, line, column, message, context_lines(context),
-                                         file.line_text(line))};
+                                         file.line_text(line)),
+                       message, FileLoc{file.path, line, column}};
+}
+
+void SceneParser::fail_fatal(const Token& at, const std::string& message) const {
+    try {
+        fail(at, message);
+    } catch (ParseFailure& failure) {
+        failure.fatal = true;
+        throw;
+    }
 }
 
 void SceneParser::fail(const Token& at, const std::string& message) const {
@@ -227,8 +241,8 @@ void SceneParser::push_frame(std::shared_ptr<const SourceFile> file, std::size_t
                              std::size_t end, FrameContext::Kind kind,
                              const std::string& macro_name, const Token& at) {
     if (frames_.size() >= kMaxFrames) {
-        fail(at, "too many nested macro calls and include files (more than " +
-                     std::to_string(kMaxFrames) + "): endless recursion?");
+        fail_fatal(at, "too many nested macro calls and include files (more than " +
+                           std::to_string(kMaxFrames) + "): endless recursion?");
     }
     auto context = std::make_shared<FrameContext>();
     context->kind = kind;
@@ -301,9 +315,13 @@ bool SceneParser::is_identifier(const Token& t) const {
     return t.kind() == TokenKind::Identifier && !is_reserved_word(t.text());
 }
 
-void SceneParser::reject_unknown_word(const Token& t) const {
-    if (is_identifier(t) && !t.symbol && !lookup(t.text()))
-        fail(t, "unknown keyword '" + t.text() + "'");
+void SceneParser::reject_unknown_word(const Token& t) {
+    if (!is_identifier(t)) return;
+    auto sym = t.symbol ? t.symbol : lookup(t.text());
+    if (!sym) fail(t, "unknown keyword '" + t.text() + "'");
+    // An opaque value where a block's item belongs: its use is what fails.
+    if (auto* opaque = std::get_if<OpaqueValue>(&sym->value.data))
+        fail_opaque_use(t, *sym, *opaque);
 }
 
 void SceneParser::resolve(Token& t) {
@@ -393,6 +411,9 @@ const Token& SceneParser::peek(std::size_t ahead) {
 Token SceneParser::next() {
     Token t = peek(0);
     lookahead_.pop_front();
+    ++tokens_read_;
+    if (t.kind() == TokenKind::Punct)
+        brace_balance_ += t.text() == "{" ? 1 : t.text() == "}" ? -1 : 0;
     return t;
 }
 

@@ -83,8 +83,11 @@ std::string value_type_name(const Value& value) {
         std::string operator()(const CameraState&) const { return "camera"; }
         std::string operator()(const ArrayValue&) const { return "array"; }
         std::string operator()(const std::shared_ptr<const MacroDef>&) const { return "macro"; }
-        std::string operator()(const UnsupportedValue& u) const { return u.what; }
+        std::string operator()(const OpaqueValue& u) const { return u.what; }
         std::string operator()(const SkySphere&) const { return "sky_sphere"; }
+        std::string operator()(const std::shared_ptr<const FunctionCode>&) const {
+            return "function";
+        }
         std::string operator()(const MaterialValue& m) const { return m.type_name(); }
     };
     return std::visit(Namer{}, value.data);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/camera.h"
+#include "scene/function.h"
 #include "scene/lexer.h"
 #include "scene/material_value.h"
 #include "scene/object_tree.h"
@@ -62,15 +63,29 @@ struct ColourMapValue {
     std::vector<ColourMapEntry> entries;
 };
 
-/// Something the lenient parser accepted without understanding (a function, a normal...).
-struct UnsupportedValue {
-    std::string what;
+/// A value the parser keeps without evaluating it, where POV-Ray would: something outside the
+/// supported subset (a function, a normal, a pigment pattern mirage does not know...) or a
+/// declaration the parser could not read.  Declaring and copying it is always fine, so that a
+/// standard include file's unused declarations cost nothing; only a use is an error, at the
+/// use, naming the reason.  In lenient mode a use of an opaque texture, pigment, finish,
+/// colour map, transform or sky_sphere takes its kind's default instead (what the compiler
+/// does not need) and an opaque object becomes an unknown object (ObjectNode::Kind::Empty).
+///
+/// Plug-in point: a part of the parser that meets something it cannot evaluate calls
+/// SceneParser::unsupported(); inside a #declare that turns the declared value into an
+/// OpaqueValue of the declaration's kind with that reason.
+struct OpaqueValue {
+    std::string what;    // the kind of value, as value_type_name names it ("pigment", "object",
+                         // "function", "normal"...), "value" when not known
+    std::string reason;  // why it is opaque ("unsupported pigment pattern 'marble'"); empty for
+                         // a kind mirage never evaluates
+    FileLoc loc;         // where the reason lies (empty with the reason)
 };
 
 struct Value {
     std::variant<Numeric, std::string, ObjectNode, Texture, Pigment, Finish, Transform,
                  ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
-                 UnsupportedValue, SkySphere, MaterialValue>
+                 OpaqueValue, SkySphere, MaterialValue, std::shared_ptr<const FunctionCode>>
         data;
 };
 

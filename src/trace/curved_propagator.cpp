@@ -72,8 +72,8 @@ class EyeIndex {
         : accel_id_(accel.id()), eye_(eye), start_(kBins + 1, 0) {
         std::vector<std::pair<int, int>> spans;  // per box: its bin ranges, [first, last]
         std::vector<int> owner;
-        for (int i = 0; i < accel.primitive_count(); ++i) {
-            const Aabb& b = accel.primitive_box(i);
+        for (int i = 0; i < accel.box_count(); ++i) {
+            const Aabb& b = accel.item_box(i);
             if (!b.finite()) continue;
             const double x0 = b.lo.x - eye.x, x1 = b.hi.x - eye.x;
             const double z0 = b.lo.z - eye.z, z1 = b.hi.z - eye.z;
@@ -124,7 +124,7 @@ class EyeIndex {
         const int k = bin(pseudo_angle(heading.x, heading.y));
         const double inv_x = 1.0 / heading.x, inv_z = 1.0 / heading.y;
         for (int j = start_[k]; j < start_[k + 1]; ++j) {
-            const Aabb& b = accel.primitive_box(items_[j]);
+            const Aabb& b = accel.item_box(items_[j]);
             double p = -std::numeric_limits<double>::infinity();
             double q = std::numeric_limits<double>::infinity();
             // As the hierarchy's footprint test: a line in a face's plane counts as inside.
@@ -260,9 +260,9 @@ double scene_reach(const SceneAccel& accel, const glm::dvec3& eye) {
     thread_local Slot slot;
     if (slot.valid && slot.id == accel.id() && slot.eye == eye) return slot.reach;
     double reach = 0.0;
-    for (int i = 0; i < accel.primitive_count(); ++i) {
-        const Aabb& b = accel.primitive_box(i);
-        if (!b.finite()) continue;
+    for (int i = 0; i < accel.box_count(); ++i) {
+        const Aabb& b = accel.item_box(i);
+        if (b.empty() || !b.finite()) continue;
         const double dx = std::max(std::abs(b.lo.x - eye.x), std::abs(b.hi.x - eye.x));
         const double dz = std::max(std::abs(b.lo.z - eye.z), std::abs(b.hi.z - eye.z));
         reach = std::max(reach, std::hypot(dx, dz));

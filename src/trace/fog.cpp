@@ -14,7 +14,7 @@ constexpr double kEpsilon = 1.0e-10;
 /// The fog's turbulence shortens the distance the light travels in it (both fog types).
 double turbulent_width(const Fog& fog, const glm::dvec3& p, double width, int generator) {
     const Turbulence& t = *fog.turbulence;
-    const glm::dvec3 q = p * t.amount;
+    const glm::dvec3 q = (p + fog.lowered_by) * t.amount;
     const double k = std::exp(-width / fog.distance);
     return width *
            (1.0 - k * std::min(1.0, turbulence(q, t, generator) * to_single(fog.turb_depth)));

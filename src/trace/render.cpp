@@ -86,6 +86,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                                std::pair{1.0 * settings.width, 1.0 * settings.height},
                                std::pair{0.5 * settings.width, 0.5 * settings.height}}) {
         const CameraRay r = pixel_ray(scene.camera, x, y, settings.width, settings.height);
+        if (!r.traced) continue;  // a fisheye's corner: no ray there
         const bool finite = std::isfinite(r.origin.x) && std::isfinite(r.origin.y) &&
                             std::isfinite(r.origin.z) && std::isfinite(r.direction.x) &&
                             std::isfinite(r.direction.y) && std::isfinite(r.direction.z);
@@ -128,6 +129,10 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                 for (int x = x0; x < x1; ++x) {
                     const CameraRay ray =
                         pixel_ray(scene.camera, x + 0.5, y + 0.5, settings.width, settings.height);
+                    if (!ray.traced) {
+                        result.image.set(x, y, glm::vec3(0.0f));  // POV-Ray leaves it black
+                        continue;
+                    }
                     RayStart start;
                     start.origin = ray.origin;
                     start.direction = ray.direction;

@@ -30,27 +30,53 @@ Result<SceneAccel> SceneAccel::build(const Scene& scene) {
     const int n = static_cast<int>(scene.primitives.size());
     accel.shapes_.reserve(n);
     accel.casts_shadow_.reserve(n);
-    std::vector<Aabb> boxes;
-    std::vector<glm::dvec3> centres;
-    std::vector<int> finite;
-    boxes.reserve(n);
-    centres.reserve(n);
     for (int i = 0; i < n; ++i) {
         const Primitive& p = scene.primitives[i];
         auto shape = prepare_shape(p);
         if (!shape) return shape.error();
         accel.shapes_.push_back(*shape);
         accel.casts_shadow_.push_back(p.no_shadow ? 0 : 1);
-        const Aabb box = shape_bounds(*shape);
+        if (p.compound >= static_cast<int>(scene.compounds.size())) {
+            return make_error(scene.file + ": primitive " + std::to_string(i) +
+                              " belongs to a compound object the scene does not have");
+        }
+    }
+    // Items: the primitives of their own, then the compounds, in scene order.
+    std::vector<Aabb> item_boxes;
+    for (int i = 0; i < n; ++i) {
+        if (scene.primitives[i].compound >= 0) continue;
+        accel.items_.push_back(Item{i, -1});
+        item_boxes.push_back(shape_bounds(accel.shapes_[i]));
+    }
+    for (std::size_t c = 0; c < scene.compounds.size(); ++c) {
+        accel.compounds_.push_back(prepare_compound(scene.compounds[c], accel.shapes_));
+        accel.items_.push_back(Item{-1, static_cast<int>(c)});
+        item_boxes.push_back(accel.compounds_.back().bounds());
+    }
+    std::vector<Aabb> boxes;
+    std::vector<glm::dvec3> centres;
+    std::vector<int> finite;
+    for (std::size_t k = 0; k < accel.items_.size(); ++k) {
+        const Aabb& box = item_boxes[k];
+        if (box.empty()) {
+            // No surface at all (an intersection of disjoint objects): never hit.
+            boxes.push_back(box);
+            centres.push_back(glm::dvec3(0.0));
+            continue;
+        }
         boxes.push_back(box.finite() ? box.padded(1e-9, 1e-12) : box);
         centres.push_back(box.finite() ? box.centre() : glm::dvec3(0.0));
         if (box.finite()) {
-            finite.push_back(i);
+            finite.push_back(static_cast<int>(k));
             accel.finite_bounds_.extend(boxes.back());
         } else {
-            accel.unbounded_.push_back(i);
-            const bool ground = shape->kind == ShapeKind::Plane && shape->normal.x == 0.0 &&
-                                shape->normal.z == 0.0 && shape->pov_distance == 0.0;
+            accel.unbounded_items_.push_back(static_cast<int>(k));
+            const int prim = accel.items_[k].primitive;
+            if (prim >= 0) accel.unbounded_.push_back(prim);
+            const PreparedShape* shape = prim >= 0 ? &accel.shapes_[prim] : nullptr;
+            const bool ground = shape && shape->kind == ShapeKind::Plane &&
+                                shape->normal.x == 0.0 && shape->normal.z == 0.0 &&
+                                shape->pov_distance == 0.0;
             (ground ? accel.ground_plane_ : accel.unbounded_elsewhere_) = true;
         }
     }
@@ -61,6 +87,38 @@ Result<SceneAccel> SceneAccel::build(const Scene& scene) {
     }
     accel.boxes_ = std::move(boxes);
     return accel;
+}
+
+template <bool kAnyShadow>
+bool SceneAccel::intersect_item(const Item& item, const glm::dvec3& origin,
+                                const glm::dvec3& direction, double t_min, double t_max,
+                                Candidate& hit) const {
+    if (item.primitive >= 0) {
+        if (kAnyShadow && !casts_shadow_[item.primitive]) return false;
+        if (!intersect_shape(shapes_[item.primitive], origin, direction, t_min, t_max, hit.hit)) {
+            return false;
+        }
+        hit.primitive = item.primitive;
+        return true;
+    }
+    const PreparedCompound& c = compounds_[item.compound];
+    if (!kAnyShadow) {
+        CompoundHit h;
+        if (!intersect_compound(c, shapes_, origin, direction, t_min, t_max, h)) return false;
+        hit.hit = h.hit;
+        hit.primitive = h.primitive;
+        return true;
+    }
+    std::vector<CompoundHit> hits;
+    intersect_compound_all(c, shapes_, origin, direction, t_min, t_max, hits);
+    for (const CompoundHit& h : hits) {
+        if (casts_shadow_[h.primitive]) {
+            hit.hit = h.hit;
+            hit.primitive = h.primitive;
+            return true;
+        }
+    }
+    return false;
 }
 
 int SceneAccel::build_node(std::vector<int>& items, int begin, int end, int depth,
@@ -146,17 +204,19 @@ template <bool kAnyShadow>
 bool SceneAccel::traverse(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
                           double t_max, Candidate& best) const {
     bool found = false;
-    // Unbounded primitives first: a near plane tightens the interval for the hierarchy.
-    for (const int i : unbounded_) {
-        if (kAnyShadow && !casts_shadow_[i]) continue;
-        ShapeHit hit;
-        const double limit = found ? best.t : t_max;
-        if (intersect_shape(shapes_[i], origin, direction, t_min, limit, hit) &&
-            (!found || better(hit.t, i, best.t, best.primitive))) {
-            best = Candidate{hit.t, hit.part, i};
+    const auto test = [&](int k) {
+        Candidate c;
+        const double limit = found ? best.hit.t : t_max;
+        if (intersect_item<kAnyShadow>(items_[k], origin, direction, t_min, limit, c) &&
+            (!found || better(c.hit.t, c.primitive, best.hit.t, best.primitive))) {
+            best = c;
             found = true;
-            if (kAnyShadow) return true;
         }
+        return found;
+    };
+    // Unbounded items first: a near plane tightens the interval for the hierarchy.
+    for (const int k : unbounded_items_) {
+        if (test(k) && kAnyShadow) return true;
     }
     if (nodes_.empty()) return found;
 
@@ -166,20 +226,11 @@ bool SceneAccel::traverse(const glm::dvec3& origin, const glm::dvec3& direction,
     stack[top++] = 0;
     while (top > 0) {
         const Node& node = nodes_[stack[--top]];
-        const double limit = found ? best.t : t_max;
+        const double limit = found ? best.hit.t : t_max;
         if (!slab_test(node.box, ray, t_min, limit)) continue;
         if (node.count > 0) {
             for (int k = node.first; k < node.first + node.count; ++k) {
-                const int i = order_[k];
-                if (kAnyShadow && !casts_shadow_[i]) continue;
-                ShapeHit hit;
-                const double lim = found ? best.t : t_max;
-                if (intersect_shape(shapes_[i], origin, direction, t_min, lim, hit) &&
-                    (!found || better(hit.t, i, best.t, best.primitive))) {
-                    best = Candidate{hit.t, hit.part, i};
-                    found = true;
-                    if (kAnyShadow) return true;
-                }
+                if (test(order_[k]) && kAnyShadow) return true;
             }
             continue;
         }
@@ -204,10 +255,33 @@ std::optional<SurfaceHit> SceneAccel::closest_hit(const glm::dvec3& origin,
     Candidate best;
     if (!traverse<false>(origin, direction, t_min, t_max, best)) return std::nullopt;
     SurfaceHit hit;
-    hit.t = best.t;
+    hit.t = best.hit.t;
     hit.primitive = best.primitive;
-    hit.point = origin + best.t * direction;
-    hit.normal = shape_normal(shapes_[best.primitive], hit.point, best.part);
+    hit.point = origin + best.hit.t * direction;
+    hit.normal = shape_normal(shapes_[best.primitive], hit.point, best.hit);
+    return hit;
+}
+
+std::optional<SurfaceHit> SceneAccel::closest_unbounded_hit(const glm::dvec3& origin,
+                                                            const glm::dvec3& direction,
+                                                            double t_min, double t_max) const {
+    Candidate best;
+    bool found = false;
+    for (const int k : unbounded_items_) {
+        Candidate c;
+        const double limit = found ? best.hit.t : t_max;
+        if (intersect_item<false>(items_[k], origin, direction, t_min, limit, c) &&
+            (!found || better(c.hit.t, c.primitive, best.hit.t, best.primitive))) {
+            best = c;
+            found = true;
+        }
+    }
+    if (!found) return std::nullopt;
+    SurfaceHit hit;
+    hit.t = best.hit.t;
+    hit.primitive = best.primitive;
+    hit.point = origin + best.hit.t * direction;
+    hit.normal = shape_normal(shapes_[best.primitive], hit.point, best.hit);
     return hit;
 }
 

@@ -1,6 +1,7 @@
 // The scene's geometry prepared for ray queries: a bounding volume hierarchy over the
-// finite primitives plus a list of the unbounded ones (planes), answering the closest hit
-// along a segment and whether any shadow-casting primitive lies on one.
+// finite objects (primitives of their own and compound objects) plus a list of the unbounded
+// ones (planes and the like), answering the closest hit along a segment and whether any
+// shadow-casting primitive lies on one.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include "atmosphere/sampler.h"
 #include "scene/scene.h"
 #include "trace/bounds.h"
+#include "trace/csg.h"
 #include "trace/shape_intersect.h"
 #include "util/result.h"
 
@@ -22,7 +24,8 @@ struct SurfaceHit {
     glm::dvec3 point{0.0};   // world point, origin + t direction
     glm::dvec3 normal{0.0};  // unit geometric normal as the shape defines it (outward,
                              // flipped for `inverse`), not turned toward the ray
-    int primitive = -1;      // index into Scene::primitives
+    int primitive = -1;      // index into Scene::primitives (for a compound object, the
+                             // primitive of it that was hit)
 };
 
 class SceneAccel {
@@ -41,6 +44,12 @@ class SceneAccel {
     /// [t_min, t_max].  Thread-safe.
     bool any_shadow_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
                         double t_max) const;
+
+    /// The closest hit among the unbounded objects only (planes and the like, and unbounded
+    /// compounds): what a segment that misses finite_bounds() can meet.
+    std::optional<SurfaceHit> closest_unbounded_hit(const glm::dvec3& origin,
+                                                    const glm::dvec3& direction, double t_min,
+                                                    double t_max) const;
 
     /// Where a vertical plane crosses the box of a finite primitive: the plane through
     /// `origin` along the unit horizontal `heading` (x, z); dz is measured from origin along
@@ -68,17 +77,31 @@ class SceneAccel {
 
     /// A number no other built SceneAccel has (a copy keeps it: it holds the same scene).
     std::uint64_t id() const { return id_; }
-    /// Primitive i's box as the hierarchy holds it (padded; unbounded for planes).
-    const Aabb& primitive_box(int i) const { return boxes_[i]; }
+    /// The hierarchy's items (the primitives of their own and the compound objects, CSG and
+    /// the like) and item k's box as the hierarchy holds it (padded; unbounded for planes,
+    /// empty for an object with no surface).
+    int box_count() const { return static_cast<int>(boxes_.size()); }
+    const Aabb& item_box(int k) const { return boxes_[k]; }
 
     int primitive_count() const { return static_cast<int>(shapes_.size()); }
+    /// The compound objects (Scene::compounds) and POV-Ray's inside test of one of them.
+    int compound_count() const { return static_cast<int>(compounds_.size()); }
+    bool inside_compound_object(int compound, const glm::dvec3& point) const {
+        return inside_compound(compounds_[compound], shapes_, point);
+    }
     const PreparedShape& shape(int primitive) const { return shapes_[primitive]; }
-    /// World bounds of the finite primitives (empty when there are none).
+    /// World bounds of the finite objects (empty when there are none).
     const Aabb& finite_bounds() const { return finite_bounds_; }
-    /// Primitives kept outside the hierarchy because they are unbounded.
+    /// Primitives of their own kept outside the hierarchy because they are unbounded
+    /// (unbounded compound objects are outside it too, but not listed here).
     const std::vector<int>& unbounded() const { return unbounded_; }
 
   private:
+    /// What the hierarchy holds: a primitive of its own or a compound object.
+    struct Item {
+        int primitive = -1;  // >= 0: a primitive of its own
+        int compound = -1;   // >= 0: index into compounds_
+    };
     struct Node {
         Aabb box;
         int first = 0;  // leaf: first index into order_; inner: index of the second child
@@ -86,10 +109,14 @@ class SceneAccel {
         int axis = 0;   // inner: the split axis, to visit the nearer child first
     };
     struct Candidate {
-        double t = 0.0;
-        int part = 0;
+        ShapeHit hit;
         int primitive = -1;
     };
+    /// The closest hit of one item within [t_min, t_max] (for shadows: of a primitive that
+    /// casts one).
+    template <bool kAnyShadow>
+    bool intersect_item(const Item& item, const glm::dvec3& origin, const glm::dvec3& direction,
+                        double t_min, double t_max, Candidate& hit) const;
 
     int build_node(std::vector<int>& items, int begin, int end, int depth,
                    const std::vector<Aabb>& boxes, const std::vector<glm::dvec3>& centres);
@@ -99,10 +126,13 @@ class SceneAccel {
 
     std::vector<PreparedShape> shapes_;
     std::vector<std::uint8_t> casts_shadow_;
+    std::vector<PreparedCompound> compounds_;
+    std::vector<Item> items_;
     std::vector<Node> nodes_;
-    std::vector<int> order_;  // finite primitives in leaf order
+    std::vector<int> order_;            // finite items in leaf order
+    std::vector<int> unbounded_items_;  // indices into items_
     std::vector<int> unbounded_;
-    std::vector<Aabb> boxes_;  // per primitive, as the hierarchy holds it (padded)
+    std::vector<Aabb> boxes_;  // per item, as the hierarchy holds it (padded)
     Aabb finite_bounds_;
     bool ground_plane_ = false;
     bool unbounded_elsewhere_ = false;

@@ -82,52 +82,6 @@ double crand_value(const glm::dvec3& p) {
                         static_cast<std::size_t>(hash3d(c, a, b)));
 }
 
-/// Whether a point is inside a shape (POV-Ray's Inside of spheres, planes, boxes, cylinders
-/// and discs, `inverse` included); false for shapes without an inside test here.
-bool inside_shape(const PreparedShape& s, const glm::dvec3& p) {
-    bool inside = false;
-    switch (s.kind) {
-        case ShapeKind::Sphere: {
-            const glm::dvec3 d = p - s.centre;
-            inside = glm::dot(d, d) - s.radius_sq < 0.0;
-            break;
-        }
-        case ShapeKind::Ellipsoid: {
-            const glm::dvec3 d = glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0)) - s.centre;
-            inside = glm::dot(d, d) - s.radius_sq < 0.0;
-            break;
-        }
-        case ShapeKind::Plane:
-            inside = glm::dot(p, s.normal) + s.pov_distance < kEpsilon;
-            break;
-        case ShapeKind::Box:
-        case ShapeKind::TransformedBox: {
-            const glm::dvec3 q =
-                s.kind == ShapeKind::Box ? p : glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0));
-            inside = true;
-            for (int i = 0; i < 3; ++i) {
-                if (q[i] < s.lo[i] - kEpsilon || q[i] > s.hi[i] + kEpsilon) inside = false;
-            }
-            break;
-        }
-        case ShapeKind::Cylinder: {
-            const glm::dvec3 q = glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0));
-            const double offset = s.open ? kEpsilon : -kEpsilon;
-            inside =
-                !(q.x * q.x + q.y * q.y > 1.0 + offset || q.z < 0.0 - offset || q.z > 1.0 + offset);
-            break;
-        }
-        case ShapeKind::Disc: {
-            const glm::dvec3 q = glm::dvec3(s.world_to_local * glm::dvec4(p, 1.0));
-            inside = q.z < 0.0;
-            break;
-        }
-        default:
-            return false;
-    }
-    return inside != s.inverse;
-}
-
 }  // namespace
 
 void TraceCounters::add(const TraceCounters& o) {
@@ -214,10 +168,22 @@ Shader::Shader(const Scene& scene, const SceneAccel& accel, const Propagator& pr
 Shader::Interiors Shader::containing_interiors(const glm::dvec3& point) const {
     // InitRayContainerState: every object the ray starts in, in object order (a union's
     // children share one interior, entered once).
+    // A compound object (CSG) is one object: its inside test is the compound's, and its
+    // interior the one its first primitive has (its children share the CSG's interior unless
+    // they have their own).
     Interiors list;
+    std::vector<std::uint8_t> compound_seen(static_cast<std::size_t>(accel_->compound_count()), 0);
     for (std::size_t i = 0; i < interiors_.size(); ++i) {
         if (std::find(list.begin(), list.end(), interiors_[i]) != list.end()) continue;
-        if (inside_shape(accel_->shape(static_cast<int>(i)), point)) list.push_back(interiors_[i]);
+        const int compound = scene_->primitives[i].compound;
+        bool inside = false;
+        if (compound < 0) {
+            inside = inside_shape(accel_->shape(static_cast<int>(i)), point);
+        } else if (!compound_seen[static_cast<std::size_t>(compound)]) {
+            compound_seen[static_cast<std::size_t>(compound)] = 1;
+            inside = accel_->inside_compound_object(compound, point);
+        }
+        if (inside) list.push_back(interiors_[i]);
     }
     return list;
 }
@@ -310,8 +276,8 @@ glm::dvec3 Shader::shade_hit(const PathHit& path, const glm::dvec3& origin, doub
     c.band = band;
     c.shadowed.resize(scene_->lights.size());
     std::vector<const Pattern*> warps;
-    const Texture& texture = from_inside && primitive.interior_texture ? *primitive.interior_texture
-                                                                       : primitive.texture;
+    const Texture& texture =
+        from_inside && primitive.interior_texture ? *primitive.interior_texture : primitive.texture;
     return texture_colour(texture, warps, hit.point, c);
 }
 

@@ -5,6 +5,10 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
+
+#include "trace/shapes/complex_shapes.h"
+#include "trace/shapes/polysolve.h"
 
 namespace mirage {
 
@@ -31,10 +35,7 @@ std::string where(const Primitive& p) {
     return out.str();
 }
 
-std::string shape_name(const Shape& shape) {
-    static const char* const names[] = {"sphere", "plane", "box", "cylinder", "disc"};
-    return names[shape.index()];
-}
+std::string shape_name(const Shape& shape) { return shape_keyword(shape); }
 
 bool all_finite(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c) {
@@ -119,15 +120,6 @@ void set_local_frame(PreparedShape& s, const Transform& t, const glm::dmat4& can
     s.world_to_local = shape_to_canonical * t.inverse;
     s.local_to_world = t.matrix * canonical_to_shape;
     s.normal_to_world = glm::transpose(glm::dmat3(s.world_to_local));
-}
-
-/// Accepts t when it lies in [t_min, t_max] and is closer than the best so far.
-inline void consider(double t, int part, double t_min, double t_max, ShapeHit& best, bool& found) {
-    if (t >= t_min && t <= t_max && (!found || t < best.t)) {
-        best.t = t;
-        best.part = part;
-        found = true;
-    }
 }
 
 /// POV-Ray's Sphere::Intersect: the two depths along a unit direction, or false for a miss
@@ -304,37 +296,217 @@ Result<PreparedShape> prepare_shape(const Primitive& primitive) {
         return s;
     }
 
-    const auto& disc = std::get<Disc>(primitive.shape);
-    const double length = glm::length(disc.normal);
-    if (!(length > kPovEpsilon)) {
-        return make_error(where(primitive) + "disc: degenerate normal (zero length)");
+    if (const auto* disc = std::get_if<Disc>(&primitive.shape)) {
+        const double length = glm::length(disc->normal);
+        if (!(length > kPovEpsilon)) {
+            return make_error(where(primitive) + "disc: degenerate normal (zero length)");
+        }
+        const glm::dvec3 w = disc->normal / length;
+        glm::dvec3 u, v;
+        orthonormal_basis(w, u, v);
+        s.kind = ShapeKind::Disc;
+        s.inner_sq = disc->hole_radius * disc->hole_radius;
+        s.outer_sq = disc->radius * disc->radius;
+        set_local_frame(s, t, frame_to_world(disc->center, u, v, w, 1.0, 1.0, 1.0),
+                        frame_from_world(disc->center, u, v, w, 1.0, 1.0, 1.0));
+        // POV-Ray carries the disc's normal in world space: transformed as a normal, normalised.
+        s.normal = glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * w);
+        return s;
     }
-    const glm::dvec3 w = disc.normal / length;
-    glm::dvec3 u, v;
-    orthonormal_basis(w, u, v);
-    s.kind = ShapeKind::Disc;
-    s.inner_sq = disc.hole_radius * disc.hole_radius;
-    s.outer_sq = disc.radius * disc.radius;
-    set_local_frame(s, t, frame_to_world(disc.center, u, v, w, 1.0, 1.0, 1.0),
-                    frame_from_world(disc.center, u, v, w, 1.0, 1.0, 1.0));
-    // POV-Ray carries the disc's normal in world space: transformed as a normal, normalised.
-    s.normal = glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * w);
+
+    if (const auto* cone = std::get_if<Cone>(&primitive.shape)) {
+        // POV-Ray's Compute_Cone_Data: the first point is its "apex"; the bigger end goes on
+        // top, at z = 1 of a canonical cone x^2 + y^2 = z^2 whose tip is the origin.
+        glm::dvec3 apex = cone->base, base = cone->cap;
+        double apex_r = cone->base_radius, base_r = cone->cap_radius;
+        glm::dvec3 axis = apex - base;
+        const double len = glm::length(axis);
+        if (!(len >= kPovEpsilon)) {
+            return make_error(where(primitive) + "cone: degenerate, base point = cap point");
+        }
+        axis /= len;
+        s.open = cone->open;
+        glm::dvec3 u, v;
+        const auto cylinder = [&](const glm::dvec3& from, const glm::dvec3& to, double r) {
+            glm::dvec3 w = to - from;
+            const double l = glm::length(w);
+            w /= l;
+            orthonormal_basis(w, u, v);
+            s.kind = ShapeKind::Cylinder;
+            set_local_frame(s, t, frame_to_world(from, u, v, w, r, r, l),
+                            frame_from_world(from, u, v, w, r, r, l));
+        };
+        if (std::abs(apex_r - base_r) < kPovEpsilon) {
+            cylinder(base, apex, apex_r);
+            return s;
+        }
+        if (apex_r < base_r) {
+            std::swap(apex, base);
+            std::swap(apex_r, base_r);
+            axis = -axis;
+        }
+        const double to_tip = base_r * len / (apex_r - base_r);
+        const glm::dvec3 origin = base - axis * to_tip;
+        const double tlen = to_tip + len;
+        if ((apex_r - base_r) * len / tlen < kPovEpsilon) {
+            cylinder(base, apex, apex_r);
+            return s;
+        }
+        s.kind = ShapeKind::Cone;
+        s.cone_dist = to_tip / tlen;
+        orthonormal_basis(axis, u, v);
+        set_local_frame(s, t, frame_to_world(origin, u, v, axis, apex_r, apex_r, tlen),
+                        frame_from_world(origin, u, v, axis, apex_r, apex_r, tlen));
+        return s;
+    }
+
+    if (const auto* torus = std::get_if<Torus>(&primitive.shape)) {
+        s.kind = ShapeKind::Torus;
+        s.major = torus->major;
+        s.minor = torus->minor;
+        s.sturm = torus->sturm;
+        set_local_frame(s, t, glm::dmat4(1.0), glm::dmat4(1.0));
+        return s;
+    }
+
+    if (const auto* quadric = std::get_if<Quadric>(&primitive.shape)) {
+        s.kind = ShapeKind::Quadric;
+        const double q[10] = {quadric->square.x, quadric->square.y, quadric->square.z,
+                              quadric->mixed.x,  quadric->mixed.y,  quadric->mixed.z,
+                              quadric->linear.x, quadric->linear.y, quadric->linear.z,
+                              quadric->constant};
+        std::copy(std::begin(q), std::end(q), std::begin(s.q));
+        set_local_frame(s, t, glm::dmat4(1.0), glm::dmat4(1.0));
+        return s;
+    }
+
+    auto complex = prepare_complex_shape(primitive);
+    if (!complex) return complex.error();
+    s.kind = ShapeKind::Complex;
+    s.complex = std::move(*complex);
     return s;
 }
 
-bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin, const glm::dvec3& direction,
-                     double t_min, double t_max, ShapeHit& hit) {
-    bool found = false;
+namespace {
+
+// POV-Ray's tolerances (torus.cpp): roots this close to the ray's start are dropped before
+// solving, against acne.
+constexpr double kTorusRootTolerance = 1.0e-4;
+
+template <class Emit>
+void torus_roots(const PreparedShape& s, const glm::dvec3& origin, const glm::dvec3& direction,
+                 double t_min, Emit&& emit) {
+    glm::dvec3 p = transform_point(s.world_to_local, origin);
+    glm::dvec3 d = glm::dmat3(s.world_to_local) * direction;
+    const double len = glm::length(d);
+    d /= len;
+    const double R = s.major, r = s.minor;
+    // POV-Ray's Test_Thick_Cylinder: the ray must meet the cylinder shell around the torus.
+    // Its tests look forward only (k > EPSILON); a query reaching behind its origin (a
+    // polyline joint) moves the start back first.
+    const double back = t_min < 0.0 ? t_min * len : 0.0;
+    const glm::dvec3 p0 = p + back * d;
+    const double h1 = -r, h2 = r;
+    const double r1 = R < r ? 0.0 : (R - r) * (R - r), r2 = (R + r) * (R + r);
+    const auto thick_cylinder = [&]() {
+        if (std::abs(d.y) < kPovEpsilon) {
+            if (p0.y < h1 || p0.y > h2) return false;
+        } else {
+            for (const double h : {h2, h1}) {
+                const double k = (h - p0.y) / d.y;
+                const double u = p0.x + k * d.x, v = p0.z + k * d.z;
+                if (k > kPovEpsilon && k < kPovMaxDistance) {
+                    const double rr = u * u + v * v;
+                    if (rr >= r1 && rr <= r2) return true;
+                }
+            }
+        }
+        const double a = d.x * d.x + d.z * d.z;
+        if (a > kPovEpsilon) {
+            const double b = p0.x * d.x + p0.z * d.z;
+            for (const double rr : {r2, r1}) {
+                const double c = p0.x * p0.x + p0.z * p0.z - rr;
+                double disc = b * b - a * c;
+                if (disc < 0.0) continue;
+                disc = std::sqrt(disc);
+                for (const double k : {(-b + disc) / a, (-b - disc) / a}) {
+                    if (k > kPovEpsilon && k < kPovMaxDistance) {
+                        const double h = p0.y + k * d.y;
+                        if (h >= h1 && h <= h2) return true;
+                    }
+                }
+            }
+        }
+        return false;
+    };
+    if (!thick_cylinder()) return;
+    // Start near the bounding sphere for precise roots, as POV-Ray does.
+    const double sphere_r = R + r + r;
+    double closer = 0.0;
+    const double dist_sq = glm::dot(p, p);
+    if (dist_sq > sphere_r * sphere_r) {
+        closer = std::sqrt(dist_sq) - sphere_r;
+        p += closer * d;
+    }
+    const double R2 = R * R, rr2 = r * r;
+    const double Py2 = p.y * p.y, Dy2 = d.y * d.y, PDy2 = p.y * d.y;
+    const double k1 = p.x * p.x + p.z * p.z + Py2 - R2 - rr2;
+    const double k2 = p.x * d.x + p.z * d.z + PDy2;
+    const double c[5] = {1.0, 4.0 * k2, 2.0 * (k1 + 2.0 * (k2 * k2 + R2 * Dy2)),
+                         4.0 * (k2 * k1 + 2.0 * R2 * PDy2), k1 * k1 + 4.0 * R2 * (Py2 - rr2)};
+    double roots[4];
+    // Against acne POV-Ray drops a root at the start; a query starting behind it keeps it.
+    const int n = solve_polynomial(4, c, roots, s.sturm, t_min < 0.0 ? 0.0 : kTorusRootTolerance);
+    for (int i = n; i-- > 0;) {
+        const double depth = (roots[i] + closer) / len;
+        if (depth < kPovMaxDistance) emit(depth, 0);
+    }
+}
+
+template <class Emit>
+void quadric_roots(const PreparedShape& s, const glm::dvec3& origin, const glm::dvec3& direction,
+                   Emit&& emit) {
+    // POV-Ray's Quadric::Intersect with the quadric in its own space (POV-Ray transforms the
+    // coefficients instead: the same roots).
+    const glm::dvec3 o = transform_point(s.world_to_local, origin);
+    const glm::dvec3 d = glm::dmat3(s.world_to_local) * direction;
+    const double QA = s.q[0], QE = s.q[1], QH = s.q[2], QB = s.q[3], QC = s.q[4], QF = s.q[5],
+                 QD = s.q[6], QG = s.q[7], QI = s.q[8], QJ = s.q[9];
+    const double a =
+        d.x * (QA * d.x + QB * d.y + QC * d.z) + d.y * (QE * d.y + QF * d.z) + d.z * QH * d.z;
+    const double b = d.x * (QA * o.x + 0.5 * (QB * o.y + QC * o.z + QD)) +
+                     d.y * (QE * o.y + 0.5 * (QB * o.x + QF * o.z + QG)) +
+                     d.z * (QH * o.z + 0.5 * (QC * o.x + QF * o.y + QI));
+    const double c = o.x * (QA * o.x + QB * o.y + QC * o.z + QD) +
+                     o.y * (QE * o.y + QF * o.z + QG) + o.z * (QH * o.z + QI) + QJ;
+    if (a != 0.0) {
+        double disc = b * b - a * c;
+        if (disc <= 0.0) return;
+        disc = std::sqrt(disc);
+        for (const double t : {(-b + disc) / a, (-b - disc) / a}) {
+            if (t < kPovMaxDistance) emit(t, 0);
+        }
+    } else if (b != 0.0) {
+        const double t = -0.5 * c / b;
+        if (t < kPovMaxDistance) emit(t, 0);
+    }
+}
+
+/// Every root of the shape along the ray, unfiltered by [t_min, t_max] (emit filters), with
+/// the part it belongs to.
+template <class Emit>
+void shape_roots(const PreparedShape& s, const glm::dvec3& origin, const glm::dvec3& direction,
+                 double t_min, Emit&& emit) {
     const bool allow_behind = t_min < 0.0;
     switch (s.kind) {
         case ShapeKind::Sphere: {
             double t1, t2;
             if (!sphere_roots(s.centre, s.radius_sq, origin, direction, allow_behind, t1, t2)) {
-                return false;
+                return;
             }
-            if (t1 < kPovMaxDistance) consider(t1, 0, t_min, t_max, hit, found);
-            if (t2 < kPovMaxDistance) consider(t2, 0, t_min, t_max, hit, found);
-            return found;
+            if (t1 < kPovMaxDistance) emit(t1, 0);
+            if (t2 < kPovMaxDistance) emit(t2, 0);
+            return;
         }
         case ShapeKind::Ellipsoid: {
             const glm::dvec3 p = transform_point(s.world_to_local, origin);
@@ -342,19 +514,19 @@ bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin, const glm
             const double len = glm::length(d);
             d *= 1.0 / len;
             double t1, t2;
-            if (!sphere_roots(s.centre, s.radius_sq, p, d, allow_behind, t1, t2)) return false;
+            if (!sphere_roots(s.centre, s.radius_sq, p, d, allow_behind, t1, t2)) return;
             // MAX_DISTANCE applies in the ellipsoid's own space, as in POV-Ray.
-            if (t1 < kPovMaxDistance) consider(t1 / len, 0, t_min, t_max, hit, found);
-            if (t2 < kPovMaxDistance) consider(t2 / len, 0, t_min, t_max, hit, found);
-            return found;
+            if (t1 < kPovMaxDistance) emit(t1 / len, 0);
+            if (t2 < kPovMaxDistance) emit(t2 / len, 0);
+            return;
         }
         case ShapeKind::Plane: {
             const double n_dot_d = glm::dot(s.normal, direction);
-            if (std::abs(n_dot_d) < kPovEpsilon) return false;
+            if (std::abs(n_dot_d) < kPovEpsilon) return;
             const double n_dot_o = glm::dot(s.normal, origin);
             const double t = -(n_dot_o + s.pov_distance) / n_dot_d;
-            if (t <= kPovMaxDistance) consider(t, 0, t_min, t_max, hit, found);
-            return found;
+            if (t <= kPovMaxDistance) emit(t, 0);
+            return;
         }
         case ShapeKind::Box:
         case ShapeKind::TransformedBox: {
@@ -370,68 +542,176 @@ bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin, const glm
             // does not register; a query reaching behind its origin (a polyline joint) starts
             // far enough back for entries from t_min on to register.
             const double t_start = t_min < 0.0 ? t_min - 2.0 * kBoxCloseTolerance : 0.0;
-            if (!box_roots(s.lo, s.hi, p, d, t_start, t_near, s_near, t_far, s_far)) {
-                return false;
-            }
-            if (s_near != 0) consider(t_near, s_near, t_min, t_max, hit, found);
-            if (s_far != 0) consider(t_far, s_far, t_min, t_max, hit, found);
-            return found;
+            if (!box_roots(s.lo, s.hi, p, d, t_start, t_near, s_near, t_far, s_far)) return;
+            if (s_near != 0) emit(t_near, s_near);
+            if (s_far != 0) emit(t_far, s_far);
+            return;
         }
-        case ShapeKind::Cylinder: {
+        case ShapeKind::Cylinder:
+        case ShapeKind::Cone: {
             const glm::dvec3 p = transform_point(s.world_to_local, origin);
             glm::dvec3 d = glm::dmat3(s.world_to_local) * direction;
             const double len = glm::length(d);
             d *= 1.0 / len;
-            // POV-Ray's Cone::Intersect for a cylinder: canonical depths, MAX_DISTANCE there.
-            const double a = d.x * d.x + d.y * d.y;
-            if (a > kPovEpsilon) {
-                const double b = p.x * d.x + p.y * d.y;
-                const double c = p.x * p.x + p.y * p.y - 1.0;
-                double disc = b * b - a * c;
-                if (disc >= 0.0) {
-                    disc = std::sqrt(disc);
-                    for (const double t : {(-b + disc) / a, (-b - disc) / a}) {
-                        const double z = p.z + t * d.z;
-                        if (t < kPovMaxDistance && z >= 0.0 && z <= 1.0) {
-                            consider(t / len, kSideHit, t_min, t_max, hit, found);
-                        }
+            const bool cylinder = s.kind == ShapeKind::Cylinder;
+            const double dist = cylinder ? 0.0 : s.cone_dist;
+            // POV-Ray's Cone::Intersect: canonical depths, MAX_DISTANCE there.
+            const auto side = [&](double t) {
+                const double z = p.z + t * d.z;
+                if (t < kPovMaxDistance && z >= dist && z <= 1.0) emit(t / len, kSideHit);
+            };
+            if (cylinder) {
+                const double a = d.x * d.x + d.y * d.y;
+                if (a > kPovEpsilon) {
+                    const double b = p.x * d.x + p.y * d.y;
+                    const double c = p.x * p.x + p.y * p.y - 1.0;
+                    double disc = b * b - a * c;
+                    if (disc >= 0.0) {
+                        disc = std::sqrt(disc);
+                        side((-b + disc) / a);
+                        side((-b - disc) / a);
+                    }
+                }
+            } else {
+                const double a = d.x * d.x + d.y * d.y - d.z * d.z;
+                const double b = d.x * p.x + d.y * p.y - d.z * p.z;
+                const double c = p.x * p.x + p.y * p.y - p.z * p.z;
+                if (std::abs(a) < kPovEpsilon) {
+                    if (std::abs(b) > kPovEpsilon) side(-0.5 * c / b);
+                } else {
+                    double disc = b * b - a * c;
+                    if (disc >= 0.0) {
+                        disc = std::sqrt(disc);
+                        side((-b - disc) / a);
+                        side((-b + disc) / a);
                     }
                 }
             }
             if (!s.open && std::abs(d.z) > kPovEpsilon) {
-                for (const auto& [plane_z, part] :
-                     {std::pair{1.0, kCapHit}, std::pair{0.0, kBaseHit}}) {
+                const double base_sq = cylinder ? 1.0 : dist * dist;
+                for (const auto& [plane_z, part, limit] :
+                     {std::tuple{1.0, kCapHit, 1.0}, std::tuple{dist, kBaseHit, base_sq}}) {
                     const double t = (plane_z - p.z) / d.z;
                     const double u = p.x + t * d.x;
                     const double v = p.y + t * d.y;
-                    if (u * u + v * v <= 1.0 && t < kPovMaxDistance) {
-                        consider(t / len, part, t_min, t_max, hit, found);
-                    }
+                    if (u * u + v * v <= limit && t < kPovMaxDistance) emit(t / len, part);
                 }
             }
-            return found;
+            return;
         }
         case ShapeKind::Disc: {
             const glm::dvec3 p = transform_point(s.world_to_local, origin);
             glm::dvec3 d = glm::dmat3(s.world_to_local) * direction;
             const double len = glm::length(d);
             d *= 1.0 / len;
-            if (std::abs(d.z) <= kPovEpsilon) return false;
+            if (std::abs(d.z) <= kPovEpsilon) return;
             const double t = -p.z / d.z;
             const double u = p.x + t * d.x;
             const double v = p.y + t * d.y;
             const double r2 = u * u + v * v;
             if (r2 >= s.inner_sq && r2 <= s.outer_sq) {
                 const double depth = t / len;
-                if (depth < kPovMaxDistance) consider(depth, 0, t_min, t_max, hit, found);
+                if (depth < kPovMaxDistance) emit(depth, 0);
             }
-            return found;
+            return;
         }
+        case ShapeKind::Torus:
+            torus_roots(s, origin, direction, t_min, emit);
+            return;
+        case ShapeKind::Quadric:
+            quadric_roots(s, origin, direction, emit);
+            return;
+        case ShapeKind::Complex:
+            return;  // through ComplexShape::intersect
+    }
+}
+
+}  // namespace
+
+bool intersect_shape(const PreparedShape& s, const glm::dvec3& origin, const glm::dvec3& direction,
+                     double t_min, double t_max, ShapeHit& hit) {
+    HitSink sink(t_min, t_max);
+    if (s.kind == ShapeKind::Complex) {
+        s.complex->intersect(origin, direction, sink);
+    } else {
+        shape_roots(s, origin, direction, t_min, [&](double t, int part) { sink.add(t, part); });
+    }
+    if (!sink.found()) return false;
+    hit = sink.closest();
+    return true;
+}
+
+void intersect_shape_all(const PreparedShape& s, const glm::dvec3& origin,
+                         const glm::dvec3& direction, double t_min, double t_max,
+                         std::vector<ShapeHit>& hits) {
+    HitSink sink(t_min, t_max, &hits);
+    if (s.kind == ShapeKind::Complex) {
+        s.complex->intersect(origin, direction, sink);
+    } else {
+        shape_roots(s, origin, direction, t_min, [&](double t, int part) { sink.add(t, part); });
+    }
+}
+
+bool inside_shape(const PreparedShape& s, const glm::dvec3& point) {
+    switch (s.kind) {
+        case ShapeKind::Sphere:
+        case ShapeKind::Ellipsoid: {
+            const glm::dvec3 p =
+                s.kind == ShapeKind::Sphere ? point : transform_point(s.world_to_local, point);
+            const glm::dvec3 oc = s.centre - p;
+            const double oc_sq = glm::dot(oc, oc);
+            return s.inverse ? oc_sq > s.radius_sq : oc_sq < s.radius_sq;
+        }
+        case ShapeKind::Plane: {
+            // POV-Ray inverts a plane by negating it: the same test on the other side.
+            const double side = glm::dot(point, s.normal) + s.pov_distance;
+            return (s.inverse ? -side : side) < kPovEpsilon;
+        }
+        case ShapeKind::Box:
+        case ShapeKind::TransformedBox: {
+            const glm::dvec3 p =
+                s.kind == ShapeKind::Box ? point : transform_point(s.world_to_local, point);
+            const bool in = !(p.x < s.lo.x || p.x > s.hi.x || p.y < s.lo.y || p.y > s.hi.y ||
+                              p.z < s.lo.z || p.z > s.hi.z);
+            return in != s.inverse;
+        }
+        case ShapeKind::Cylinder:
+        case ShapeKind::Cone: {
+            const glm::dvec3 p = transform_point(s.world_to_local, point);
+            const double offset = s.open ? kPovEpsilon : -kPovEpsilon;
+            const double w2 = p.x * p.x + p.y * p.y;
+            const bool out =
+                s.kind == ShapeKind::Cylinder
+                    ? (w2 > 1.0 + offset || p.z < 0.0 - offset || p.z > 1.0 + offset)
+                    : (w2 > p.z * p.z + offset || p.z < s.cone_dist - offset || p.z > 1.0 + offset);
+            return out == s.inverse;
+        }
+        case ShapeKind::Disc: {
+            const glm::dvec3 p = transform_point(s.world_to_local, point);
+            return (p.z < 0.0) != s.inverse;
+        }
+        case ShapeKind::Torus: {
+            const glm::dvec3 p = transform_point(s.world_to_local, point);
+            const double r = std::sqrt(p.x * p.x + p.z * p.z);
+            const double r2 = p.y * p.y + (r - s.major) * (r - s.major);
+            return (r2 <= s.minor * s.minor) != s.inverse;
+        }
+        case ShapeKind::Quadric: {
+            const glm::dvec3 p = transform_point(s.world_to_local, point);
+            const double QA = s.q[0], QE = s.q[1], QH = s.q[2], QB = s.q[3], QC = s.q[4],
+                         QF = s.q[5], QD = s.q[6], QG = s.q[7], QI = s.q[8], QJ = s.q[9];
+            const double v = p.x * (QA * p.x + QB * p.y + QD) + p.y * (QE * p.y + QF * p.z + QG) +
+                             p.z * (QH * p.z + QC * p.x + QI) + QJ;
+            return (v <= 0.0) != s.inverse;
+        }
+        case ShapeKind::Complex:
+            return s.complex->inside(point) != s.inverse;
     }
     return false;
 }
 
-glm::dvec3 shape_normal(const PreparedShape& s, const glm::dvec3& point, int part) {
+glm::dvec3 shape_normal(const PreparedShape& s, const glm::dvec3& point, const ShapeHit& hit) {
+    const int part = hit.part;
     glm::dvec3 n(0.0);
     switch (s.kind) {
         case ShapeKind::Sphere:
@@ -452,18 +732,85 @@ glm::dvec3 shape_normal(const PreparedShape& s, const glm::dvec3& point, int par
             if (s.kind == ShapeKind::TransformedBox) n = glm::normalize(s.normal_to_world * n);
             break;
         }
-        case ShapeKind::Cylinder: {
+        case ShapeKind::Cylinder:
+        case ShapeKind::Cone: {
             glm::dvec3 local(0.0, 0.0, part == kCapHit ? 1.0 : -1.0);
             if (part == kSideHit) {
                 local = transform_point(s.world_to_local, point);
-                local.z = 0.0;
+                local.z = s.kind == ShapeKind::Cylinder ? 0.0 : -local.z;
             }
             n = glm::normalize(s.normal_to_world * local);
             break;
         }
+        case ShapeKind::Torus: {
+            const glm::dvec3 p = transform_point(s.world_to_local, point);
+            const double dist = std::sqrt(p.x * p.x + p.z * p.z);
+            glm::dvec3 m(0.0);
+            if (dist > kPovEpsilon) m = glm::dvec3(s.major * p.x / dist, 0.0, s.major * p.z / dist);
+            n = glm::normalize(s.normal_to_world * (p - m));
+            break;
+        }
+        case ShapeKind::Quadric: {
+            const glm::dvec3 p = transform_point(s.world_to_local, point);
+            const double QA = s.q[0], QE = s.q[1], QH = s.q[2], QB = s.q[3], QC = s.q[4],
+                         QF = s.q[5], QD = s.q[6], QG = s.q[7], QI = s.q[8];
+            const glm::dvec3 g(2.0 * QA * p.x + QB * p.y + QC * p.z + QD,
+                               QB * p.x + 2.0 * QE * p.y + QF * p.z + QG,
+                               QC * p.x + QF * p.y + 2.0 * QH * p.z + QI);
+            const glm::dvec3 w = s.normal_to_world * g;
+            const double l = glm::length(w);
+            n = l == 0.0 ? glm::dvec3(1.0, 0.0, 0.0) : w / l;
+            break;
+        }
+        case ShapeKind::Complex:
+            n = s.complex->normal(point, hit);
+            break;
     }
     return s.inverse ? -n : n;
 }
+
+glm::dvec3 shape_normal(const PreparedShape& s, const glm::dvec3& point, int part) {
+    ShapeHit hit;
+    hit.part = part;
+    return shape_normal(s, point, hit);
+}
+
+namespace {
+
+Aabb infinite_box() {
+    Aabb box;
+    box.lo = glm::dvec3(-std::numeric_limits<double>::infinity());
+    box.hi = glm::dvec3(std::numeric_limits<double>::infinity());
+    return box;
+}
+
+// The box of a quadric in its own space, for the forms POV-Ray bounds (Quadric::Compute_BBox:
+// the ellipsoid without mixed terms); others are unbounded.
+bool quadric_local_box(const double* q, glm::dvec3& lo, glm::dvec3& hi) {
+    double A = q[0], E = q[1], H = q[2];
+    const double B = q[3] / 2.0, C = q[4] / 2.0, F = q[5] / 2.0;
+    double D = q[6] / 2.0, G = q[7] / 2.0, I = q[8] / 2.0, J = q[9];
+    if (std::abs(B) >= kPovEpsilon || std::abs(C) >= kPovEpsilon || std::abs(F) >= kPovEpsilon) {
+        return false;
+    }
+    // Complete the squares: the centre T, then A x^2 + E y^2 + H z^2 + J' = 0 around it.
+    const glm::dvec3 T(A != 0.0 ? -D / A : 0.0, E != 0.0 ? -G / E : 0.0, H != 0.0 ? -I / H : 0.0);
+    if ((A == 0.0 && D != 0.0) || (E == 0.0 && G != 0.0) || (H == 0.0 && I != 0.0)) return false;
+    J -= A * T.x * T.x + E * T.y * T.y + H * T.z * T.z;
+    if (A < 0.0) {
+        A = -A;
+        E = -E;
+        H = -H;
+        J = -J;
+    }
+    if (!(A > 0.0 && E > 0.0 && H > 0.0 && J < 0.0)) return false;
+    const glm::dvec3 half(std::sqrt(-J / A), std::sqrt(-J / E), std::sqrt(-J / H));
+    lo = T - half;
+    hi = T + half;
+    return true;
+}
+
+}  // namespace
 
 Aabb shape_bounds(const PreparedShape& s) {
     Aabb box;
@@ -492,9 +839,7 @@ Aabb shape_bounds(const PreparedShape& s) {
             break;
         }
         case ShapeKind::Plane:
-            box.lo = glm::dvec3(-std::numeric_limits<double>::infinity());
-            box.hi = glm::dvec3(std::numeric_limits<double>::infinity());
-            break;
+            return infinite_box();
         case ShapeKind::Box:
             box.lo = s.lo;
             box.hi = s.hi;
@@ -505,13 +850,63 @@ Aabb shape_bounds(const PreparedShape& s) {
         case ShapeKind::Cylinder:
             corners(glm::dvec3(-1.0, -1.0, 0.0), glm::dvec3(1.0, 1.0, 1.0));
             break;
+        case ShapeKind::Cone:
+            corners(glm::dvec3(-1.0, -1.0, s.cone_dist), glm::dvec3(1.0, 1.0, 1.0));
+            break;
         case ShapeKind::Disc: {
             const double r = std::sqrt(s.outer_sq);
             corners(glm::dvec3(-r, -r, 0.0), glm::dvec3(r, r, 0.0));
             break;
         }
+        case ShapeKind::Torus: {
+            const double r2 = std::abs(s.major) + std::abs(s.minor);
+            const double r1 = std::abs(s.minor);
+            corners(glm::dvec3(-r2, -r1, -r2), glm::dvec3(r2, r1, r2));
+            break;
+        }
+        case ShapeKind::Quadric: {
+            glm::dvec3 lo, hi;
+            if (!quadric_local_box(s.q, lo, hi)) return infinite_box();
+            corners(lo, hi);
+            break;
+        }
+        case ShapeKind::Complex:
+            return s.complex->bounds();
     }
     return box;
+}
+
+Aabb shape_inside_bounds(const PreparedShape& s) {
+    if (s.inverse) return infinite_box();
+    switch (s.kind) {
+        case ShapeKind::Plane: {
+            // POV-Ray's Compute_Plane_Min_Max: an axis-aligned plane bounds one side.
+            Aabb box = infinite_box();
+            for (int axis = 0; axis < 3; ++axis) {
+                const double n = s.normal[axis];
+                bool aligned = true;
+                for (int other = 0; other < 3; ++other) {
+                    if (other != axis && s.normal[other] != 0.0) aligned = false;
+                }
+                if (!aligned || n == 0.0) continue;
+                // Inside: n * p[axis] + Distance < 0.
+                const double at = -s.pov_distance / n;
+                if (n > 0.0) {
+                    box.hi[axis] = at;
+                } else {
+                    box.lo[axis] = at;
+                }
+            }
+            return box;
+        }
+        case ShapeKind::Disc:
+            return infinite_box();  // its inside is a half-space
+        case ShapeKind::Cylinder:
+        case ShapeKind::Cone:
+            return shape_bounds(s);  // open or not, the inside is within the shell
+        default:
+            return shape_bounds(s);
+    }
 }
 
 }  // namespace mirage

@@ -10,7 +10,9 @@
 #include "image/image_io.h"
 #include "load/mirage_scene.h"
 #include "scene/camera.h"
+#include "scene/ground.h"
 #include "trace/curved_propagator.h"
+#include "trace/object_query.h"
 #include "trace/scene_accel.h"
 #include "util/format.h"
 #include "util/output_set.h"
@@ -67,11 +69,14 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
 
     SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
     lo.strict = true;  // the tracer renders every object: none may be left out silently
+    lo.object_queries = tracer_object_queries();
     lo.tolerance_px = opt.tolerance_px;
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
-    const Scene& scene = loaded->scene;
     const AtmosphereSettings& settings = loaded->settings;
+    // Heights above the atmosphere's ground (scene/ground.h); straight rays need no ground.
+    if (opt.atmosphere && settings.declared) lower_scene(loaded->scene, settings.ground_height);
+    const Scene& scene = loaded->scene;
     // The image may replace no file the scene was read from; refused before the render.
     OutputSet outputs(scene.files);
     if (!opt.output.empty()) {
@@ -86,6 +91,14 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
     const Profile profile = profile_in_scene_units(settings);
     const bool bends = bends_rays(settings);
+    if (opt.atmosphere && bends && !camera_has_one_viewpoint(scene.camera)) {
+        // Paths are followed to a tolerance of an angle of one pixel seen from the eye.
+        return make_error(
+            (scene.camera.loc.file.empty() ? scene.file : to_string(scene.camera.loc)) + ": the " +
+            camera_type_name(scene.camera.type) +
+            " camera's rays start at different points: the curved paths are followed to an "
+            "angle of one pixel from one eye point; trace it with --no-atmosphere");
+    }
     if (!opt.atmosphere) {
         report.atmosphere = "off (--no-atmosphere)";
     } else if (!settings.declared) {

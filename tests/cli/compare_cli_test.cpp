@@ -67,16 +67,16 @@ TEST(CompareCli, BadValuesAreRefusedWithTheirName) {
 TEST(CompareCli, ABadSceneIsReportedWithItsPlace) {
     if (!testing::povray_available()) GTEST_SKIP() << "povray is not on PATH";
     const auto dir = test_dir("compare_cli", "bad_scene");
-    const auto scene = dir / "torus.pov";
+    const auto scene = dir / "ovus.pov";
     std::ofstream(scene) << "#version 3.7;\n#declare Mirage_Preset = \"paper\";\n"
                             "camera { location <0, 1, -3> look_at 0 }\n"
-                            "  torus { 1, 0.2 pigment { rgb 1 } }\n";
+                            "  ovus { 1, 0.6 pigment { rgb 1 } }\n";
     auto r = run_tool("compare " + quoted(scene) + " -o " + quoted(dir / "out") + " -q");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err, "mirage compare: " + scene.string() +
-                         ":4:3: unsupported object 'torus'\n"
-                         "  torus { 1, 0.2 pigment { rgb 1 } }\n"
+                         ":4:3: unsupported object 'ovus'\n"
+                         "  ovus { 1, 0.6 pigment { rgb 1 } }\n"
                          "  ^\n");
     EXPECT_FALSE(fs::exists(dir / "out" / "reference.png"));
 }

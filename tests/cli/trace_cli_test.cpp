@@ -55,16 +55,16 @@ TEST(TraceCli, TracesAScene) {
 
 TEST(TraceCli, AnObjectOutsideTheSubsetIsRefusedWithItsPlace) {
     const auto dir = test_dir("trace_cli", "strict");
-    const auto scene = dir / "torus.pov";
+    const auto scene = dir / "ovus.pov";
     write_text(scene,
                "#version 3.7;\ncamera { location <0, 1, -3> look_at 0 }\n"
-               "  torus { 1, 0.2 pigment { rgb 1 } }\n");
+               "  ovus { 1, 0.6 pigment { rgb 1 } }\n");
     auto r = run_tool("trace " + quoted(scene) + " -o " + quoted(dir / "out.png"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err, "mirage trace: " + scene.string() +
-                         ":3:3: unsupported object 'torus'\n"
-                         "  torus { 1, 0.2 pigment { rgb 1 } }\n"
+                         ":3:3: unsupported object 'ovus'\n"
+                         "  ovus { 1, 0.6 pigment { rgb 1 } }\n"
                          "  ^\n");
     EXPECT_FALSE(fs::exists(dir / "out.png"));
 }

@@ -193,7 +193,7 @@ TEST(Compile, ErrorsNameTheDeclaration) {
     o.scene = dir + "/under.pov";
     r = compile_scene(o);
     ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.message().find("the camera is at y = -1: it must be above the ground"),
+    EXPECT_NE(r.message().find("the camera at y = -1 is not above the ground of the atmosphere"),
               std::string::npos)
         << r.message();
 

@@ -120,6 +120,18 @@ TEST(Directives, MacroLocalShadowsGlobal) {
     EXPECT_EQ(float_symbol(s, "Seen"), 50.0);
 }
 
+TEST(Directives, ALocalFromAMacroWhoseBodyEndsInASemicolonBelongsToTheCaller) {
+    // F's ';' ends G's #local while F's table is still open: V is G's all the same, as in
+    // POV-Ray (tracevines.pov's FindTmp).
+    Scene s = parse_ok(R"(
+        #macro F(P) #local Q = P * 2; Q; #end
+        #macro G(P) #local V = F(P) #declare Seen = V + 1; #end
+        G(3)
+    )");
+    EXPECT_EQ(float_symbol(s, "Seen"), 7.0);
+    EXPECT_EQ(s.symbols.count("V"), 0u);  // G's local, gone with G
+}
+
 TEST(Directives, MacrosProduceObjects) {
     Scene s = parse_ok(R"(
         #macro Ball(R) sphere { 0, R } #end

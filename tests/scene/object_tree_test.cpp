@@ -59,6 +59,48 @@ TEST(ObjectTree, FlattenInheritsFromTheNearestTexturedUnion) {
     EXPECT_EQ(primitives[0].texture.pigment.colour.rgb.x, 0.75);  // the default texture
 }
 
+TEST(ObjectTree, CsgChildrenShareItsInteriorAndInteriorTexture) {
+    // difference { sphere sphere { interior { ior 1.1 } } interior { ior 1.5 }
+    //              interior_texture { ... } } clipped_by { sphere }
+    auto own = std::make_shared<Interior>();
+    own->ior = 1.1;
+    auto glass = std::make_shared<Interior>();
+    glass->ior = 1.5;
+    ObjectNode second = sphere();
+    second.interior = own;
+    ObjectNode csg;
+    csg.kind = ObjectNode::Kind::Csg;
+    csg.csg = CsgKind::Intersection;
+    csg.children = {sphere(), second};
+    csg.interior = glass;
+    csg.interior_texture = solid(0.5);
+    csg.clip = {sphere()};
+
+    Scene scene;
+    flatten_object(csg, solid(0.0), scene);
+    ASSERT_EQ(scene.compounds.size(), 1u);
+    ASSERT_EQ(scene.primitives.size(), 3u);
+    EXPECT_EQ(scene.primitives[0].interior, glass);  // shared: one medium
+    EXPECT_EQ(scene.primitives[1].interior, own);
+    for (int i = 0; i < 2; ++i) {
+        ASSERT_TRUE(scene.primitives[i].interior_texture);
+        EXPECT_EQ(scene.primitives[i].interior_texture->pigment.colour.rgb.x, 0.5);
+        EXPECT_EQ(scene.primitives[i].compound, 0);
+    }
+    // The clipping object is never seen: an interior of its own, no interior_texture.
+    ASSERT_TRUE(scene.primitives[2].interior);
+    EXPECT_NE(scene.primitives[2].interior, glass);
+    EXPECT_FALSE(scene.primitives[2].interior_texture);
+
+    // A CSG without an interior still gives its children one they share.
+    csg.interior = nullptr;
+    Scene plain;
+    flatten_object(csg, solid(0.0), plain);
+    ASSERT_TRUE(plain.primitives[0].interior);
+    EXPECT_EQ(plain.primitives[0].interior->ior, 0.0);
+    EXPECT_EQ(plain.primitives[1].interior, own);
+}
+
 TEST(ObjectTree, OpacityAndDefaultGradientMap) {
     Texture t = solid(1);
     EXPECT_TRUE(texture_is_opaque(t));

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "scene/parser.h"
+#include "trace/object_query.h"
 
 namespace mirage::testing {
 
@@ -14,16 +15,22 @@ inline std::string data_dir() { return std::string(MIRAGE_SOURCE_DIR) + "/tests/
 
 inline const char* kPovRayIncludes = "/usr/share/povray-3.7/include";
 
+/// The options with the tracer answering trace() and the like, as the commands give them.
+inline ParseOptions with_object_queries(ParseOptions options) {
+    if (!options.object_queries.trace) options.object_queries = tracer_object_queries();
+    return options;
+}
+
 /// Parses `text` as "scene.pov"; fails the test (and returns an empty scene) on an error.
 inline Scene parse_ok(const std::string& text, ParseOptions options = {}) {
-    auto r = parse_scene_text(text, "scene.pov", options);
+    auto r = parse_scene_text(text, "scene.pov", with_object_queries(std::move(options)));
     EXPECT_TRUE(r.ok()) << (r.ok() ? std::string() : r.message());
     return r.ok() ? std::move(r).value() : Scene{};
 }
 
 /// The error message for `text` parsed as "scene.pov" ("" when it parses).
 inline std::string parse_error(const std::string& text, ParseOptions options = {}) {
-    auto r = parse_scene_text(text, "scene.pov", options);
+    auto r = parse_scene_text(text, "scene.pov", with_object_queries(std::move(options)));
     EXPECT_FALSE(r.ok()) << "parsed without error";
     return r.ok() ? std::string() : r.message();
 }

@@ -238,6 +238,28 @@ TEST(PovMaterialParity, InteriorTextures) {
               "0> } } }\n"));
 }
 
+TEST(PovMaterialParity, GlassCsg) {
+    // Interiors and interior_textures of CSG objects: a glass lens (an intersection given its
+    // interior as a whole), a glass difference whose child has an interior of its own, a
+    // merge of glass spheres (one medium, no inner surfaces), and an open cylinder clipped
+    // by a box showing its interior_texture, given by the CSG.
+    EXPECT_PARITY(
+        "glass_csg",
+        stage("intersection { sphere { <-1.8, 0.5, -0.6>, 1 } sphere { <-1.8, 0.5, 0.6>, 1 } "
+              "pigment { rgbf <0.95, 1, 0.95, 0.95> } finish { phong 1 } interior { ior 1.5 } "
+              "}\n"
+              "difference { box { <-0.7, -0.4, -0.5>, <0.7, 1.2, 0.5> } "
+              "sphere { <0, 1.2, -0.5>, 0.6 interior { ior 1.1 } } "
+              "pigment { rgbf <1, 0.9, 0.9, 0.9> } interior { ior 1.45 fade_distance 1 "
+              "fade_power 2 fade_color rgb <0.8, 0.3, 0.3> } }\n"
+              "merge { sphere { <1.6, 0.4, 0>, 0.6 } sphere { <2.1, 0.7, 0.2>, 0.5 } "
+              "pigment { rgbf 1 } interior { ior 1.3 } }\n"
+              "intersection { cylinder { <0, 1.6, 0.8>, <0, 2.6, 0.8>, 0.5 open } "
+              "box { <-0.6, 1.5, 0.2>, <0.45, 2.7, 1.4> } pigment { rgb <0.9, 0.8, 0.2> } "
+              "interior_texture { pigment { rgb <0.2, 0.3, 1> } } rotate -20*x translate "
+              "<0, 0, 0.6> }\n"));
+}
+
 TEST(PovMaterialParity, OldGlassAndLegacyGamma) {
     // glass_old.inc's finish ior and a #version 3.6 scene without assumed_gamma, which POV-Ray
     // writes with no gamma handling at all.

@@ -119,9 +119,22 @@ inline std::string scene_to_pov(const Scene& s) {
                 } else if constexpr (std::is_same_v<T, Cylinder>) {
                     out << "cylinder { " << vec(shape.base) << ", " << vec(shape.cap) << ", "
                         << num(shape.radius) << (shape.open ? " open" : "");
-                } else {
+                } else if constexpr (std::is_same_v<T, Disc>) {
                     out << "disc { " << vec(shape.center) << ", " << vec(shape.normal) << ", "
                         << num(shape.radius) << ", " << num(shape.hole_radius);
+                } else if constexpr (std::is_same_v<T, Cone>) {
+                    out << "cone { " << vec(shape.base) << ", " << num(shape.base_radius) << ", "
+                        << vec(shape.cap) << ", " << num(shape.cap_radius)
+                        << (shape.open ? " open" : "");
+                } else if constexpr (std::is_same_v<T, Torus>) {
+                    out << "torus { " << num(shape.major) << ", " << num(shape.minor)
+                        << (shape.sturm ? " sturm" : "");
+                } else if constexpr (std::is_same_v<T, Quadric>) {
+                    out << "quadric { " << vec(shape.square) << ", " << vec(shape.mixed) << ", "
+                        << vec(shape.linear) << ", " << num(shape.constant);
+                } else {
+                    ADD_FAILURE() << "pov_writer: no writer for " << shape_keyword(shape);
+                    out << "sphere { 0, 1";
                 }
             },
             p.shape);

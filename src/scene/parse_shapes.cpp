@@ -1,0 +1,691 @@
+// The arguments of each shape, after POV-Ray 3.7's parse.cpp (Parse_Sphere, Parse_Cone...):
+// what comes between a shape's '{' and its object modifiers.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <optional>
+
+#include "scene/scene_parser.h"
+#include "scene/transform.h"
+#include "scene/truetype.h"
+
+namespace mirage::scene_detail {
+namespace {
+
+constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
+
+}  // namespace
+
+// The shapes parse_shape_arguments (or parse_mesh) reads.
+const char* const kShapeKeywords[] = {
+    "sphere",         "plane", "box",     "cylinder", "disc",
+    "cone",           "torus", "quadric", "triangle", "smooth_triangle",
+    "polygon",        "mesh",  "mesh2",   "poly",     "cubic",
+    "quartic",        "text",  "prism",   "lathe",    "sor",
+    "superellipsoid",
+};
+
+bool SceneParser::is_shape_keyword(const std::string& word) {
+    for (const char* k : kShapeKeywords) {
+        if (word == k) return true;
+    }
+    return false;
+}
+
+Shape SceneParser::parse_shape_arguments(const Token& kw) {
+    const std::string& w = kw.text();
+    if (w == "sphere") {
+        Sphere s;
+        s.center = parse_vector();
+        accept_comma();
+        s.radius = parse_float();
+        return s;
+    }
+    if (w == "plane") {
+        Plane p;
+        Token at = peek(0);
+        glm::dvec3 n = parse_vector();
+        double length = glm::length(n);
+        if (length < kEpsilon) fail(at, "degenerate plane normal");
+        p.normal = n / length;
+        accept_comma();
+        p.distance = parse_float();
+        return p;
+    }
+    if (w == "box") {
+        glm::dvec3 a = parse_vector();
+        accept_comma();
+        glm::dvec3 b = parse_vector();
+        // POV-Ray sorts the corners.
+        Box box;
+        box.corner1 = glm::min(a, b);
+        box.corner2 = glm::max(a, b);
+        return box;
+    }
+    if (w == "cylinder") {
+        Cylinder c;
+        Token at = peek(0);
+        c.base = parse_vector();
+        accept_comma();
+        c.cap = parse_vector();
+        accept_comma();
+        c.radius = parse_float();
+        if (glm::length(c.cap - c.base) < kEpsilon) {
+            fail(at, "degenerate cylinder: the base and cap points are the same");
+        }
+        if (accept_word("open")) c.open = true;
+        return c;
+    }
+    if (w == "disc") {
+        Disc d;
+        d.center = parse_vector();
+        accept_comma();
+        Token at = peek(0);
+        glm::dvec3 n = parse_vector();
+        if (glm::length(n) < kEpsilon) fail(at, "degenerate disc normal");
+        d.normal = glm::normalize(n);
+        accept_comma();
+        d.radius = parse_float();
+        accept_comma();
+        if (starts_float(peek(0))) d.hole_radius = parse_float();
+        return d;
+    }
+    if (w == "cone") {
+        Cone c;
+        Token at = peek(0);
+        c.base = parse_vector();
+        accept_comma();
+        c.base_radius = parse_float();
+        accept_comma();
+        c.cap = parse_vector();
+        accept_comma();
+        c.cap_radius = parse_float();
+        if (glm::length(c.cap - c.base) < kEpsilon) {
+            fail(at, "degenerate cone: the base and cap points are the same");
+        }
+        if (accept_word("open")) c.open = true;
+        return c;
+    }
+    if (w == "torus") {
+        Torus t;
+        t.major = parse_float();
+        accept_comma();
+        t.minor = parse_float();
+        return t;
+    }
+    if (w == "quadric") {
+        Quadric q;
+        q.square = parse_vector();
+        accept_comma();
+        q.mixed = parse_vector();
+        accept_comma();
+        q.linear = parse_vector();
+        accept_comma();
+        q.constant = parse_float();
+        return q;
+    }
+    if (w == "triangle" || w == "smooth_triangle") {
+        // A single triangle keeps double precision (POV-Ray's Triangle object).
+        const bool smooth = w == "smooth_triangle";
+        auto data = std::make_shared<MeshData>();
+        data->single_precision = false;
+        MeshData::Face f;
+        for (int i = 0; i < 3; ++i) {
+            if (i) accept_comma();
+            data->vertices.push_back(parse_vector());
+            if (smooth) {
+                accept_comma();
+                glm::dvec3 n = parse_vector();
+                if (std::abs(n.x) < kEpsilon && std::abs(n.y) < kEpsilon &&
+                    std::abs(n.z) < kEpsilon) {
+                    n = glm::dvec3(1.0, 0.0, 0.0);  // as POV-Ray
+                }
+                data->normals.push_back(glm::normalize(n));
+                f.n[i] = i;
+            }
+            f.v[i] = i;
+        }
+        data->faces.push_back(f);
+        return Mesh{data};
+    }
+    if (w == "polygon") return parse_polygon(kw);
+    if (w == "text") return parse_text(kw);
+    if (w == "superellipsoid") {
+        Superellipsoid s;
+        Token at = peek(0);
+        const glm::dvec3 v = parse_vector();
+        s.e = v.x;
+        s.n = v.y;
+        if (!(s.e > 0.0 && s.n > 0.0)) fail(at, "superellipsoid exponents must be > 0");
+        return s;
+    }
+    if (w == "lathe") {
+        Lathe lathe;
+        if (accept_word("linear_spline")) {
+            lathe.spline = SplineKind::Linear;
+        } else if (accept_word("quadratic_spline")) {
+            lathe.spline = SplineKind::Quadratic;
+        } else if (accept_word("cubic_spline")) {
+            lathe.spline = SplineKind::Cubic;
+        } else if (accept_word("bezier_spline")) {
+            lathe.spline = SplineKind::Bezier;
+        }
+        Token at = peek(0);
+        const double n = parse_float();
+        const int minimum = lathe.spline == SplineKind::Linear      ? 2
+                            : lathe.spline == SplineKind::Quadratic ? 3
+                                                                    : 4;
+        if (n < minimum || n > 1e7 ||
+            (lathe.spline == SplineKind::Bezier && (static_cast<int>(n) & 3) != 0)) {
+            fail(at, "a lathe with these splines needs at least " + std::to_string(minimum) +
+                         " points (four per Bezier segment)");
+        }
+        for (int i = 0; i < static_cast<int>(n); ++i) {
+            accept_comma();
+            Token pt = peek(0);
+            const glm::dvec3 v = parse_vector();
+            if (i > 0 && i < static_cast<int>(n) - 1 && v.x < 0.0) {
+                fail(pt, "incorrect point in lathe: a negative radius");
+            }
+            lathe.points.emplace_back(v.x, v.y);
+        }
+        return lathe;
+    }
+    if (w == "sor") {
+        Sor sor;
+        Token at = peek(0);
+        const double n = parse_float();
+        if (n < 4.0 || n > 1e7) fail(at, "a surface of revolution needs at least four points");
+        for (int i = 0; i < static_cast<int>(n); ++i) {
+            accept_comma();
+            Token pt = peek(0);
+            const glm::dvec3 v = parse_vector();
+            if (v.x < 0.0 || (i > 1 && i < static_cast<int>(n) - 1 && v.y <= sor.points.back().y)) {
+                fail(pt,
+                     "incorrect point in surface of revolution (radii >= 0, heights "
+                     "increasing)");
+            }
+            sor.points.emplace_back(v.x, v.y);
+        }
+        if (accept_word("open")) sor.open = true;
+        return sor;
+    }
+    if (w == "prism") {
+        Prism prism;
+        while (true) {
+            if (accept_word("linear_spline")) {
+                prism.spline = SplineKind::Linear;
+            } else if (accept_word("quadratic_spline")) {
+                prism.spline = SplineKind::Quadratic;
+            } else if (accept_word("cubic_spline")) {
+                prism.spline = SplineKind::Cubic;
+            } else if (accept_word("bezier_spline")) {
+                prism.spline = SplineKind::Bezier;
+            } else if (accept_word("linear_sweep")) {
+                prism.conic = false;
+            } else if (accept_word("conic_sweep")) {
+                prism.conic = true;
+            } else {
+                break;
+            }
+        }
+        prism.height1 = parse_float();
+        accept_comma();
+        prism.height2 = parse_float();
+        accept_comma();
+        if (prism.height1 > prism.height2) std::swap(prism.height1, prism.height2);
+        Token at = peek(0);
+        const double n = parse_float();
+        if (n < 3.0 || n > 1e7) fail(at, "a prism needs at least three points");
+        for (int i = 0; i < static_cast<int>(n); ++i) {
+            accept_comma();
+            const glm::dvec3 v = parse_vector();
+            prism.points.emplace_back(v.x, v.y);
+        }
+        if (accept_word("open")) prism.open = true;
+        return prism;
+    }
+    if (w == "poly" || w == "cubic" || w == "quartic") {
+        Polynomial poly;
+        Token at = peek(0);
+        if (w == "poly") {
+            const double order = parse_float();
+            if (order < 2.0 || order > 35.0 || std::floor(order) != order) {
+                fail(at, "poly order " + format_str(order, 0, -1) + ": must be 2 to 35");
+            }
+            poly.order = static_cast<int>(order);
+            accept_comma();
+        } else {
+            poly.order = w == "cubic" ? 3 : 4;
+        }
+        const int count = (poly.order + 1) * (poly.order + 2) * (poly.order + 3) / 6;
+        Token open = expect_punct("<", "before the coefficients of '" + w + "'");
+        while (!peek_punct(">")) {
+            if (!poly.coefficients.empty()) accept_comma();
+            if (peek_punct(">")) break;
+            poly.coefficients.push_back(parse_float());
+        }
+        next();
+        if (static_cast<int>(poly.coefficients.size()) != count) {
+            fail(open, "'" + w + "' of order " + std::to_string(poly.order) + " needs " +
+                           std::to_string(count) + " coefficients, got " +
+                           std::to_string(poly.coefficients.size()));
+        }
+        return poly;
+    }
+    fail(kw, "expected an object, got " + describe(kw));
+}
+
+std::string SceneParser::find_scene_file(const std::string& name,
+                                         const std::string& extension) const {
+    namespace fs = std::filesystem;
+    std::vector<std::string> dirs;
+    if (!frames_.empty())
+        dirs.push_back(fs::path(frames_.back().file->path).parent_path().string());
+    for (const std::string& lib : options_.library_paths) dirs.push_back(lib);
+    for (const std::string& candidate : {name, name + extension}) {
+        std::error_code ec;
+        if (fs::path(candidate).is_absolute()) {
+            if (fs::is_regular_file(candidate, ec)) return candidate;
+            continue;
+        }
+        for (const std::string& d : dirs) {
+            const fs::path p = d.empty() ? fs::path(candidate) : fs::path(d) / candidate;
+            if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
+        }
+    }
+    return "";
+}
+
+Shape SceneParser::parse_text(const Token& kw) {
+    // text { ttf "font" "string" thickness, offset }
+    if (!peek_word("ttf")) {
+        Token t = peek(0);
+        if (t.is_word("internal")) {
+            next();
+            unsupported(t, "text with an internal font");
+            parse_float();
+            accept_comma();
+            parse_string(false);
+            accept_comma();
+            parse_float();
+            accept_comma();
+            parse_vector();
+            return Text{};
+        }
+        fail(t, "expected 'ttf' after 'text {', got " + describe(t));
+    }
+    next();
+    Token at = peek(0);
+    const std::string font_name = parse_string(true);
+    accept_comma();
+    const std::string string = parse_string(false);
+    accept_comma();
+    const double thickness = parse_float();
+    accept_comma();
+    const glm::dvec3 offset = parse_vector();
+    const std::string path = find_scene_file(font_name, ".ttf");
+    if (path.empty()) fail(at, "cannot find the font file '" + font_name + "'");
+    auto& font = fonts_[path];
+    if (!font) {
+        auto loaded = load_truetype_font(path);
+        if (!loaded) fail(at, loaded.message());
+        font = *loaded;
+    }
+    auto text = layout_text(*font, string, thickness, offset);
+    if (!text) fail(at, text.message());
+    (void)kw;
+    return *text;
+}
+
+Shape SceneParser::parse_polygon(const Token& kw) {
+    Token at = peek(0);
+    const int number = static_cast<int>(parse_float());
+    if (number < 3) fail(at, "a polygon needs at least three points");
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i < number; ++i) {
+        accept_comma();
+        points.push_back(parse_vector());
+    }
+    // POV-Ray's Parse_Polygon: a point repeating the current sub-polygon's first closes it;
+    // an open polygon is closed.
+    bool closed = false;
+    glm::dvec3 first = points[0];
+    for (int i = 1; i < number; ++i) {
+        closed = false;
+        if (std::abs(first.x - points[i].x) < kEpsilon &&
+            std::abs(first.y - points[i].y) < kEpsilon &&
+            std::abs(first.z - points[i].z) < kEpsilon) {
+            points[i] = first;
+            ++i;
+            if (i < number) first = points[i];
+            closed = true;
+        }
+    }
+    if (!closed) {
+        add_message(kw, "warning", "polygon not closed: closing it");
+        points.push_back(first);
+    }
+    // POV-Ray's Compute_Polygon: a frame u, v, w with w normal to the plane.
+    Polygon poly;
+    const int n = static_cast<int>(points.size());
+    const glm::dvec3 o = points[0];
+    glm::dvec3 u(0.0), v(0.0), wv(0.0);
+    int i = 1;
+    for (; i < n; ++i) {
+        u = points[i] - o;
+        if (glm::dot(u, u) > kEpsilon) break;
+    }
+    if (i == n) poly.degenerate = true;
+    for (++i; i < n; ++i) {
+        v = points[i] - o;
+        wv = glm::cross(u, v);
+        if (glm::dot(v, v) > kEpsilon && glm::dot(wv, wv) > kEpsilon) break;
+    }
+    if (i >= n) poly.degenerate = true;
+    if (!poly.degenerate) {
+        u = glm::normalize(glm::cross(v, wv));
+        v = glm::normalize(glm::cross(wv, u));
+        wv = glm::normalize(wv);
+        glm::dmat4 to_shape(1.0);
+        to_shape[0] = glm::dvec4(u, 0.0);
+        to_shape[1] = glm::dvec4(v, 0.0);
+        to_shape[2] = glm::dvec4(wv, 0.0);
+        to_shape[3] = glm::dvec4(o, 1.0);
+        poly.plane_to_shape = to_shape;
+        for (const glm::dvec3& p : points) {
+            const glm::dvec3 q = p - o;
+            if (std::abs(glm::dot(q, wv)) > 1e-10) poly.degenerate = true;  // not coplanar
+            poly.points.emplace_back(glm::dot(q, u), glm::dot(q, v));
+        }
+    }
+    if (poly.degenerate) add_message(kw, "warning", "degenerate polygon: ignored, as POV-Ray does");
+    return poly;
+}
+
+// A texture of a mesh's triangle: texture { ... } or texture_list { T1 T2 T3 } (POV-Ray
+// interpolates the three; mirage takes the first).
+std::optional<Texture> SceneParser::parse_mesh_triangle_texture() {
+    if (peek_word("texture")) {
+        Token item = next();
+        expect_open_brace(item);
+        Texture t = parse_texture_body(item);
+        expect_close_brace(item);
+        return t;
+    }
+    if (peek_word("texture_list")) {
+        Token item = next();
+        unsupported(item, "texture_list on a mesh triangle (three interpolated textures)");
+        expect_open_brace(item);
+        std::optional<Texture> first;
+        while (peek_word("texture")) {
+            Token t = next();
+            expect_open_brace(t);
+            Texture tex = parse_texture_body(t);
+            expect_close_brace(t);
+            if (!first) first = tex;
+        }
+        expect_close_brace(item);
+        return first;
+    }
+    return std::nullopt;
+}
+
+namespace {
+
+bool degenerate_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    return glm::length(glm::cross(b - a, c - a)) == 0.0;
+}
+
+glm::dvec3 as_float(const glm::dvec3& v) {
+    return glm::dvec3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+}
+
+glm::dvec3 nonzero_normal(glm::dvec3 n) {
+    if (std::abs(n.x) < kEpsilon && std::abs(n.y) < kEpsilon && std::abs(n.z) < kEpsilon) {
+        n = glm::dvec3(1.0, 0.0, 0.0);  // POV-Ray: "Normal vector in mesh cannot be zero"
+    }
+    return glm::normalize(n);
+}
+
+}  // namespace
+
+ObjectNode SceneParser::parse_mesh(const Token& kw) {
+    std::vector<Texture> textures;  // per-triangle textures; faces refer to them (-1: none)
+    std::vector<int> face_texture;
+    auto data = std::make_shared<MeshData>();
+    glm::dvec3 inside_vector(0.0);
+    if (kw.is_word("mesh")) {
+        while (true) {
+            const Token t = peek(0);
+            if (t.is_word("triangle") || t.is_word("smooth_triangle")) {
+                Token item = next();
+                const bool smooth = item.is_word("smooth_triangle");
+                expect_open_brace(item);
+                glm::dvec3 p[3], n[3];
+                for (int i = 0; i < 3; ++i) {
+                    if (i) accept_comma();
+                    p[i] = parse_vector();
+                    if (smooth) {
+                        accept_comma();
+                        n[i] = nonzero_normal(parse_vector());
+                    }
+                }
+                if (peek_word("uv_vectors")) {
+                    next();
+                    for (int i = 0; i < 3; ++i) {
+                        if (i) accept_comma();
+                        parse_vector();  // uv coordinates: only uv_mapping uses them
+                    }
+                }
+                const std::optional<Texture> tex = parse_mesh_triangle_texture();
+                expect_close_brace(item);
+                if (degenerate_triangle(p[0], p[1], p[2])) continue;
+                MeshData::Face f;
+                for (int i = 0; i < 3; ++i) {
+                    f.v[i] = static_cast<int>(data->vertices.size());
+                    data->vertices.push_back(as_float(p[i]));
+                    if (smooth) {
+                        f.n[i] = static_cast<int>(data->normals.size());
+                        data->normals.push_back(as_float(n[i]));
+                    }
+                }
+                data->faces.push_back(f);
+                if (tex) {
+                    textures.push_back(*tex);
+                    face_texture.push_back(static_cast<int>(textures.size()) - 1);
+                } else {
+                    face_texture.push_back(-1);
+                }
+                continue;
+            }
+            if (t.is_word("inside_vector")) {
+                next();
+                inside_vector = parse_vector();
+                continue;
+            }
+            break;
+        }
+    } else {
+        // mesh2: vertex_vectors, normal_vectors, uv_vectors, texture_list, face_indices,
+        // uv_indices, normal_indices, inside_vector.
+        std::vector<glm::dvec3> normals;
+        std::vector<glm::ivec3> normal_indices;
+        bool have_normal_indices = false;
+        const auto count_of = [&](const Token& item) {
+            Token at = peek(0);
+            const double n = parse_float();
+            if (n < 0.0 || n > 1e8) {
+                fail(at, "'" + item.text() + "': bad count " + format_str(n, 0, -1));
+            }
+            accept_comma();
+            return static_cast<int>(n);
+        };
+        while (true) {
+            const Token t = peek(0);
+            if (t.is_word("vertex_vectors") || t.is_word("normal_vectors") ||
+                t.is_word("uv_vectors")) {
+                Token item = next();
+                expect_open_brace(item);
+                const int n = count_of(item);
+                for (int i = 0; i < n; ++i) {
+                    const glm::dvec3 v = parse_vector();
+                    accept_comma();
+                    if (item.is_word("vertex_vectors")) data->vertices.push_back(as_float(v));
+                    if (item.is_word("normal_vectors"))
+                        normals.push_back(as_float(nonzero_normal(v)));
+                }
+                expect_close_brace(item);
+                continue;
+            }
+            if (t.is_word("texture_list")) {
+                Token item = next();
+                expect_open_brace(item);
+                const int n = count_of(item);
+                for (int i = 0; i < n; ++i) {
+                    Token tk = peek(0);
+                    if (!tk.is_word("texture")) {
+                        fail(tk, "expected 'texture' in texture_list, got " + describe(tk));
+                    }
+                    next();
+                    expect_open_brace(tk);
+                    textures.push_back(parse_texture_body(tk));
+                    expect_close_brace(tk);
+                    accept_comma();
+                }
+                expect_close_brace(item);
+                continue;
+            }
+            if (t.is_word("face_indices")) {
+                Token item = next();
+                expect_open_brace(item);
+                const int n = count_of(item);
+                for (int i = 0; i < n; ++i) {
+                    Token at = peek(0);
+                    const glm::dvec3 v = parse_vector();
+                    accept_comma();
+                    MeshData::Face f;
+                    const int nv = static_cast<int>(data->vertices.size());
+                    for (int k = 0; k < 3; ++k) {
+                        f.v[k] = static_cast<int>(v[k]);
+                        if (f.v[k] < 0 || f.v[k] >= nv) {
+                            fail(at, "face index " + std::to_string(f.v[k]) +
+                                         " out of range 0 to " + std::to_string(nv - 1));
+                        }
+                    }
+                    int tex = -1;
+                    for (int k = 0; k < 3 && starts_float(peek(0)); ++k) {
+                        Token tat = peek(0);
+                        const int ti = static_cast<int>(parse_float());
+                        accept_comma();
+                        if (ti < 0 || ti >= static_cast<int>(textures.size())) {
+                            fail(tat, "texture index " + std::to_string(ti) + " out of range");
+                        }
+                        if (k == 0) tex = ti;
+                        if (k == 1) unsupported(tat, "three interpolated textures on a mesh2 face");
+                    }
+                    data->faces.push_back(f);
+                    face_texture.push_back(tex);
+                }
+                expect_close_brace(item);
+                continue;
+            }
+            if (t.is_word("normal_indices") || t.is_word("uv_indices")) {
+                Token item = next();
+                expect_open_brace(item);
+                const int n = count_of(item);
+                for (int i = 0; i < n; ++i) {
+                    const glm::dvec3 v = parse_vector();
+                    accept_comma();
+                    if (item.is_word("normal_indices")) normal_indices.emplace_back(v);
+                }
+                if (item.is_word("normal_indices")) have_normal_indices = true;
+                expect_close_brace(item);
+                continue;
+            }
+            if (t.is_word("inside_vector")) {
+                next();
+                inside_vector = parse_vector();
+                continue;
+            }
+            break;
+        }
+        // Normals without normal_indices pair with the vertices (POV-Ray's shortcut).
+        if (!have_normal_indices && !normals.empty() && normals.size() == data->vertices.size()) {
+            for (const auto& f : data->faces) normal_indices.emplace_back(f.v[0], f.v[1], f.v[2]);
+        }
+        data->normals = normals;
+        for (std::size_t i = 0; i < data->faces.size() && i < normal_indices.size(); ++i) {
+            for (int k = 0; k < 3; ++k) {
+                const int ni = normal_indices[i][k];
+                if (ni < 0 || ni >= static_cast<int>(normals.size())) {
+                    fail(kw, "mesh2: normal index " + std::to_string(ni) + " out of range");
+                }
+                data->faces[i].n[k] = ni;
+            }
+        }
+        // Degenerate faces are left out.
+        std::vector<MeshData::Face> kept;
+        std::vector<int> kept_texture;
+        for (std::size_t i = 0; i < data->faces.size(); ++i) {
+            const auto& f = data->faces[i];
+            if (degenerate_triangle(data->vertices[f.v[0]], data->vertices[f.v[1]],
+                                    data->vertices[f.v[2]])) {
+                continue;
+            }
+            kept.push_back(f);
+            kept_texture.push_back(face_texture[i]);
+        }
+        data->faces = std::move(kept);
+        face_texture = std::move(kept_texture);
+    }
+    if (data->faces.empty()) fail(kw, "no triangles in the " + kw.text());
+    data->inside_vector = inside_vector;
+
+    ObjectNode node;
+    node.kind = ObjectNode::Kind::Shape;
+    node.loc = kw.loc();
+    bool textured = false;
+    for (int t : face_texture) textured |= t >= 0;
+    if (!textured) {
+        node.shape = Mesh{data};
+        return node;
+    }
+    // One mesh per texture, in a union (the untextured triangles take the mesh's texture).
+    node.kind = ObjectNode::Kind::Union;
+    std::map<int, std::shared_ptr<MeshData>> groups;
+    for (std::size_t i = 0; i < data->faces.size(); ++i) {
+        auto& g = groups[face_texture[i]];
+        if (!g) {
+            g = std::make_shared<MeshData>();
+            g->vertices = data->vertices;
+            g->normals = data->normals;
+            g->inside_vector = data->inside_vector;
+        }
+        g->faces.push_back(data->faces[i]);
+    }
+    for (auto& [t, g] : groups) {
+        ObjectNode part;
+        part.kind = ObjectNode::Kind::Shape;
+        part.loc = kw.loc();
+        part.shape = Mesh{g};
+        if (t >= 0) part.texture = textures[static_cast<std::size_t>(t)];
+        node.children.push_back(std::move(part));
+    }
+    return node;
+}
+
+}  // namespace mirage::scene_detail
+
+namespace mirage {
+
+const char* shape_keyword(const Shape& shape) {
+    static const char* const names[] = {
+        "sphere",       "plane",          "box",  "cylinder", "disc",  "cone",  "torus", "quadric",
+        "poly",         "superellipsoid", "mesh", "polygon",  "prism", "lathe", "sor",   "blob",
+        "height_field", "isosurface",     "text"};
+    static_assert(sizeof(names) / sizeof(names[0]) == std::variant_size_v<Shape>);
+    return names[shape.index()];
+}
+
+}  // namespace mirage
