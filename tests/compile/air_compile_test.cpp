@@ -129,6 +129,19 @@ TEST(AirCompile, HotRoadPixelErrorFallsAsTheLayersMultiply) {
     EXPECT_TRUE(std::isfinite(u->max_seen_error_px));
 }
 
+// The shipped scene keeps the Earth's radius: its bands are refused, nothing written.
+TEST(AirCompile, RealAirOnTheCurvedEarthIsRefusedWithWhatToDo) {
+    CompileOptions o = hot_road("curved", false);
+    auto r = compile_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.message().find("bands for real air on the curved Earth are not built (Earth "
+                               "radius 6371 km)"),
+              std::string::npos)
+        << r.message();
+    EXPECT_NE(r.message().find("Mirage_Earth_Radius = 0"), std::string::npos) << r.message();
+    EXPECT_FALSE(fs::exists(o.out_dir + "/mirage_layers.inc"));
+}
+
 TEST(AirCompile, TheFitToTheCameraRaysIsRefusedForRealAir) {
     CompileOptions o = hot_road("adaptive");
     o.layers = LayerMode::Adaptive;
