@@ -727,6 +727,10 @@ void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw, d
     if (found.empty()) fail(name_at, "cannot find image file '" + name + "'");
     auto image = read_image_rgba(found);
     if (!image) fail(name_at, image.message());
+    // An input: no output may replace it.
+    if (std::find(scene_.files.begin(), scene_.files.end(), found) == scene_.files.end()) {
+        scene_.files.push_back(found);
+    }
     // POV-Ray 3.7 decodes an image from its gamma (the file's own, else sRGB; for a #version
     // 3.6 scene with assumed_gamma, that gamma) into the working gamma (assumed_gamma).  A
     // #version 3.6 scene without assumed_gamma uses the values as stored, and so do bump
