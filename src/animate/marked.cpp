@@ -74,9 +74,14 @@ Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int widt
     if (!settings) return settings.error();
     const Profile profile = profile_in_scene_units(*settings);
     const double unit = settings->unit_m;
-    const glm::dvec3 eye = scene.camera.location;
+    // Heights above the atmosphere's ground (Mirage_Ground_Height): the scene as parsed is not
+    // lowered here, so the eye and the spheres are.
+    const double ground = settings->declared ? settings->ground_height : 0.0;
+    glm::dvec3 eye = scene.camera.location;
+    eye.y -= ground;
     const double pixel_rad = pixel_angle_rad(scene.camera, width, height);
-    for (const auto& m : *marked) {
+    for (MarkedSphere m : *marked) {
+        m.centre.y -= ground;
         const std::string at = to_string(m.loc) + ": " + m.name + ": ";
         const std::vector<double> key = {eye.y,
                                          m.centre.y,

@@ -38,7 +38,8 @@ struct MarkedView {
 };
 
 /// The marked spheres of `scene` (parsed for this frame) as seen from its camera through its
-/// atmosphere, for an image of width x height.  No marked spheres: an empty list.  A scene
+/// atmosphere (heights above its ground, Mirage_Ground_Height), for an image of width x
+/// height.  No marked spheres: an empty list.  A scene
 /// without an inferior atmosphere, or a sphere reaching the ground, is an error naming it.
 /// `cache` (may be null) keeps the vanishing distances already found, by eye height, centre
 /// height, radius and profile, for the frames of one animation.

@@ -115,8 +115,8 @@ bool SceneParser::parse_ifdef_param() {
     }
     auto sym = lookup(name.text());
     bool defined = sym != nullptr;
-    if (sym && std::holds_alternative<ArrayValue>(sym->value.data) && peek_array_index()) {
-        defined = index_array(std::get<ArrayValue>(sym->value.data), name) != nullptr;
+    if (sym && sym->value.holds<ArrayValue>() && peek_array_index()) {
+        defined = index_array(sym->value.get<ArrayValue>(), name) != nullptr;
     }
     expect_punct(")", "after the identifier");
     return defined;
@@ -193,7 +193,7 @@ void SceneParser::handle_directive(const Token& hash) {
     // '#' before a macro call is allowed, as in POV-Ray.
     if (is_identifier(keyword)) {
         if (auto sym = lookup(w)) {
-            if (auto* m = std::get_if<std::shared_ptr<const MacroDef>>(&sym->value.data)) {
+            if (auto* m = sym->value.get_if<std::shared_ptr<const MacroDef>>()) {
                 Token call = keyword;
                 call.symbol = sym;
                 return invoke_macro(call, *m);
@@ -292,7 +292,7 @@ void SceneParser::directive_end(const Token& hash, const Token& keyword) {
         case Cond::For: {
             auto it = tables_.back().find(top.for_variable);
             Numeric* n = it == tables_.back().end() ? nullptr
-                                                    : std::get_if<Numeric>(&it->second->value.data);
+                                                    : it->second->value.get_if<Numeric>();
             if (!n || n->size != 1) {
                 fail(hash, "the #for loop variable '" + top.for_variable +
                                "' must stay defined and a float during the loop");

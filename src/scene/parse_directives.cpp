@@ -117,8 +117,8 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
     // the array anew, and a pointer into the old one would dangle.
     std::optional<std::size_t> element;
     const void* elements = nullptr;
-    if (sym && std::holds_alternative<ArrayValue>(sym->value.data) && peek_array_index()) {
-        ArrayValue& array = std::get<ArrayValue>(sym->value.data);
+    if (sym && sym->value.holds<ArrayValue>() && peek_array_index()) {
+        ArrayValue& array = sym->value.get<ArrayValue>();
         element = static_cast<std::size_t>(&index_array(array, name) - array.elements.data());
         elements = array.elements.data();
     }
@@ -128,7 +128,7 @@ void SceneParser::directive_declare(const Token& keyword, bool local) {
     const std::size_t scope = tables_.size();
     Value value = parse_declared_value(name);
     if (element) {
-        auto* array = std::get_if<ArrayValue>(&sym->value.data);
+        auto* array = sym->value.get_if<ArrayValue>();
         if (!array || array->elements.data() != elements || *element >= array->elements.size()) {
             fail(name, "the array '" + name.text() +
                            "' was declared anew while the value of its element was read");

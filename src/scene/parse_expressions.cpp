@@ -87,13 +87,13 @@ bool SceneParser::starts_string(const Token& t) const {
     if (is_identifier(t)) {
         auto sym = t.symbol ? t.symbol : lookup(t.text());
         if (!sym) return false;
-        if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+        if (auto* a = sym->value.get_if<ArrayValue>()) {
             for (const auto& e : a->elements) {
-                if (e) return std::holds_alternative<std::string>(e->data);
+                if (e) return e->holds<std::string>();
             }
             return false;
         }
-        return std::holds_alternative<std::string>(sym->value.data);
+        return sym->value.holds<std::string>();
     }
     return false;
 }
@@ -103,7 +103,7 @@ namespace {
 int identifier_numeric_size(const std::shared_ptr<Symbol>& sym) {
     if (!sym) return 0;
     const Value* v = &sym->value;
-    if (auto* a = std::get_if<ArrayValue>(&v->data)) {
+    if (auto* a = v->get_if<ArrayValue>()) {
         v = nullptr;
         for (const auto& e : a->elements) {
             if (e) {
@@ -113,7 +113,7 @@ int identifier_numeric_size(const std::shared_ptr<Symbol>& sym) {
         }
         if (!v) return 0;
     }
-    if (auto* n = std::get_if<Numeric>(&v->data)) return n->size;
+    if (auto* n = v->get_if<Numeric>()) return n->size;
     return 0;
 }
 }  // namespace
@@ -128,7 +128,7 @@ bool SceneParser::starts_float(const Token& t) const {
             if (is_keyword(t)) return is_float_function(t.text());
             auto sym = t.symbol ? t.symbol : lookup(t.text());
             if (sym &&
-                std::holds_alternative<std::shared_ptr<const FunctionCode>>(sym->value.data)) {
+                sym->value.holds<std::shared_ptr<const FunctionCode>>()) {
                 return true;  // a call of a user function
             }
             return identifier_numeric_size(sym) == 1;
@@ -392,7 +392,7 @@ Numeric SceneParser::parse_identifier_value(const Token& t) {
     std::shared_ptr<Symbol> sym = t.symbol ? t.symbol : lookup(t.text());
     if (!sym) fail(t, "undefined identifier '" + t.text() + "'");
     const Value* value = &sym->value;
-    if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+    if (auto* a = sym->value.get_if<ArrayValue>()) {
         if (!peek_array_index()) {
             fail(peek(0),
                  "expected '[' after the array '" + t.text() + "', got " + describe(peek(0)));
@@ -403,8 +403,8 @@ Numeric SceneParser::parse_identifier_value(const Token& t) {
         value = e.get();
     }
     value = &use_value(t, *sym, *value);  // an opaque value's use fails here, naming its reason
-    if (auto* n = std::get_if<Numeric>(&value->data)) return *n;
-    if (auto* f = std::get_if<std::shared_ptr<const FunctionCode>>(&value->data)) {
+    if (auto* n = value->get_if<Numeric>()) return *n;
+    if (auto* f = value->get_if<std::shared_ptr<const FunctionCode>>()) {
         return Numeric::scalar(call_function_value(t, **f));  // parse_functions.cpp
     }
     fail(t, "expected a numeric expression, got " + value_type_name(*value) + " identifier '" +
@@ -630,7 +630,7 @@ Numeric SceneParser::parse_function(const Token& name) {
         expect_punct("(", "after '" + f + "'");
         Token a = next();
         auto sym = is_identifier(a) ? (a.symbol ? a.symbol : lookup(a.text())) : nullptr;
-        auto* array = sym ? std::get_if<ArrayValue>(&sym->value.data) : nullptr;
+        auto* array = sym ? sym->value.get_if<ArrayValue>() : nullptr;
         if (!array) fail(a, "expected an array identifier, got " + describe(a));
         double r = static_cast<double>(array->sizes.size());
         if (f == "dimension_size") {
@@ -835,7 +835,7 @@ std::string SceneParser::parse_string_body(bool pathname) {
     }
     if (is_identifier(t)) {
         Value v = identifier_value(t);
-        if (auto* s = std::get_if<std::string>(&v.data)) return *s;
+        if (auto* s = v.get_if<std::string>()) return *s;
         fail(t, "expected a string, got " + value_type_name(v) + " identifier '" + t.text() + "'");
     }
     const std::string& f = t.text();

@@ -259,7 +259,7 @@ int SceneParser::parse_function_primary(FunctionCode& f) {
                     " (an internal function needs #include \"functions.inc\")");
     }
     const Value& value = use_value(t, *sym, sym->value);
-    if (auto* callee = std::get_if<std::shared_ptr<const FunctionCode>>(&value.data)) {
+    if (auto* callee = value.get_if<std::shared_ptr<const FunctionCode>>()) {
         FunctionCode::Node n;
         n.op = Op::Call;
         n.callee = *callee;
@@ -271,7 +271,7 @@ int SceneParser::parse_function_primary(FunctionCode& f) {
         }
         return add_node(f, std::move(n));
     }
-    if (auto* num = std::get_if<Numeric>(&value.data)) {
+    if (auto* num = value.get_if<Numeric>()) {
         Numeric v = *num;
         if (peek_punct(".")) {
             Token dot = next();

@@ -727,6 +727,10 @@ void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw, d
     if (found.empty()) fail(name_at, "cannot find image file '" + name + "'");
     auto image = read_image_rgba(found);
     if (!image) fail(name_at, image.message());
+    // An input: no output may replace it.
+    if (std::find(scene_.files.begin(), scene_.files.end(), found) == scene_.files.end()) {
+        scene_.files.push_back(found);
+    }
     // POV-Ray 3.7 decodes an image from its gamma (the file's own, else sRGB; for a #version
     // 3.6 scene with assumed_gamma, that gamma) into the working gamma (assumed_gamma).  A
     // #version 3.6 scene without assumed_gamma uses the values as stored, and so do bump
@@ -818,7 +822,7 @@ void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw, d
 std::vector<ColourMapEntry> SceneParser::parse_colour_map(const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<ColourMapValue>(v->data)) {
+        v && v->holds<ColourMapValue>()) {
         auto entries = identifier_as<ColourMapValue>(next(), "a color_map").entries;
         expect_close_brace(kw);
         return entries;
@@ -879,7 +883,7 @@ std::vector<ColourMapEntry> SceneParser::parse_colour_map(const Token& kw) {
 std::vector<PigmentMapEntry> SceneParser::parse_pigment_map(const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data)) {
+        v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a pigment_map");
         if (m.kind != MaterialValue::Kind::PigmentMap)
             fail(kw, "expected a pigment_map identifier");
@@ -909,7 +913,7 @@ std::vector<PigmentMapEntry> SceneParser::parse_pigment_map(const Token& kw) {
 std::vector<NormalMapEntry> SceneParser::parse_normal_map(const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data)) {
+        v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a normal_map");
         if (m.kind != MaterialValue::Kind::NormalMap) fail(kw, "expected a normal_map identifier");
         expect_close_brace(kw);
@@ -938,7 +942,7 @@ std::vector<NormalMapEntry> SceneParser::parse_normal_map(const Token& kw) {
 std::vector<TextureMapEntry> SceneParser::parse_texture_map(const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data)) {
+        v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a texture_map");
         if (m.kind != MaterialValue::Kind::TextureMap)
             fail(kw, "expected a texture_map identifier");
@@ -967,7 +971,7 @@ std::vector<TextureMapEntry> SceneParser::parse_texture_map(const Token& kw) {
 std::vector<SlopeMapEntry> SceneParser::parse_slope_map(const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data)) {
+        v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a slope_map");
         if (m.kind != MaterialValue::Kind::SlopeMap) fail(kw, "expected a slope_map identifier");
         expect_close_brace(kw);
@@ -997,7 +1001,7 @@ std::vector<SlopeMapEntry> SceneParser::parse_slope_map(const Token& kw) {
 // POV-Ray's Parse_Pigment: an optional identifier, then the pattern (or a colour), then the
 // modifiers; it changes the pigment it is given, keeping what is not mentioned.
 void SceneParser::parse_pigment_body(Pigment& p, const Token& kw) {
-    if (const Value* v = peek_identifier_value(0); v && std::holds_alternative<Pigment>(v->data)) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<Pigment>()) {
         p = identifier_as<Pigment>(next(), "a pigment");
     }
     PatternTargets t;
@@ -1016,8 +1020,8 @@ void SceneParser::parse_pigment_body(Pigment& p, const Token& kw) {
 // POV-Ray's Parse_Tnormal.
 void SceneParser::parse_normal_body(Normal& n, const Token& kw) {
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data) &&
-        std::get<MaterialValue>(v->data).kind == MaterialValue::Kind::Normal) {
+        v && v->holds<MaterialValue>() &&
+        v->get<MaterialValue>().kind == MaterialValue::Kind::Normal) {
         n = identifier_as<MaterialValue>(next(), "a normal").normal;
     }
     PatternTargets t;
@@ -1045,7 +1049,7 @@ void SceneParser::set_texture(ObjectNode& node, Texture texture, const Token& at
 Texture SceneParser::parse_texture_body(const Token& kw) {
     Texture tex = default_texture_;
     bool modified = false;
-    if (const Value* v = peek_identifier_value(0); v && std::holds_alternative<Texture>(v->data)) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<Texture>()) {
         tex = identifier_as<Texture>(next(), "a texture");
         modified = true;
     }
@@ -1072,17 +1076,17 @@ Texture SceneParser::parse_texture_body(const Token& kw) {
         if (t.is_punct("}") || t.is_punct("]")) break;
         // A pigment, normal or finish identifier alone stands for pigment { Ident }.
         if (const Value* v = peek_identifier_value(0)) {
-            if (std::holds_alternative<Pigment>(v->data)) {
+            if (v->holds<Pigment>()) {
                 tex.pigment = identifier_as<Pigment>(next(), "a pigment");
                 modified = true;
                 continue;
             }
-            if (std::holds_alternative<Finish>(v->data)) {
+            if (v->holds<Finish>()) {
                 tex.finish = identifier_as<Finish>(next(), "a finish");
                 modified = true;
                 continue;
             }
-            if (const auto* m = std::get_if<MaterialValue>(&v->data);
+            if (const auto* m = v->get_if<MaterialValue>();
                 m && m->kind == MaterialValue::Kind::Normal) {
                 tex.normal = identifier_as<MaterialValue>(next(), "a normal").normal;
                 modified = true;
@@ -1194,7 +1198,7 @@ Texture SceneParser::parse_texture_body(const Token& kw) {
 
 void SceneParser::parse_finish_block(Finish& f, const Token& kw) {
     expect_open_brace(kw);
-    if (const Value* v = peek_identifier_value(0); v && std::holds_alternative<Finish>(v->data)) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<Finish>()) {
         f = identifier_as<Finish>(next(), "a finish");
     }
     bool diffuse_albedo = false, phong_albedo = false, specular_albedo = false;
@@ -1340,8 +1344,8 @@ void SceneParser::parse_finish_block(Finish& f, const Token& kw) {
 void SceneParser::parse_interior_block(Interior& interior, const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data) &&
-        std::get<MaterialValue>(v->data).kind == MaterialValue::Kind::Interior) {
+        v && v->holds<MaterialValue>() &&
+        v->get<MaterialValue>().kind == MaterialValue::Kind::Interior) {
         interior = identifier_as<MaterialValue>(next(), "an interior").interior;
     }
     while (true) {
@@ -1380,8 +1384,8 @@ void SceneParser::parse_interior_block(Interior& interior, const Token& kw) {
 Material SceneParser::parse_material_block(Material m, const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data) &&
-        std::get<MaterialValue>(v->data).kind == MaterialValue::Kind::Material) {
+        v && v->holds<MaterialValue>() &&
+        v->get<MaterialValue>().kind == MaterialValue::Kind::Material) {
         Token name = next();
         const Material id = identifier_as<MaterialValue>(name, "a material").material;
         if (id.texture) {
@@ -1452,8 +1456,8 @@ Fog SceneParser::parse_fog_block(const Token& kw) {
     Fog fog;
     fog.loc = kw.loc();
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<MaterialValue>(v->data) &&
-        std::get<MaterialValue>(v->data).kind == MaterialValue::Kind::Fog) {
+        v && v->holds<MaterialValue>() &&
+        v->get<MaterialValue>().kind == MaterialValue::Kind::Fog) {
         fog = identifier_as<MaterialValue>(next(), "a fog").fog;
         fog.loc = kw.loc();
     }

@@ -116,15 +116,15 @@ bool SceneParser::starts_object(const Token& t) const {
     if (is_identifier(t)) {
         auto sym = t.symbol ? t.symbol : lookup(t.text());
         if (!sym) return false;
-        if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+        if (auto* a = sym->value.get_if<ArrayValue>()) {
             for (const auto& e : a->elements) {
-                if (e) return std::holds_alternative<ObjectNode>(e->data);
+                if (e) return e->holds<ObjectNode>();
             }
             return false;
         }
-        if (auto* opaque = std::get_if<OpaqueValue>(&sym->value.data))
+        if (auto* opaque = sym->value.get_if<OpaqueValue>())
             return opaque->what == "object";
-        return std::holds_alternative<ObjectNode>(sym->value.data);
+        return sym->value.holds<ObjectNode>();
     }
     return false;
 }
@@ -196,7 +196,7 @@ bool SceneParser::parse_object_unguarded(ObjectNode& out) {
 void SceneParser::copy_named_object(ObjectNode& out) {
     const Token name = next();
     Value v = identifier_value(name);
-    auto* object = std::get_if<ObjectNode>(&v.data);
+    auto* object = v.get_if<ObjectNode>();
     if (!object) fail(name, "expected an object, got " + value_type_name(v));
     out = std::move(*object);
 }
@@ -255,7 +255,7 @@ void SceneParser::parse_bound_or_clip(ObjectNode& node) {
 
 // `sphere { Ident ... }` and the like copy the object named (POV-Ray's Parse_Object_Id).
 static bool starts_with_object_identifier(const Value* v) {
-    return v && std::holds_alternative<ObjectNode>(v->data);
+    return v && v->holds<ObjectNode>();
 }
 
 void SceneParser::parse_objects_into(std::vector<ObjectNode>& list) {
@@ -510,7 +510,7 @@ bool SceneParser::parse_transform_item(Transform& t) {
 Transform SceneParser::parse_transform_block(const Token& kw) {
     // `transform Ident` (the old syntax) or `transform { ... }`.
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<Transform>(v->data)) {
+        v && v->holds<Transform>()) {
         return identifier_as<Transform>(next(), "a transform");
     }
     expect_open_brace(kw);
@@ -525,7 +525,7 @@ Transform SceneParser::parse_transform_block(const Token& kw) {
             continue;
         }
         if (const Value* v = peek_identifier_value(0);
-            v && std::holds_alternative<Transform>(v->data)) {
+            v && v->holds<Transform>()) {
             t = compose_transforms(t, identifier_as<Transform>(next(), "a transform"));
             continue;
         }
@@ -570,7 +570,7 @@ CameraState SceneParser::parse_camera(const Token& kw) {
     expect_open_brace(kw);
     CameraState base;
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<CameraState>(v->data)) {
+        v && v->holds<CameraState>()) {
         // `camera { Ident ... }`: POV-Ray 3.5+ allows only transforms after the identifier.
         base = identifier_as<CameraState>(next(), "a camera");
         CameraModifiers mods;

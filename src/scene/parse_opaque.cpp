@@ -166,7 +166,7 @@ void SceneParser::fail_opaque_use(const Token& name, const Symbol& symbol,
 }
 
 const Value& SceneParser::use_value(const Token& name, const Symbol& symbol, const Value& value) {
-    const auto* opaque = std::get_if<OpaqueValue>(&value.data);
+    const auto* opaque = value.get_if<OpaqueValue>();
     if (!opaque) return value;
     if (std::exchange(copying_value_, false)) return value;
     if (options_.strict && !opaque_capture_) fail_opaque_use(name, symbol, *opaque);

@@ -22,7 +22,7 @@ Numeric SceneParser::parse_object_function(const Token& name) {
     }
     Token id = next();
     Value v = identifier_value(id);
-    const auto* object = std::get_if<ObjectNode>(&v.data);
+    const auto* object = v.get_if<ObjectNode>();
     if (!object) fail(id, "expected an object, got " + value_type_name(v));
     if (f == "min_extent" || f == "max_extent") {
         expect_punct(")", "after the object of '" + f + "'");

@@ -331,6 +331,7 @@ Shape SceneParser::parse_text(const Token& kw) {
         auto loaded = load_truetype_font(path);
         if (!loaded) fail(at, loaded.message());
         font = *loaded;
+        scene_.files.push_back(path);  // an input: no output may replace it
     }
     auto text = layout_text(*font, string, thickness, offset);
     if (!text) fail(at, text.message());

@@ -59,12 +59,12 @@ Value SceneParser::parse_rvalue(const Token& for_name, bool is_macro_argument) {
         if (!v && !t.symbol && !lookup(t.text())) {
             fail(t, "undefined identifier '" + t.text() + "'");
         }
-        if (v && std::holds_alternative<Numeric>(v->data)) return numeric();
-        if (v && std::holds_alternative<std::shared_ptr<const FunctionCode>>(v->data)) {
+        if (v && v->holds<Numeric>()) return numeric();
+        if (v && v->holds<std::shared_ptr<const FunctionCode>>()) {
             ScopedFlag defer(defer_directives_, true);
             if (peek(1).is_punct("(")) return numeric();  // F(...): a call, not a copy
         }
-        if (v && std::holds_alternative<OpaqueValue>(v->data)) {
+        if (v && v->holds<OpaqueValue>()) {
             ScopedFlag defer(defer_directives_, true);
             // An operator after it, or '(' (a call of a function kept opaque): a use.
             if (continues_expression(peek(1)) || peek(1).is_punct("(")) return numeric();

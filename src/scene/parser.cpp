@@ -31,13 +31,13 @@ constexpr ItemArity kUnsupportedGlobalSettings[] = {
 
 /// What a declared value is, when it is a material (for Scene::material_symbols).
 const char* material_kind(const Value& v) {
-    if (std::holds_alternative<Texture>(v.data)) return "texture";
-    if (std::holds_alternative<Pigment>(v.data)) return "pigment";
-    if (std::holds_alternative<Finish>(v.data)) return "finish";
-    if (std::holds_alternative<ColourMapValue>(v.data)) return "color_map";
-    if (std::holds_alternative<SkySphere>(v.data)) return "sky_sphere";
-    if (const auto* n = std::get_if<Numeric>(&v.data); n && n->size == 5) return "colour";
-    if (const auto* m = std::get_if<MaterialValue>(&v.data)) {
+    if (v.holds<Texture>()) return "texture";
+    if (v.holds<Pigment>()) return "pigment";
+    if (v.holds<Finish>()) return "finish";
+    if (v.holds<ColourMapValue>()) return "color_map";
+    if (v.holds<SkySphere>()) return "sky_sphere";
+    if (const auto* n = v.get_if<Numeric>(); n && n->size == 5) return "colour";
+    if (const auto* m = v.get_if<MaterialValue>()) {
         switch (m->kind) {
             case MaterialValue::Kind::Normal:
                 return "normal";
@@ -282,7 +282,7 @@ SkySphere SceneParser::parse_sky_sphere_value(const Token& kw) {
     SkySphere sky;
     sky.loc = kw.loc();
     if (const Value* v = peek_identifier_value(0);
-        v && std::holds_alternative<SkySphere>(v->data)) {
+        v && v->holds<SkySphere>()) {
         sky = identifier_as<SkySphere>(next(), "a sky_sphere");
     }
     while (true) {
@@ -322,7 +322,7 @@ void SceneParser::export_symbols() {
         Declared d;
         d.loc = sym->loc;
         if (const char* kind = material_kind(sym->value)) scene_.material_symbols[name] = kind;
-        if (auto* n = std::get_if<Numeric>(&sym->value.data)) {
+        if (auto* n = sym->value.get_if<Numeric>()) {
             if (n->size == 1) {
                 d.value = n->v[0];
             } else if (n->size == 3) {
@@ -330,7 +330,7 @@ void SceneParser::export_symbols() {
             } else {
                 continue;
             }
-        } else if (auto* s = std::get_if<std::string>(&sym->value.data)) {
+        } else if (auto* s = sym->value.get_if<std::string>()) {
             d.value = *s;
         } else {
             continue;

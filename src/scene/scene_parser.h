@@ -304,7 +304,7 @@ class SceneParser {
     template <class T>
     T identifier_as(const Token& name, const char* expected) {
         Value v = identifier_value(name);
-        if (auto* x = std::get_if<T>(&v.data)) return std::move(*x);
+        if (auto* x = v.get_if<T>()) return std::move(*x);
         fail(name, std::string("expected ") + expected + ", got " + value_type_name(v));
     }
     std::shared_ptr<Value>& index_array(ArrayValue& array, const Token& name);

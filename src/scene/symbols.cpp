@@ -24,9 +24,9 @@ void weigh_object(const ObjectNode& object, int depth, Weight& w) {
 }
 
 void weigh(const Value& value, int depth, Weight& w) {
-    if (const auto* object = std::get_if<ObjectNode>(&value.data)) {
+    if (const auto* object = value.get_if<ObjectNode>()) {
         weigh_object(*object, depth, w);
-    } else if (const auto* array = std::get_if<ArrayValue>(&value.data)) {
+    } else if (const auto* array = value.get_if<ArrayValue>()) {
         w.elements += array->elements.size();
         w.depth = std::max(w.depth, depth);
         for (const auto& e : array->elements) {
@@ -81,7 +81,7 @@ const Value* SceneParser::peek_identifier_value(std::size_t ahead) {
     if (!is_identifier(t)) return nullptr;
     std::shared_ptr<Symbol> sym = t.symbol ? t.symbol : lookup(t.text());
     if (!sym) return nullptr;
-    if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+    if (auto* a = sym->value.get_if<ArrayValue>()) {
         if (peek_array_index(ahead + 1)) {
             // The first element assigned stands for the type of the array's elements.
             for (const auto& e : a->elements) {
@@ -113,7 +113,7 @@ Value SceneParser::identifier_value(const Token& name) {
     std::shared_ptr<Symbol> sym = name.symbol ? name.symbol : lookup(name.text());
     if (!sym) fail(name, "undefined identifier '" + name.text() + "'");
     const Value* value = &sym->value;
-    if (auto* a = std::get_if<ArrayValue>(&sym->value.data)) {
+    if (auto* a = sym->value.get_if<ArrayValue>()) {
         if (peek_array_index()) {
             Token at = peek(0);
             std::shared_ptr<Value>& e = index_array(*a, name);

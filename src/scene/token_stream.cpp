@@ -320,7 +320,7 @@ void SceneParser::reject_unknown_word(const Token& t) {
     auto sym = t.symbol ? t.symbol : lookup(t.text());
     if (!sym) fail(t, "unknown keyword '" + t.text() + "'");
     // An opaque value where a block's item belongs: its use is what fails.
-    if (auto* opaque = std::get_if<OpaqueValue>(&sym->value.data))
+    if (auto* opaque = sym->value.get_if<OpaqueValue>())
         fail_opaque_use(t, *sym, *opaque);
 }
 
@@ -339,7 +339,7 @@ void SceneParser::fetch() {
         if (!directive && is_identifier(t)) {
             resolve(t);
             if (t.symbol) {
-                if (auto* m = std::get_if<std::shared_ptr<const MacroDef>>(&t.symbol->value.data)) {
+                if (auto* m = t.symbol->value.get_if<std::shared_ptr<const MacroDef>>()) {
                     macro = *m;
                 }
             }
@@ -378,7 +378,7 @@ void SceneParser::run_deferred(std::size_t at) {
     } else {
         t.deferred_macro = false;
         // The name may have been redeclared meanwhile; then it is an identifier like others.
-        auto* macro = std::get_if<std::shared_ptr<const MacroDef>>(&t.symbol->value.data);
+        auto* macro = t.symbol->value.get_if<std::shared_ptr<const MacroDef>>();
         if (macro) {
             auto def = *macro;
             invoke_macro(t, def);

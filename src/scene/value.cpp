@@ -56,7 +56,7 @@ std::string numeric_type_name(int size) {
 }
 
 Value deep_copy(const Value& value) {
-    if (const auto* array = std::get_if<ArrayValue>(&value.data)) {
+    if (const auto* array = value.get_if<ArrayValue>()) {
         ArrayValue copy;
         copy.sizes = array->sizes;
         copy.elements.reserve(array->elements.size());
@@ -72,11 +72,12 @@ std::string value_type_name(const Value& value) {
     struct Namer {
         std::string operator()(const Numeric& n) const { return numeric_type_name(n.size); }
         std::string operator()(const std::string&) const { return "string"; }
-        std::string operator()(const ObjectNode& o) const {
+        std::string operator()(const Boxed<ObjectNode>& b) const {
+            const ObjectNode& o = *b;
             return o.kind == ObjectNode::Kind::Light ? "light source" : "object";
         }
-        std::string operator()(const Texture&) const { return "texture"; }
-        std::string operator()(const Pigment&) const { return "pigment"; }
+        std::string operator()(const Boxed<Texture>&) const { return "texture"; }
+        std::string operator()(const Boxed<Pigment>&) const { return "pigment"; }
         std::string operator()(const Finish&) const { return "finish"; }
         std::string operator()(const Transform&) const { return "transform"; }
         std::string operator()(const ColourMapValue&) const { return "color_map"; }
@@ -84,11 +85,11 @@ std::string value_type_name(const Value& value) {
         std::string operator()(const ArrayValue&) const { return "array"; }
         std::string operator()(const std::shared_ptr<const MacroDef>&) const { return "macro"; }
         std::string operator()(const OpaqueValue& u) const { return u.what; }
-        std::string operator()(const SkySphere&) const { return "sky_sphere"; }
+        std::string operator()(const Boxed<SkySphere>&) const { return "sky_sphere"; }
         std::string operator()(const std::shared_ptr<const FunctionCode>&) const {
             return "function";
         }
-        std::string operator()(const MaterialValue& m) const { return m.type_name(); }
+        std::string operator()(const Boxed<MaterialValue>& m) const { return (*m).type_name(); }
     };
     return std::visit(Namer{}, value.data);
 }

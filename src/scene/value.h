@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -82,11 +83,96 @@ struct OpaqueValue {
     FileLoc loc;         // where the reason lies (empty with the reason)
 };
 
+/// A value of the heap held by a scene value: its large alternatives (objects, textures,
+/// pigments, materials, the sky) would otherwise make every value, and every frame of the
+/// parser that holds one, as large as the largest (7.3 KB).  Copies are deep; a moved-from
+/// box is empty and may only be assigned or destroyed.
+template <class T>
+class Boxed {
+  public:
+    Boxed(const T& v) : p_(std::make_unique<T>(v)) {}        // NOLINT: implicit, as the value's
+    Boxed(T&& v) : p_(std::make_unique<T>(std::move(v))) {}  // NOLINT  alternatives are
+    Boxed(const Boxed& o) : p_(std::make_unique<T>(*o.p_)) {}
+    Boxed(Boxed&&) noexcept = default;
+    Boxed& operator=(const Boxed& o) {
+        if (this != &o) p_ = std::make_unique<T>(*o.p_);
+        return *this;
+    }
+    Boxed& operator=(Boxed&&) noexcept = default;
+    T& operator*() { return *p_; }
+    const T& operator*() const { return *p_; }
+
+  private:
+    std::unique_ptr<T> p_;
+};
+
+namespace value_detail {
+template <class T>
+struct Stored {
+    using type = T;
+};
+template <>
+struct Stored<ObjectNode> {
+    using type = Boxed<ObjectNode>;
+};
+template <>
+struct Stored<Texture> {
+    using type = Boxed<Texture>;
+};
+template <>
+struct Stored<Pigment> {
+    using type = Boxed<Pigment>;
+};
+template <>
+struct Stored<SkySphere> {
+    using type = Boxed<SkySphere>;
+};
+template <>
+struct Stored<MaterialValue> {
+    using type = Boxed<MaterialValue>;
+};
+}  // namespace value_detail
+
 struct Value {
-    std::variant<Numeric, std::string, ObjectNode, Texture, Pigment, Finish, Transform,
-                 ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
-                 OpaqueValue, SkySphere, MaterialValue, std::shared_ptr<const FunctionCode>>
+    std::variant<Numeric, std::string, Boxed<ObjectNode>, Boxed<Texture>, Boxed<Pigment>, Finish,
+                 Transform, ColourMapValue, CameraState, ArrayValue,
+                 std::shared_ptr<const MacroDef>, OpaqueValue, Boxed<SkySphere>,
+                 Boxed<MaterialValue>, std::shared_ptr<const FunctionCode>>
         data;
+
+    /// Whether the value is a T, and the T it holds (nullptr if it is not one, or throws
+    /// std::bad_variant_access for get), whether or not T is boxed.
+    template <class T>
+    bool holds() const {
+        return std::holds_alternative<typename value_detail::Stored<T>::type>(data);
+    }
+    template <class T>
+    T* get_if() {
+        return unbox<T>(std::get_if<typename value_detail::Stored<T>::type>(&data));
+    }
+    template <class T>
+    const T* get_if() const {
+        return unbox<T>(std::get_if<typename value_detail::Stored<T>::type>(&data));
+    }
+    template <class T>
+    T& get() {
+        return *unbox<T>(&std::get<typename value_detail::Stored<T>::type>(data));
+    }
+    template <class T>
+    const T& get() const {
+        return *unbox<T>(&std::get<typename value_detail::Stored<T>::type>(data));
+    }
+
+  private:
+    template <class T, class S>
+    static auto unbox(S* s) {
+        using R = std::conditional_t<std::is_const_v<S>, const T, T>;
+        if constexpr (std::is_same_v<std::remove_const_t<S>, T>) {
+            return static_cast<R*>(s);
+        } else {
+            return s ? static_cast<R*>(&**s) : static_cast<R*>(nullptr);
+        }
+    }
 };
 
 /// A copy that shares nothing with `value` (array elements are copied too).

@@ -13,6 +13,7 @@
 
 #include "../cli/run_tool.h"
 #include "../trace/povray_runner.h"
+#include "animate/marked.h"
 #include "animate/video.h"
 #include "atmosphere/vanishing.h"
 #include "image/image_io.h"
@@ -355,6 +356,40 @@ TEST(Animate, EachFramesSceneIsLoadedAsCompileAndTraceLoadIt) {
               "frame 2 (clock 1): " + fs::absolute(dir / "far.pov").string() +
                   ":4:1: the camera is at y = 1e+308: mirage follows scenes within 1e+09 units "
                   "of the origin");
+}
+
+TEST(Animate, MarkedSpheresAreSeenAboveTheDeclaredGround) {
+    // The same scene with its floor at y = 0 and at y = -1 (Mirage_Ground_Height = -1): the
+    // marked sphere's vanishing distance and mirrored image are the same; without the setting
+    // the ground is 1 m under the floor and they are not.
+    auto scene = [](double floor, const std::string& ground_line) {
+        std::ostringstream s;
+        s << "#version 3.7;\n#declare Mirage_Preset = \"paper\";\n"
+          << ground_line << "#include \"mirage.inc\"\n"
+          << "camera { location <0, " << 1.5 + floor << ", 0> look_at <0, " << 1.5 + floor
+          << ", 10> }\n"
+          << "#declare Marked_Center = <0, " << 1.8 + floor << ", 14>;\n"
+          << "#declare Marked_Radius = 0.2;\n"
+          << "plane { y, " << floor << " pigment { rgb 1 } }\n"
+          << "sphere { Marked_Center, Marked_Radius pigment { rgb x } }\n";
+        ParseOptions po;
+        po.library_paths = {kSource + "/pov_includes"};
+        po.strict = false;
+        auto parsed = parse_scene_text(s.str(), "scene.pov", po);
+        EXPECT_TRUE(parsed.ok()) << parsed.message();
+        auto views = view_marked_spheres(*parsed, 64, 48);
+        EXPECT_TRUE(views.ok()) << views.message();
+        return views.ok() && views->size() == 1 ? (*views)[0] : MarkedView{};
+    };
+    const MarkedView at_zero = scene(0.0, "");
+    const MarkedView lowered = scene(-1.0, "#declare Mirage_Ground_Height = -1;\n");
+    const MarkedView wrong = scene(-1.0, "");
+    ASSERT_GT(at_zero.vanishing_distance, 0.0);
+    EXPECT_NEAR(lowered.vanishing_distance, at_zero.vanishing_distance, 1e-9);
+    EXPECT_EQ(lowered.mirrored, at_zero.mirrored);
+    EXPECT_NEAR(lowered.elevation_low_deg, at_zero.elevation_low_deg, 1e-9);
+    EXPECT_NEAR(lowered.angular_size_deg, at_zero.angular_size_deg, 1e-9);
+    EXPECT_GT(std::abs(wrong.vanishing_distance - at_zero.vanishing_distance), 1e-3);
 }
 
 TEST(Animate, SlurmScriptStatesTheResourcesPerTask) {

@@ -101,6 +101,42 @@ TEST(HostileCli, NoOutputReplacesAnInput) {
     EXPECT_EQ(snapshot(dir), before);
 }
 
+TEST(HostileCli, NoOutputReplacesAFontOrAnImageTheSceneUses) {
+    const auto dir = test_dir("hostile_cli", "font_image");
+    // A font and an image map, named like the image asked for.
+    fs::copy_file("/usr/share/povray-3.7/include/timrom.ttf", dir / "font.png",
+                  fs::copy_options::overwrite_existing);
+    write(dir / "s.pov",
+          "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
+          "light_source { <2, 4, -3>, rgb 1 }\n"
+          "text { ttf \"font.png\" \"A\" 0.2, 0 pigment { rgb 1 } }\n");
+    auto before = snapshot(dir);
+    auto r = run_tool("trace " + quoted(dir / "s.pov") + " -o " + quoted(dir / "font.png") +
+                      " -W 16 -H 12");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("the output would overwrite an input of this command"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(snapshot(dir), before);
+    // An image map: made by a first trace, then used by the scene and asked for again.
+    write(dir / "plain.pov",
+          "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
+          "light_source { <2, 4, -3>, rgb 1 }\nsphere { <0, 1, 0>, 1 pigment { rgb x } }\n");
+    r = run_tool("trace " + quoted(dir / "plain.pov") + " -o " + quoted(dir / "map.png") +
+                 " -W 16 -H 12");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    write(dir / "m.pov",
+          "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
+          "light_source { <2, 4, -3>, rgb 1 }\n"
+          "plane { z, 2 pigment { image_map { png \"map.png\" } } }\n");
+    before = snapshot(dir);
+    r = run_tool("trace " + quoted(dir / "m.pov") + " -o " + quoted(dir / "map.png") +
+                 " -W 16 -H 12");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("the output would overwrite an input of this command"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(snapshot(dir), before);
+}
+
 TEST(HostileCli, AllOutputsOrNone) {
     const auto dir = test_dir("hostile_cli", "all_or_none");
     // report.json cannot be written (a directory holds its name): no other output appears.

@@ -35,10 +35,10 @@ TEST(Value, DeepCopyOfAnArraySharesNothing) {
     a.elements = {std::make_shared<Value>(Value{Numeric::scalar(1.0)}), nullptr};
     Value original{a};
     Value copy = deep_copy(original);
-    auto& copied = std::get<ArrayValue>(copy.data);
-    std::get<Numeric>(copied.elements[0]->data).v[0] = 5.0;
-    const auto& kept = std::get<ArrayValue>(original.data);
-    EXPECT_EQ(std::get<Numeric>(kept.elements[0]->data).v[0], 1.0);
+    auto& copied = copy.get<ArrayValue>();
+    copied.elements[0]->get<Numeric>().v[0] = 5.0;
+    const auto& kept = original.get<ArrayValue>();
+    EXPECT_EQ(kept.elements[0]->get<Numeric>().v[0], 1.0);
     EXPECT_EQ(copied.elements[1], nullptr);
     EXPECT_EQ(value_type_name(copy), "array");
 }
