@@ -60,10 +60,6 @@ const char* material_kind(const Value& v) {
     return nullptr;
 }
 
-}  // namespace
-
-namespace {
-
 /// The lowest address the parse's recursion may use on this thread's stack: its low end
 /// plus a reserve (an eighth of the stack, at least 1 MiB) for the frames between two checks
 /// of the nesting and for what runs at the deepest level (a macro call, an include, a
@@ -281,8 +277,7 @@ SkySphere SceneParser::parse_sky_sphere_value(const Token& kw) {
     expect_open_brace(kw);
     SkySphere sky;
     sky.loc = kw.loc();
-    if (const Value* v = peek_identifier_value(0);
-        v && v->holds<SkySphere>()) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<SkySphere>()) {
         sky = identifier_as<SkySphere>(next(), "a sky_sphere");
     }
     while (true) {

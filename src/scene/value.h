@@ -86,12 +86,13 @@ struct OpaqueValue {
 /// A value of the heap held by a scene value: its large alternatives (objects, textures,
 /// pigments, materials, the sky) would otherwise make every value, and every frame of the
 /// parser that holds one, as large as the largest (7.3 KB).  Copies are deep; a moved-from
-/// box is empty and may only be assigned or destroyed.
+/// box is empty and may only be assigned or destroyed.  Made implicitly from a T, as the
+/// variant's other alternatives are from theirs.
 template <class T>
 class Boxed {
   public:
-    Boxed(const T& v) : p_(std::make_unique<T>(v)) {}        // NOLINT: implicit, as the value's
-    Boxed(T&& v) : p_(std::make_unique<T>(std::move(v))) {}  // NOLINT  alternatives are
+    Boxed(const T& v) : p_(std::make_unique<T>(v)) {}        // NOLINT(google-explicit-constructor)
+    Boxed(T&& v) : p_(std::make_unique<T>(std::move(v))) {}  // NOLINT(google-explicit-constructor)
     Boxed(const Boxed& o) : p_(std::make_unique<T>(*o.p_)) {}
     Boxed(Boxed&&) noexcept = default;
     Boxed& operator=(const Boxed& o) {
@@ -107,60 +108,45 @@ class Boxed {
 };
 
 namespace value_detail {
+/// The alternatives a Value holds boxed, and how it stores a T.
 template <class T>
-struct Stored {
-    using type = T;
-};
-template <>
-struct Stored<ObjectNode> {
-    using type = Boxed<ObjectNode>;
-};
-template <>
-struct Stored<Texture> {
-    using type = Boxed<Texture>;
-};
-template <>
-struct Stored<Pigment> {
-    using type = Boxed<Pigment>;
-};
-template <>
-struct Stored<SkySphere> {
-    using type = Boxed<SkySphere>;
-};
-template <>
-struct Stored<MaterialValue> {
-    using type = Boxed<MaterialValue>;
-};
+inline constexpr bool kBoxed =
+    std::is_same_v<T, ObjectNode> || std::is_same_v<T, Texture> || std::is_same_v<T, Pigment> ||
+    std::is_same_v<T, SkySphere> || std::is_same_v<T, MaterialValue>;
+template <class T>
+using Stored = std::conditional_t<kBoxed<T>, Boxed<T>, T>;
 }  // namespace value_detail
 
 struct Value {
-    std::variant<Numeric, std::string, Boxed<ObjectNode>, Boxed<Texture>, Boxed<Pigment>, Finish,
-                 Transform, ColourMapValue, CameraState, ArrayValue,
-                 std::shared_ptr<const MacroDef>, OpaqueValue, Boxed<SkySphere>,
-                 Boxed<MaterialValue>, std::shared_ptr<const FunctionCode>>
+    // Boxed or not as value_detail::kBoxed says.
+    std::variant<Numeric, std::string, value_detail::Stored<ObjectNode>,
+                 value_detail::Stored<Texture>, value_detail::Stored<Pigment>, Finish, Transform,
+                 ColourMapValue, CameraState, ArrayValue, std::shared_ptr<const MacroDef>,
+                 OpaqueValue, value_detail::Stored<SkySphere>, value_detail::Stored<MaterialValue>,
+                 std::shared_ptr<const FunctionCode>>
         data;
 
     /// Whether the value is a T, and the T it holds (nullptr if it is not one, or throws
     /// std::bad_variant_access for get), whether or not T is boxed.
     template <class T>
     bool holds() const {
-        return std::holds_alternative<typename value_detail::Stored<T>::type>(data);
+        return std::holds_alternative<value_detail::Stored<T>>(data);
     }
     template <class T>
     T* get_if() {
-        return unbox<T>(std::get_if<typename value_detail::Stored<T>::type>(&data));
+        return unbox<T>(std::get_if<value_detail::Stored<T>>(&data));
     }
     template <class T>
     const T* get_if() const {
-        return unbox<T>(std::get_if<typename value_detail::Stored<T>::type>(&data));
+        return unbox<T>(std::get_if<value_detail::Stored<T>>(&data));
     }
     template <class T>
     T& get() {
-        return *unbox<T>(&std::get<typename value_detail::Stored<T>::type>(data));
+        return *unbox<T>(&std::get<value_detail::Stored<T>>(data));
     }
     template <class T>
     const T& get() const {
-        return *unbox<T>(&std::get<typename value_detail::Stored<T>::type>(data));
+        return *unbox<T>(&std::get<value_detail::Stored<T>>(data));
     }
 
   private:
