@@ -48,9 +48,10 @@ AH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 # Debian 12 packages the build, the tests and the renders need.
 PACKAGES := g++ make cmake pkg-config povray povray-includes povray-examples libopenimageio-dev \
             openimageio-tools libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev \
-            gnuplot-nox fonts-dejavu-core ffmpeg parallel munge slurmctld slurmd slurm-client
+            gnuplot-nox fonts-dejavu-core ffmpeg parallel munge slurmctld slurmd slurm-client \
+            python3
 # What make fuzz needs besides: clang and its libFuzzer and sanitizer runtimes.
-FUZZ_PACKAGES := clang-14 libclang-rt-14-dev python3
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
 
 .PHONY: all deps configure build test render trace bench compare animate study fuzz clean
 
