@@ -659,8 +659,6 @@ void sample_path_near(const ExactRay& ray, const SampleSettings& st, const PathO
         // (between the start's slope and the asymptote's, from the start), so the path's
         // polyline still meets nothing; the distance where the asymptote keeps the tolerance
         // and the path's height there are not needed.
-        path.turns = false;
-        path.dz_turn = 0.0;
         path.end = PathEnd::Straight;
         path.end_slope = asymptotic_slope(ray);
         path.end_clear = true;

@@ -337,7 +337,8 @@ TEST(SamplerNear, NothingNearAnEscapingPathLeavesItsStartAndStraightEnd) {
     ASSERT_EQ(near.points.size(), 1u);
     EXPECT_TRUE(near.end_clear);
     EXPECT_EQ(near.end, PathEnd::Straight);
-    EXPECT_FALSE(near.turns);
+    EXPECT_TRUE(near.turns);  // the ray's turning point, though not among the points
+    EXPECT_EQ(near.dz_turn, ray->dz_turn);
     EXPECT_EQ(near.end_slope, asymptotic_slope(*ray));
     EXPECT_EQ(away.asked() - asked_before, 1);  // the one question about the whole wedge
     // A rising ray the same, and its straight end from the start misses the boxes too.
