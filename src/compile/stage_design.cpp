@@ -65,7 +65,24 @@ double air_top_reached(const CompileContext& ctx, const CameraRays& rays) {
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
         top[i] = exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], rays.exit_dz[i]).y;
     });
-    const double t = *std::max_element(top.begin(), top.end());
+    double t = *std::max_element(top.begin(), top.end());
+    const Aabb& objects = ctx.accel->finite_bounds();
+    if (air_earth_radius(*ctx.air) > 0.0 && !objects.empty() && objects.finite() &&
+        objects.hi.y < t) {
+        // On the curved Earth the flattened n* keeps growing with height (the Earth's term,
+        // 1/R per unit of height), and a band ray that goes on bending above everything
+        // the scene holds only turns its final direction away from the one the sky is seen
+        // in (that is dz / R from the flattened one, curved_propagator.h).  So the layers end
+        // at the top of the objects, or higher where a camera ray rises above them and comes
+        // back down inside the scene (a duct, looming): above, no ray meets anything.
+        const double objects_top = objects.hi.y;
+        std::vector<double> peak(rays.size(), 0.0);
+        parallel_for(static_cast<long>(rays.size()), [&](long i) {
+            peak[i] = air_peak_below(*ctx.air, ctx.eye_y, rays.elevation[i], rays.exit_dz[i],
+                                     objects_top);
+        });
+        t = std::min(t, std::max(objects_top, *std::max_element(peak.begin(), peak.end())));
+    }
     return std::max(std::min(t, air_constant_above(*ctx.air)), ctx.eye_y * 1.001);
 }
 

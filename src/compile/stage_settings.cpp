@@ -158,14 +158,26 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
         auto air = scene_atmosphere(ctx.settings, 0.05 * ctx.settings.tolerance_px * px);
         if (!air) return make_error(opt.scene + ": " + air.message());
         if (air->earth_radius() > 0.0) {
-            // Bands of the flattened profile were measured hundreds of pixels off on the
-            // curved Earth (docs/atmospheres.md); refused until they are right.
-            return make_error(opt.scene +
-                              ": mirage compile: bands for real air on the curved Earth are not "
-                              "built (Earth radius " +
-                              shortest(air->earth_radius() * ctx.settings.unit_m / 1000.0) +
-                              " km): declare Mirage_Earth_Radius = 0 for flat ground, or render "
-                              "the curved Earth with mirage trace");
+            // On the curved Earth a band ray's final direction is its direction in the
+            // flattened frame where it stops bending, which is dz / R from the eye's
+            // (curved_propagator.h): POV-Ray looks the sky up with it unturned.  The layers
+            // reach just past the scene, so that angle stays below 1.1 extent / R.
+            const double near = 1.1 * extent;
+            ctx.layers_box = {eye.x - near, eye.x + near, eye.z - near, eye.z + near};
+            const double R = air->earth_radius();
+            if (near > kMaxCurvedSkyRad * R) {
+                const double km = ctx.settings.unit_m / 1000.0;
+                return make_error(
+                    opt.scene +
+                    ": mirage compile: on the curved Earth POV-Ray sees the sky up to " +
+                    "the layers' reach over the Earth's radius off (" + sig(near * km, 3) +
+                    " km / " + shortest(R * km) + " km = " + sig(1e3 * near / R, 3) +
+                    " mrad), more than the " + shortest(1e3 * kMaxCurvedSkyRad) +
+                    " mrad bands allow: render it with mirage trace, or declare Mirage_Extent "
+                    "of at most " +
+                    shortest(std::floor(kMaxCurvedSkyRad * R / 1.1)) +
+                    " (scene units), or Mirage_Earth_Radius = 0 for flat ground");
+            }
         }
         ctx.air = std::make_shared<const Atmosphere>(std::move(*air));
         ctx.air_max_dz =

@@ -37,6 +37,12 @@ inline constexpr int kMaxTraceLevel = 255;
 /// the ground.
 inline constexpr double kLayersExtentFactor = 1000.0;
 
+/// On the curved Earth a band ray's final direction is the flattened frame's, which is
+/// turned by dz / R from the eye's where the ray stops bending (at most where the layers
+/// end): the layers may reach no farther than this many radians of the Earth, 1 mrad (6.4 km
+/// on the Earth), so that the sky POV-Ray looks up is at most that far off.
+inline constexpr double kMaxCurvedSkyRad = 1e-3;
+
 /// What every stage reads: the scene and its atmosphere as the compiler sees them.
 struct CompileContext {
     CompileOptions options;
