@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "atmosphere/exact_ray.h"
 #include "atmosphere/profile.h"
@@ -122,6 +125,7 @@ TEST_P(ManyOrigins, EveryPixelShowsWhatItsOwnExactRayMeets) {
     o.width = kW;
     o.height = kH;
     o.progress = false;
+    o.tolerance_px = 0.1;
     auto curved = trace_scene(o);
     ASSERT_TRUE(curved.ok()) << curved.message();
     EXPECT_EQ(curved->mode, PathMode::PerRay);
@@ -133,23 +137,35 @@ TEST_P(ManyOrigins, EveryPixelShowsWhatItsOwnExactRayMeets) {
     auto loaded = load_mirage_scene(scene_load_options(scene.string(), kW, kH, {}));
     ASSERT_TRUE(loaded.ok()) << loaded.message();
     const Profile profile = profile_in_scene_units(loaded->settings);
+    // A pixel is explained when its colour is what its own exact ray meets, or what the exact
+    // ray half a pixel up, down, left or right meets: the tracer keeps 0.1 px, and a pixel
+    // centre that close to an edge may fall on either side of it.
     int curved_differ = 0, straight_differ = 0;
     for (int row = 0; row < kH; ++row)
         for (int col = 0; col < kW; ++col) {
-            const CameraRay r = camera_ray(loaded->scene.camera, col + 0.5, row + 0.5, kW, kH);
-            const Shade want = exact_shade(profile, r, c.ground);
-            const size_t p = 3 * (static_cast<size_t>(row) * kW + col);
-            const auto& a = curved->render.image.pixels;
-            const auto& b = straight->render.image.pixels;
-            curved_differ += shade_of(a[p], a[p + 1], a[p + 2]) != want;
-            straight_differ += shade_of(b[p], b[p + 1], b[p + 2]) != want;
+            std::vector<Shade> want;
+            for (const auto& [dx, dy] :
+                 {std::pair{0.0, 0.0}, std::pair{0.0, -0.5}, std::pair{0.0, 0.5},
+                  std::pair{-0.5, 0.0}, std::pair{0.5, 0.0}}) {
+                const CameraRay r =
+                    camera_ray(loaded->scene.camera, col + 0.5 + dx, row + 0.5 + dy, kW, kH);
+                want.push_back(exact_shade(profile, r, c.ground));
+            }
+            auto explained = [&](const std::vector<float>& px) {
+                const size_t p = 3 * (static_cast<size_t>(row) * kW + col);
+                const Shade got = shade_of(px[p], px[p + 1], px[p + 2]);
+                return std::find(want.begin(), want.end(), got) != want.end();
+            };
+            curved_differ += !explained(curved->render.image.pixels);
+            straight_differ += !explained(straight->render.image.pixels);
         }
     const double share = static_cast<double>(curved_differ) / (kW * kH);
     const double straight_share = static_cast<double>(straight_differ) / (kW * kH);
-    std::printf("%s: %.2f %% of pixels differ from their own exact rays (straight rays %.1f %%)\n",
-                c.name, 100.0 * share, 100.0 * straight_share);
-    // Within half a pixel of the exact paths only pixels next to an edge may differ.
-    EXPECT_LT(share, 0.015);
+    std::printf(
+        "%s: %.2f %% of pixels show what no exact ray within half a pixel meets (straight rays "
+        "%.1f %%)\n",
+        c.name, 100.0 * share, 100.0 * straight_share);
+    EXPECT_LT(share, 0.002);
     EXPECT_GT(straight_share, 0.08);  // the atmosphere changes much of the picture
 }
 
