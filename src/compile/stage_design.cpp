@@ -161,7 +161,8 @@ int deepest_trace_level(const CompileContext& ctx, const LayerStack& rendered,
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
         // A ray from below the ground enters the layers where it rises to it, if ever (the
         // straight stretch below, in the bottom layer, costs no level).
-        const auto from = entry_into_atmosphere(rays.origin[i], rays.direction[i]);
+        const glm::dvec3 o = rays.origin.empty() ? ctx.camera.location : rays.origin[i];
+        const auto from = entry_into_atmosphere(o, rays.direction[i]);
         level[i] =
             from ? trace_levels(ctx, rendered, objects, camera_y, *from, rays.direction[i], 1, 1.0)
                  : 1;

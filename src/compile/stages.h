@@ -90,7 +90,7 @@ struct CameraRays {
     int width = 0, height = 0;       // of the image, pixels
     int per_side = 1;                // samples per pixel and side
     std::vector<glm::dvec3> origin;  // where each ray starts (the camera's location for a
-                                     // camera with one eye point)
+                                     // camera with one eye point; empty: every ray from it)
     std::vector<glm::dvec3> direction;
     std::vector<double> elevation;  // rad, > 0 up
     std::vector<double> exit_dz;    // horizontal distance from its origin at which it leaves
