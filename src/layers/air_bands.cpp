@@ -29,6 +29,8 @@ double mean_excess(const Atmosphere& air, double n0_sq, double a, double b) {
 
 bool air_has_gradient(const Atmosphere& air) { return air.has_gradient(); }
 
+double air_earth_radius(const Atmosphere& air) { return air.earth_radius(); }
+
 double air_constant_above(const Atmosphere& air) {
     const QuadraticProfile* q = air.quadratic_profile();
     return q ? q->top() : std::numeric_limits<double>::infinity();
@@ -48,6 +50,22 @@ LayerStack air_layers(const Atmosphere& air, const std::vector<double>& heights)
     }
     s.excess.push_back(air.n_sq(below) - n0_sq);
     return s;
+}
+
+double air_peak_below(const Atmosphere& air, double y0, double elevation, double scene_dz,
+                      double ceiling) {
+    auto path = ExactPath::make(air, y0, M_PI / 2 - elevation);
+    MIRAGE_CHECK(path.ok());
+    double end = scene_dz;
+    if (path->hits_ground()) end = std::min(end, path->dz_ground());
+    constexpr int kSamples = 64;
+    double highest = y0, counted = y0;
+    for (int k = 1; k <= kSamples; ++k) {
+        const double y = path->height_at(end * k / kSamples);
+        highest = std::max(highest, y);
+        if (y <= ceiling) counted = highest;
+    }
+    return counted;
 }
 
 std::vector<double> equal_height_boundaries(double top, int count) {

@@ -16,6 +16,9 @@ class Atmosphere;  // atmosphere/exact_path.h
 /// Whether n changes with height anywhere.
 bool air_has_gradient(const Atmosphere& air);
 
+/// The radius of the Earth the air is flattened for (0: flat ground).
+double air_earth_radius(const Atmosphere& air);
+
 /// The height above which n no longer changes (the fitted model's top; +inf for the
 /// exponential profiles).
 double air_constant_above(const Atmosphere& air);
@@ -24,6 +27,14 @@ double air_constant_above(const Atmosphere& air);
 /// n^2 over (heights[k-1], heights[k]) (heights[-1] = 0), the top half-space n^2 at the last
 /// boundary.  Its eta0 is n(0).
 LayerStack air_layers(const Atmosphere& air, const std::vector<double>& heights);
+
+/// The highest point of the exact path from height y0 at `elevation` (rad) over the
+/// horizontal distance [0, scene_dz] (to the ground, if it meets it first), counted only as
+/// far as the path is at or below `ceiling` afterwards: a path that rises above the ceiling
+/// and stays above it to the end gives its highest point before that rise (at least y0).
+/// Sampled at 64 points of the distance.
+double air_peak_below(const Atmosphere& air, double y0, double elevation, double scene_dz,
+                      double ceiling);
 
 /// `count` equal layers from the ground to `top`.
 std::vector<double> equal_height_boundaries(double top, int count);

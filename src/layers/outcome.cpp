@@ -41,8 +41,19 @@ BandOutcome exact_outcome(const Atmosphere& air, double y0, double elevation, do
     out.y = path->height_at(scene_dz);
     out.slope = path->slope_at(scene_dz);
     out.sky = !path->hits_ground() && path->fate() != PathFate::Ducted;
-    const double a = path->asymptotic_slope();
-    out.final_slope = out.sky ? (std::isfinite(a) ? a : out.slope) : 0.0;
+    if (air.earth_radius() > 0.0) {
+        // On the curved Earth the flattened path's slope is against the local horizontal,
+        // which turns by dz / R from the eye's; above the scene the flattened n* keeps
+        // growing with the Earth's term (to the model's top, kilometres up), so the path's
+        // asymptote there is no direction of the scene.  The direction the ray leaves the
+        // scene in, turned to the eye's horizontal, is what the tracer looks the sky up with
+        // (trace/curved_propagator.h).
+        out.final_slope =
+            out.sky ? std::tan(std::atan(out.slope) - scene_dz / air.earth_radius()) : 0.0;
+    } else {
+        const double a = path->asymptotic_slope();
+        out.final_slope = out.sky ? (std::isfinite(a) ? a : out.slope) : 0.0;
+    }
     MIRAGE_CHECK(std::isfinite(out.y) && std::isfinite(out.slope));
     return out;
 }

@@ -14,7 +14,9 @@ class Atmosphere;  // atmosphere/exact_path.h
 /// meets the ground) and its final (asymptotic) slope.
 BandOutcome exact_outcome(const Profile& profile, double y0, double elevation, double scene_dz);
 /// The same in any atmosphere, by its exact path (atmosphere/exact_path.h); a ray trapped in a
-/// duct never reaches the sky, and its final slope is its slope at scene_dz.
+/// duct never reaches the sky, and its final slope is its slope at scene_dz.  On the curved
+/// Earth the final slope is the slope at scene_dz turned from the local horizontal there to
+/// the eye's (by scene_dz / R), the direction the tracer looks the sky up with.
 BandOutcome exact_outcome(const Atmosphere& air, double y0, double elevation, double scene_dz);
 
 /// Angle (rad) between where a model's ray ends and where the exact ray ends, seen from the

@@ -61,7 +61,7 @@ std::vector<std::string> shipped_scenes() {
     for (const auto& e : fs::directory_iterator(fs::path(MIRAGE_SOURCE_DIR) / "scenes")) {
         if (e.path().extension() != ".pov") continue;
         // Real air (a sounding, temperature forms, the curved Earth) is traced by the general
-        // engine; the layer compiler fits the exponential profiles only so far.
+        // engine and banded by equal index steps: real_air_image_diff_test.cpp.
         auto loaded = load_mirage_scene(scene_load_options(e.path().string(), kW, kH, {}));
         if (loaded.ok() && loaded->settings.air) continue;
         names.push_back(e.path().stem().string());

@@ -1,0 +1,171 @@
+// Image-diff test of real air: POV-Ray's render of the bands `mirage compile` writes for the
+// hot road's sounding (scenes/hot_road.pov), against `mirage trace` of the same scene along
+// the general engine's exact paths (0.1 px), on flat ground and on the curved Earth, in the
+// pattern of scene_image_diff_test.cpp: every pixel must find its colour in the other image
+// within the rows the compile report says its band ray is off (its shift and reflection
+// error, + 0.1 px for the tracer, + 1 for point sampling).  What that cannot explain is a
+// defect of the bands, of POV-Ray's handling of them, or of the report.  The check can fail:
+// the bands of the same road with half the sounding's excess temperature leave far more
+// pixels unexplained.
+//
+// Images are kept under build/test_output/real_air_image_diff/<case>/.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../trace/povray_runner.h"
+#include "compile/compile.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
+#include "trace_scene/trace_scene.h"
+
+namespace mirage {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::povray_available;
+using testing::test_dir;
+
+constexpr int kW = 160, kH = 120;
+constexpr double kTraceTolerancePx = 0.1;
+constexpr double kSameColour = 0.1;  // as scene_image_diff_test.cpp
+// Measured at 160x120 (docs/atmospheres.md): 0.036% of the pixels unexplained on flat ground,
+// 0.057% on the curved Earth (edges of posts and of the cars' wheels); the bands of half the
+// excess temperature leave 6.6% on both.  The allowance is scene_image_diff_test.cpp's.
+constexpr double kUnexplainedShare = 0.01;
+
+std::string shell_quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+/// scenes/hot_road.pov copied into `dir` with its sounding; `flat` adds Mirage_Earth_Radius
+/// = 0; `excess_scale` scales every row's temperature above the top row's (30 degC at 10 m).
+std::string hot_road_in(const fs::path& dir, bool flat, double excess_scale) {
+    fs::create_directories(dir);
+    const fs::path scenes = fs::path(MIRAGE_SOURCE_DIR) / "scenes";
+    {
+        std::ifstream in(scenes / "hot_road.csv");
+        std::ofstream out(dir / "hot_road.csv");
+        std::string line;
+        std::getline(in, line);
+        out << line << "\n";
+        std::vector<std::pair<std::string, double>> rows;
+        while (std::getline(in, line)) {
+            const size_t comma = line.find(',');
+            rows.emplace_back(line.substr(0, comma), std::stod(line.substr(comma + 1)));
+        }
+        const double base = rows.back().second;
+        char buf[64];
+        for (const auto& [h, t] : rows) {
+            std::snprintf(buf, sizeof buf, "%.6f", base + excess_scale * (t - base));
+            out << h << "," << buf << "\n";
+        }
+    }
+    std::ifstream in(scenes / "hot_road.pov");
+    std::ofstream out(dir / "hot_road.pov");
+    for (std::string line; std::getline(in, line);) {
+        out << line << "\n";
+        if (flat && line.rfind("#declare Mirage_Sounding", 0) == 0)
+            out << "#declare Mirage_Earth_Radius = 0;\n";
+    }
+    return (dir / "hot_road.pov").string();
+}
+
+Result<Image> trace_png(const std::string& scene, const fs::path& png) {
+    TraceOptions o;
+    o.scene = scene;
+    o.output = png.string();
+    o.width = kW;
+    o.height = kH;
+    o.tolerance_px = kTraceTolerancePx;
+    o.progress = false;
+    auto r = trace_scene(o);
+    if (!r) return r.error();
+    return quantize_srgb8(r->render.image);
+}
+
+struct Check {
+    CompileReport report;
+    ImageComparison plain;
+    RowShiftComparison unexplained;
+};
+
+/// Compiles `scene` into dir/stem, renders it with POV-Ray, compares with `traced`.
+Result<Check> check_bands(const std::string& scene, const fs::path& dir, const std::string& stem,
+                          const Image& traced) {
+    CompileOptions o;
+    o.scene = scene;
+    o.width = kW;
+    o.height = kH;
+    o.out_dir = (dir / stem).string();
+    o.image = (dir / (stem + ".png")).string();
+    o.progress = false;
+    auto report = compile_scene(o);
+    if (!report) return report.error();
+    const std::string command = "cd " + shell_quoted(dir) + " && povray " +
+                                shell_quoted(report->ini_path) + " > " +
+                                shell_quoted(dir / (stem + ".log")) + " 2>&1";
+    if (std::system(command.c_str()) != 0)
+        return make_error("povray failed: see " + (dir / (stem + ".log")).string());
+    auto pov = read_image(o.image);
+    if (!pov) return pov.error();
+    std::vector<int> radius(report->pixel_shift_rows.size());
+    for (size_t i = 0; i < radius.size(); ++i) {
+        const double e = report->pixel_shift_rows[i] + report->pixel_reflection_error_px[i];
+        radius[i] = std::isfinite(e) ? static_cast<int>(std::ceil(e + kTraceTolerancePx)) + 1 : kH;
+    }
+    auto plain = compare_images(*pov, traced, kSameColour);
+    auto shift = compare_within_rows(*pov, traced, radius, kSameColour);
+    if (!plain) return plain.error();
+    if (!shift) return shift.error();
+    if (auto d = difference_image(*pov, traced); d.ok())
+        (void)write_png(*d, (dir / (stem + "_difference.png")).string());
+    (void)write_png(shift->mask, (dir / (stem + "_unexplained.png")).string());
+    return Check{*report, *plain, *shift};
+}
+
+void print(const std::string& what, const Check& c) {
+    std::printf(
+        "%s: %d layers, design p95 %.3g max %.3g px, seen p95 %.3g px, shift p95 %.3g rows; PSNR "
+        "%.2f dB, %lld px over %.2f, %lld px (%.3f%%) unexplained by the report's error\n",
+        what.c_str(), c.report.layers, c.report.p95_error_px, c.report.max_error_px,
+        c.report.p95_seen_error_px, c.report.p95_shift_rows, c.plain.psnr_db,
+        static_cast<long long>(c.plain.pixels_over), kSameColour,
+        static_cast<long long>(c.unexplained.pixels_differing), 100.0 * c.unexplained.share());
+}
+
+class RealAirImageDiff : public ::testing::TestWithParam<bool> {};
+
+TEST_P(RealAirImageDiff, HotRoadBandsMatchTheTracerWithinTheReportedError) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    const bool flat = GetParam();
+    const std::string name = flat ? "flat" : "curved";
+    const fs::path dir = test_dir("real_air_image_diff", name);
+    const std::string scene = hot_road_in(dir / "scene", flat, 1.0);
+    auto traced = trace_png(scene, dir / "trace.png");
+    ASSERT_TRUE(traced.ok()) << traced.message();
+    auto c = check_bands(scene, dir, "bands", *traced);
+    ASSERT_TRUE(c.ok()) << c.message();
+    print("hot road, " + name, *c);
+    EXPECT_EQ(c->report.layout, "gaps");
+    EXPECT_LE(c->unexplained.share(), kUnexplainedShare) << "images and masks in " << dir;
+
+    // The same road with half the excess temperature over the asphalt: its own report is
+    // about as good, and the picture is not the scene's.
+    const std::string wrong = hot_road_in(dir / "half", flat, 0.5);
+    auto w = check_bands(wrong, dir, "half", *traced);
+    ASSERT_TRUE(w.ok()) << w.message();
+    print("hot road, " + name + ", half the excess temperature", *w);
+    EXPECT_GT(w->unexplained.share(), 4.0 * kUnexplainedShare) << "images in " << dir;
+}
+
+INSTANTIATE_TEST_SUITE_P(Ground, RealAirImageDiff, ::testing::Values(true, false),
+                         [](const auto& info) { return info.param ? "Flat" : "CurvedEarth"; });
+
+}  // namespace
+}  // namespace mirage
