@@ -118,6 +118,10 @@ void SceneParser::parse_top_level() {
             if (!parse_top_level_item()) return;
         } catch (const ParseFailure& failure) {
             if (camera || failure.fatal) throw;
+            // At the end of the file there is nothing left to skip to: a statement that fails
+            // there (an '#if' left open, an expression cut short) ends the parse with its
+            // message, or the lenient parse would meet the same failure again for ever.
+            if (tokens_read_ == read && peek(0).is_eof()) throw;
             scene_.skipped.push_back(Skipped{failure.reason, failure.loc});
             recover_statement(balance);
             if (tokens_read_ == read && !peek(0).is_eof()) next();

@@ -29,7 +29,7 @@ namespace mirage::fuzz {
 /// what they guard is the same.
 inline ParseLimits fuzz_limits() {
     ParseLimits l;
-    l.max_loop_passes = 2000;
+    l.max_loop_passes = 200;
     l.max_array_elements = 10000;
     l.max_total_array_elements = 100000;
     l.max_objects = 5000;
