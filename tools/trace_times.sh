@@ -11,6 +11,7 @@
 #   tools/trace_times.sh                                  # the three scenes, 640x480 and 1920x1080
 #   tools/trace_times.sh "scenes/desert.pov" "640x480"    # one scene, one size
 #   RUNS=5 MIRAGE=/path/to/mirage tools/trace_times.sh
+#   REFERENCE=no tools/trace_times.sh                     # without the reference sampling's runs
 set -eu
 scenes=${1:-"scenes/desert.pov scenes/road.pov scenes/looming.pov"}
 sizes=${2:-"640x480 1920x1080"}
@@ -51,7 +52,9 @@ trace_median() {
 }
 
 reference=no
-if "$mirage" trace --help 2>/dev/null | grep -q -- --reference-sampling; then reference=yes; fi
+if [ "${REFERENCE:-yes}" = yes ] && "$mirage" trace --help 2>/dev/null | grep -q -- --reference-sampling; then
+    reference=yes
+fi
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'),"\
     "load average $(cut -d' ' -f1-3 /proc/loadavg); median of $runs runs; seconds, wall / processor"

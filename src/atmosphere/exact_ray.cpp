@@ -177,50 +177,69 @@ void setup_superior(ExactRay& r) {
 
 // setup_inferior with the origin's constants, and each transcendental function evaluated
 // once: the same quantities, for many rays from one height.
-void setup_inferior_shared(ExactRay& r, const ExactRayOrigin& o) {
+// `ordinary`: E and P between 1e-150 and 1e150 and w below 1e150 (else ln_P and ln_w are
+// set).
+void setup_inferior_shared(ExactRay& r, const ExactRayOrigin& o, bool ordinary) {
     const double alpha = r.profile.alpha;
-    // Where E and P are ordinary numbers (not stiff alpha y0, not extreme P), w, its square
-    // and k2 are formed directly; otherwise in log space as setup_inferior does.
-    const bool direct = o.E > 1e-150 && r.P > 1e-150 && r.P < 1e150;
     double ln_k2 = 0.0;
+    double log1p_rho = 0.0;  // ln(1 + rho), rho = P / k in [0, 1)
     if (r.P == 0.0) {
         r.log1p_w2 = 0.0;
         r.asinh_w = 0.0;
         ln_k2 = -alpha * r.y0;
         r.k2 = o.E0;
-    } else if (r.ln_w >= 0.0) {
-        double inv_w2 = 0.0;  // w^-2
-        if (direct) {
-            const double inv_w = o.E / r.P;
-            inv_w2 = inv_w * inv_w;
+    } else if (ordinary) {
+        // Ordinary numbers (w^2 finite): two logarithms.
+        // asinh(w) = ln(w + s) = ln(1 + w + w^2 / (1 + s)), s = sqrt(1 + w^2), without
+        // cancellation for small w; ln(1 + rho) = ln((s + w) / s) = asinh(w) - ln(1 + w^2) / 2,
+        // to the absolute accuracy the coefficients need.  ln k2 = -alpha y0 + ln(1 + w^2)
+        // loses at most (alpha y0 + ln(1 + w^2)) ulp, which is the rounding of y_turn's scale.
+        const double w = r.P / o.E;
+        const double w2 = w * w;
+        const double s = std::sqrt(1.0 + w2);
+        if (w >= 0.5) {
+            // No cancellation to avoid (1 + w^2 >= 1.25, w + s >= 1.6): the faster logarithm.
+            r.log1p_w2 = std::log(1.0 + w2);
+            r.asinh_w = std::log(w + s);
         } else {
-            inv_w2 = std::exp(-2.0 * r.ln_w);
+            r.log1p_w2 = std::log1p(w2);
+            r.asinh_w = std::log1p(w + w2 / (1.0 + s));
         }
+        ln_k2 = 2.0 * o.ln_E + r.log1p_w2;
+        r.k2 = o.E0 * (1.0 + w2);
+        log1p_rho = r.asinh_w - 0.5 * r.log1p_w2;
+    } else if (r.ln_w >= 0.0) {
+        // Extreme numbers (stiff alpha y0, extreme P): in log space as setup_inferior does.
+        const double inv_w2 = std::exp(-2.0 * r.ln_w);  // w^-2
         const double t = std::log1p(inv_w2);
         ln_k2 = 2.0 * r.ln_P + t;
         r.log1p_w2 = 2.0 * r.ln_w + t;
         // asinh(w) = ln w + ln(1 + sqrt(1 + w^-2)).
         r.asinh_w = r.ln_w + std::log(1.0 + std::sqrt(1.0 + inv_w2));
-        r.k2 = direct ? r.P * r.P * (1.0 + inv_w2) : std::exp(ln_k2);
+        r.k2 = std::exp(ln_k2);
     } else {
-        const double w = direct ? r.P / o.E : std::exp(r.ln_w);
-        r.log1p_w2 = std::log1p(w * w);
-        r.asinh_w = std::asinh(w);
+        const double wl = std::exp(r.ln_w);
+        r.log1p_w2 = std::log1p(wl * wl);
+        r.asinh_w = std::asinh(wl);
         ln_k2 = -alpha * r.y0 + r.log1p_w2;
-        r.k2 = direct ? o.E0 * (1.0 + w * w) : std::exp(ln_k2);
+        r.k2 = std::exp(ln_k2);
     }
     r.q = ln_k2 > -700.0 ? std::sqrt(r.k2) : std::exp(0.5 * ln_k2);
     r.c = r.gamma * r.q;
-    const double rho =
-        r.P == 0.0 ? 0.0 : (ln_k2 > -700.0 ? r.P / r.q : std::exp(r.ln_P - 0.5 * ln_k2));
-    // ln(1 + rho) for rho in [0, 1): the coefficients need it to an absolute accuracy only.
-    const double log1p_rho = std::log(1.0 + rho);
+    if (r.P != 0.0 && !ordinary) {
+        const double rho = ln_k2 > -700.0 ? r.P / r.q : std::exp(r.ln_P - 0.5 * ln_k2);
+        // ln(1 + rho) for rho in [0, 1): the coefficients need it to an absolute accuracy only.
+        log1p_rho = std::log(1.0 + rho);
+    }
     const double ln_1p_rho = log1p_rho - kLn2;
     const double ln_1m_rho = -(r.log1p_w2 + log1p_rho) - kLn2;
     r.ln_coef_lo = r.sg > 0 ? ln_1m_rho : ln_1p_rho;
     r.ln_coef_hi = r.sg > 0 ? ln_1p_rho : ln_1m_rho;
 
-    r.y_turn = r.ln_w >= 0.0 ? -ln_k2 / alpha : r.y0 - r.log1p_w2 / alpha;
+    // y_turn = y0 - ln(1 + w^2) / alpha; for w >= 1 from ln k2 (-ln k2 / alpha), which does
+    // not swamp a far turning point's height with y0.
+    const bool steep = ordinary ? r.P >= o.E : r.ln_w >= 0.0;
+    r.y_turn = steep ? -ln_k2 / alpha : r.y0 - r.log1p_w2 / alpha;
     r.dz_turn = -r.sg * r.asinh_w / r.c;
     const bool vertex_in_air = ln_k2 < 0.0;
     if (r.sg < 0) {
@@ -387,6 +406,8 @@ Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad)
         return r;
     }
     const double alpha = profile.alpha;
+    r.slope_scale = profile.eta1 / r.beta;
+    r.curvature_scale = r.s * alpha * profile.eta1 * profile.eta1 / (2.0 * r.beta * r.beta);
     r.P = r.eta_p * std::fabs(r.cos_i) / profile.eta1;
     r.ln_P = std::log(r.P);
     r.ln_E = -0.5 * alpha * y0;
@@ -418,12 +439,40 @@ Result<ExactRayOrigin> make_exact_ray_origin(const Profile& profile, double y0) 
     o.E0 = std::exp(-alpha * y0);
     o.one_m_E = -std::expm1(o.ln_E);
     o.root_1m_E0 = std::sqrt(-std::expm1(-alpha * y0));
+    if (profile.eta1 != 0.0) {
+        o.p_scale = o.eta_p / profile.eta1;
+        o.gamma_scale = alpha * profile.eta1 / (2.0 * o.eta_p);
+    }
     return o;
 }
 
 ExactRay make_exact_ray(const ExactRayOrigin& o, double cos_i, double sin_i) {
-    MIRAGE_CHECK(sin_i > 0.0 && std::isfinite(cos_i) && std::isfinite(sin_i));
     ExactRay r;
+    make_exact_ray(o, cos_i, sin_i, r);
+    return r;
+}
+
+void make_exact_ray(const ExactRayOrigin& o, double cos_i, double sin_i, ExactRay& r) {
+    MIRAGE_CHECK(sin_i > 0.0 && std::isfinite(cos_i) && std::isfinite(sin_i));
+    // Every field, those a class leaves alone at their defaults (field by field: a copy of a
+    // whole default ray costs more than the ray's arithmetic).
+    r.P = 0.0;
+    r.ln_P = 0.0;
+    r.ln_E = 0.0;
+    r.E = 1.0;
+    r.ln_w = 0.0;
+    r.gamma = 0.0;
+    r.k2 = 0.0;
+    r.q = 0.0;
+    r.c = 0.0;
+    r.slope_scale = 0.0;
+    r.curvature_scale = 0.0;
+    r.asinh_w = 0.0;
+    r.log1p_w2 = 0.0;
+    r.ln_coef_lo = 0.0;
+    r.ln_coef_hi = 0.0;
+    r.theta = 0.0;
+    r.vertex_form = false;
     r.profile = o.profile;
     r.y0 = o.y0;
     r.i = kNaN;  // the ray is given by its cosines, which the closed forms use
@@ -436,22 +485,30 @@ ExactRay make_exact_ray(const ExactRayOrigin& o, double cos_i, double sin_i) {
     if (r.s == 0 || o.profile.eta1 == 0.0) {
         r.s = 0;
         classify_straight(r);
-        return r;
+        return;
     }
-    const double alpha = o.profile.alpha;
-    r.P = r.eta_p * std::fabs(cos_i) / o.profile.eta1;
-    r.ln_P = std::log(r.P);
+    const double e1 = o.profile.eta1;
+    r.slope_scale = e1 / r.beta;
+    r.curvature_scale = r.s * o.profile.alpha * e1 * e1 / (2.0 * r.beta * r.beta);
+    r.P = o.p_scale * std::fabs(cos_i);
     r.ln_E = o.ln_E;
     r.E = o.E;
-    r.ln_w = r.ln_P - r.ln_E;
-    r.gamma = alpha * o.profile.eta1 / (2.0 * r.beta);
+    // ln P and ln w only where the closed forms need them: for extreme numbers.
+    const bool ordinary =
+        o.E > 1e-150 && r.P > 1e-150 && r.P < 1e150 && r.P < 1e150 * o.E;  // w < 1e150
+    r.ln_P = kNaN;
+    r.ln_w = kNaN;
+    if (r.s > 0 ? !ordinary : !(o.E > 1e-150)) {
+        r.ln_P = std::log(r.P);
+        r.ln_w = r.ln_P - r.ln_E;
+    }
+    r.gamma = o.gamma_scale / sin_i;
     if (r.s > 0) {
-        setup_inferior_shared(r, o);
+        setup_inferior_shared(r, o, ordinary);
     } else {
         setup_superior_shared(r, o);
     }
     MIRAGE_CHECK(!std::isnan(r.k2) && !std::isnan(r.c) && !std::isnan(r.dz_ground));
-    return r;
 }
 
 double height_at(const ExactRay& r, double dz) {
@@ -503,10 +560,9 @@ double curvature_at_height(const ExactRay& r, double y) {
 PathState state_at(const ExactRay& r, double dz) {
     PathState st;
     const double alpha = r.profile.alpha;
-    const double e1 = r.profile.eta1;
     // y'' = s alpha eta1^2 exp(-alpha y) / (2 beta^2), with exp(-alpha y) known at the start
     // (E^2), the turning point (k2) and the ground (1).
-    const double curvature_scale = r.s * alpha * e1 * e1 / (2.0 * r.beta * r.beta);
+    const double curvature_scale = r.curvature_scale;
     if (r.s != 0 && dz == 0.0) {
         st.y = r.y0;
         st.slope = r.cos_i / r.sin_i;
@@ -531,12 +587,15 @@ PathState state_at(const ExactRay& r, double dz) {
         // scale q tanh(u) and exp(-alpha y) = k2 sech^2(u): all three from exp(-2|u|).
         const double u = r.c * dz + r.sg * r.asinh_w;
         const double au = std::fabs(u);
+        // ln(1 + e2) to an absolute accuracy of an ulp of 1 is all the height needs (it is
+        // added to |u|): the faster logarithm rather than log1p.
         const double e2 = std::exp(-2.0 * au);
-        const double ln_cosh = au - kLn2 + std::log1p(e2);
+        const double ln_cosh = au - kLn2 + std::log(1.0 + e2);
         st.y = r.y0 + (2.0 / alpha) * (ln_cosh - 0.5 * r.log1p_w2);
-        const double th = (1.0 - e2) / (1.0 + e2);
-        st.slope = (e1 / r.beta) * r.q * (u < 0.0 ? -th : th);
-        const double sech2 = 4.0 * e2 / ((1.0 + e2) * (1.0 + e2));
+        const double inv = 1.0 / (1.0 + e2);
+        const double th = (1.0 - e2) * inv;
+        st.slope = r.slope_scale * r.q * (u < 0.0 ? -th : th);
+        const double sech2 = 4.0 * e2 * inv * inv;
         st.curvature = curvature_scale * r.k2 * sech2;
         return st;
     }
@@ -546,7 +605,7 @@ PathState state_at(const ExactRay& r, double dz) {
         const double v = r.c * dz - r.sg * r.theta;
         const double cv = std::cos(v), sv = std::sin(v);
         st.y = r.y_turn + (2.0 / alpha) * std::log(cv);
-        st.slope = -(e1 / r.beta) * r.q * sv / cv;
+        st.slope = -r.slope_scale * r.q * sv / cv;
         st.curvature = curvature_scale * r.k2 / (cv * cv);
         return st;
     }
@@ -555,7 +614,7 @@ PathState state_at(const ExactRay& r, double dz) {
         // (slope_at's) and exp(-alpha y) = E^2 / F^2.
         const double x = r.c * dz;
         const double sigma = r.q;
-        const double scale = e1 / r.beta;
+        const double scale = r.slope_scale;
         const bool near_form = r.sg > 0 ? x < 1.0 : sigma < 0.5 * r.P;
         if (near_form) {
             // F = cosh x + sg P gamma dz sinhc x; dF = sg P cosh x + sigma^2 gamma dz sinhc x;

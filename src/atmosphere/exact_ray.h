@@ -51,14 +51,19 @@ struct ExactRay {
     double eta_p = 1.0;  // eta(y0)
     double beta = 1.0;   // eta_p sin i, invariant along the ray
     double P = 0.0;      // eta_p |cos i| / eta1
-    double ln_P = 0.0;   // ln P (-inf for a level ray)
+    double ln_P =
+        0.0;  // ln P (-inf for a level ray; from an origin's constants NaN where not needed)
     double ln_E = 0.0;   // -alpha y0 / 2
     double E = 1.0;      // exp(-alpha y0 / 2)
-    double ln_w = 0.0;   // ln(P / E)
+    double ln_w = 0.0;   // ln(P / E) (as ln_P)
     double gamma = 0.0;  // alpha eta1 / (2 beta), 1/m
     double k2 = 0.0;     // exp(-alpha y0) + s P^2 (reference column k2)
     double q = 0.0;      // sqrt(|k2|): k (inferior), kappa (trapped), sigma (escaping)
     double c = 0.0;      // gamma q, 1/m
+    // Of every point's height, slope and curvature (state_at): eta1 / beta and
+    // s alpha eta1^2 / (2 beta^2), so that y'' = curvature_scale exp(-alpha y).
+    double slope_scale = 0.0;
+    double curvature_scale = 0.0;
 
     // Class-specific constants of the stable forms.
     double asinh_w = 0.0;      // inferior: asinh(w)
@@ -88,14 +93,16 @@ Result<ExactRay> make_exact_ray(const Profile& profile, double y0, double i_rad)
 /// depend on the height only (built once for a frame's camera rays, which start at the eye).
 struct ExactRayOrigin {
     Profile profile;
-    double y0 = 0.0;          // start height, m
-    double eta_p = 1.0;       // eta(y0)
-    double eta_inf = 1.0;     // eta(infinity)
-    double ln_E = 0.0;        // -alpha y0 / 2
-    double E = 1.0;           // exp(-alpha y0 / 2)
-    double E0 = 1.0;          // exp(-alpha y0)
-    double one_m_E = 0.0;     // 1 - E, without cancellation
-    double root_1m_E0 = 0.0;  // sqrt(1 - exp(-alpha y0)), without cancellation
+    double y0 = 0.0;           // start height, m
+    double eta_p = 1.0;        // eta(y0)
+    double eta_inf = 1.0;      // eta(infinity)
+    double ln_E = 0.0;         // -alpha y0 / 2
+    double E = 1.0;            // exp(-alpha y0 / 2)
+    double E0 = 1.0;           // exp(-alpha y0)
+    double one_m_E = 0.0;      // 1 - E, without cancellation
+    double root_1m_E0 = 0.0;   // sqrt(1 - exp(-alpha y0)), without cancellation
+    double p_scale = 0.0;      // eta_p / eta1: a ray's P is p_scale |cos i|
+    double gamma_scale = 0.0;  // alpha eta1 / (2 eta_p): a ray's gamma is gamma_scale / sin i
 };
 
 /// The shared constants of rays from height y0 (finite, >= 0); the profile must be valid.
@@ -107,6 +114,11 @@ Result<ExactRayOrigin> make_exact_ray_origin(const Profile& profile, double y0);
 /// trigonometric functions and with the origin's constants computed once.  Its field i is
 /// left NaN: the closed forms use cos_i and sin_i.
 ExactRay make_exact_ray(const ExactRayOrigin& origin, double cos_i, double sin_i);
+
+/// The same into `ray` (every field written): for many rays in a row, without a copy of the
+/// ray.  Where the origin's numbers are ordinary (exp(-alpha y0 / 2) and P between 1e-150 and
+/// 1e150) an inferior ray takes two logarithms and no ln P; ln_P and ln_w are then NaN.
+void make_exact_ray(const ExactRayOrigin& origin, double cos_i, double sin_i, ExactRay& ray);
 
 /// Height at horizontal distance dz >= 0 (meaningful up to dz_ground).
 double height_at(const ExactRay& ray, double dz);

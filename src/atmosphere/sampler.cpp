@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "atmosphere/chord_bound.h"
 #include "util/check.h"
@@ -289,6 +291,23 @@ double departure_distance(const ExactRay& ray, double d) {
     return x / ray.c;
 }
 
+// The smallest power of two above `length` (> 0): 2^e for length = m 2^e, m in [0.5, 1), as
+// frexp says; from the bits for a normal double.
+double grid_size(double length) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &length, sizeof bits);
+    const std::uint64_t biased = (bits >> 52) & 0x7ff;
+    if (biased == 0 || biased >= 0x7fe) {
+        int e = 0;
+        std::frexp(length, &e);
+        return std::ldexp(1.0, e);
+    }
+    const std::uint64_t power = (biased + 1) << 52;
+    double size = 0.0;
+    std::memcpy(&size, &power, sizeof size);
+    return size;
+}
+
 // A point of the path: its height, slope and curvature (NaN until needed where marked).
 struct PathPoint {
     double dz = 0.0;
@@ -326,9 +345,7 @@ class NearSampler {
     void piece(const PathPoint& a, const PathPoint& b) {
         const double length = b.dz - a.dz;
         if (!(length > 0.0)) return;
-        int e = 0;
-        std::frexp(length, &e);
-        const double size = std::ldexp(1.0, e);
+        const double size = grid_size(length);
         if (obstacles_ && b.dz == ground_end_) {
             ground_node(a, b, size);
         } else {
@@ -526,9 +543,13 @@ class NearSampler {
 }  // namespace
 
 RegionTest::RegionTest(const PathRegion& region) : region_(region) {
-    for (int k = 0; k < 2; ++k) {
-        const double sl = region.lower[k].slope, su = region.upper[k].slope;
+    // Only the lines in use (meets() reads no others).
+    for (int k = 0; k < region.lower_count; ++k) {
+        const double sl = region.lower[k].slope;
         inv_lower_[k] = sl != 0.0 ? 1.0 / sl : 0.0;
+    }
+    for (int k = 0; k < region.upper_count; ++k) {
+        const double su = region.upper[k].slope;
         inv_upper_[k] = su != 0.0 ? 1.0 / su : 0.0;
     }
 }
@@ -632,16 +653,12 @@ void sample_path_near(const ExactRay& ray, const SampleSettings& st, const PathO
     path.dz_turn = vertex_ahead ? ray.dz_turn : 0.0;
     const bool escapes = !ground && has_asymptote(ray);
     if (escapes && st.max_dz >= kMaxSampleDistance && obstacles && !sampler.wedge_may_meet()) {
-        // Nothing lies near the path anywhere, its straight end included: it is kept as its
-        // start, one more point of it (its turning point, else where its straight end
-        // begins, unless that is the start) and its straight end, none of them to be tested (the
-        // length is of no use either: nothing is met).
-        const double dz = vertex_ahead ? ray.dz_turn : straight_end_start(ray, st, 0.0);
-        const double y = vertex_ahead ? ray.y_turn : height_at(ray, dz);
-        if (dz > 0.0) {  // (the straight end may begin at the start: no second point)
-            path.points.push_back({dz, y});
-            path.clear_length.push_back(std::sqrt(dz * dz + (y - ray.y0) * (y - ray.y0)));
-        }
+        // Nothing lies near the path anywhere, its straight end included: all that counts is
+        // its final direction (for the sky), so it is kept as its start and a straight end of
+        // the asymptotic slope from there, not to be tested.  That line lies in the wedge too
+        // (between the start's slope and the asymptote's, from the start), so the path's
+        // polyline still meets nothing; the distance where the asymptote keeps the tolerance
+        // and the path's height there are not needed.
         path.end = PathEnd::Straight;
         path.end_slope = asymptotic_slope(ray);
         path.end_clear = true;

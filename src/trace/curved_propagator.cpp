@@ -179,11 +179,12 @@ class SceneObstacles final : public PathObstacles {
             crossings_.clear();
             accel_.plane_crossings(origin_, heading_, crossings_);
         }
-        if (crossings_.empty()) return false;
-        const RegionTest test(region);
+        // The region's test is prepared at the first box its stretch of dz overlaps.
+        std::optional<RegionTest> test;
         for (const SceneAccel::Crossing& c : crossings_) {
             if (c.dz_hi < region.dz_lo || c.dz_lo > region.dz_hi) continue;
-            if (test.meets(c.dz_lo, c.dz_hi, c.y_lo, c.y_hi)) return true;
+            if (!test) test.emplace(region);
+            if (test->meets(c.dz_lo, c.dz_hi, c.y_lo, c.y_hi)) return true;
         }
         return false;
     }
@@ -375,7 +376,7 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
     }
     const ExactRayOrigin& o = ray_origin(p, std::max(origin.y, 0.0));
     if (bends_at_most(o, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad)) return false;
-    cp.ray = make_exact_ray(o, cos_i, sin_i);
+    make_exact_ray(o, cos_i, sin_i, cp.ray);
     cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
     SampleSettings ss;
     ss.tolerance_rad = settings.tolerance_rad;

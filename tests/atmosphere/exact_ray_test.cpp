@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <set>
 #include <string>
@@ -328,11 +329,63 @@ TEST(ExactRay, ARayFromItsOriginsConstantsIsTheRayOfItsAngle) {
             const double dz = reach * j / 10.0;
             EXPECT_NEAR(height_at(q, dz), height_at(r, dz), 1e-9 * (1.0 + r.y0))
                 << ray_class_name(r.ray_class) << " y0=" << r.y0 << " dz=" << dz;
+            // The per-ray scales of the slope and the curvature (state_at's) against the
+            // ray's own slope and curvature, as for rays built from their angle.
+            const PathState a = state_at(q, dz);
+            const double slope = slope_at(q, dz);
+            const bool on_ground = q.hits_ground && dz == q.dz_ground;
+            const double curvature = curvature_at_height(q, on_ground ? 0.0 : height_at(q, dz));
+            EXPECT_NEAR(a.slope, slope, 1e-9 * std::fabs(slope) + 1e-13)
+                << ray_class_name(r.ray_class) << " y0=" << r.y0 << " dz=" << dz;
+            EXPECT_NEAR(a.curvature, curvature, 1e-9 * std::fabs(curvature) + 1e-300)
+                << ray_class_name(r.ray_class) << " y0=" << r.y0 << " dz=" << dz;
         }
     }
     EXPECT_FALSE(make_exact_ray_origin(*preset_profile("paper"), -1.0).ok());
     EXPECT_EQ(make_exact_ray_origin(*preset_profile("paper"), 1e308).message(),
               "start height y0 = 1e+308 m must be from 0 to 1e+09 m");
+}
+
+// Bit for bit, NaN equal to NaN.
+bool same(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
+}
+
+TEST(ExactRay, ARayBuiltInPlaceIsTheRayReturnedWhateverTheStorageHeld) {
+    const std::vector<ExactRay> rays = random_rays(7, 100);
+    ExactRay reused = rays.back();  // storage last holding a ray of another profile and class
+    int ordinary = 0, extreme = 0;
+    for (const ExactRay& r : rays) {
+        auto o = make_exact_ray_origin(r.profile, r.y0);
+        ASSERT_TRUE(o.ok());
+        const ExactRay q = make_exact_ray(*o, r.cos_i, r.sin_i);
+        make_exact_ray(*o, r.cos_i, r.sin_i, reused);
+        const double a[] = {q.y0,      q.cos_i,    q.sin_i,       q.eta_p,
+                            q.beta,    q.P,        q.ln_P,        q.ln_E,
+                            q.E,       q.ln_w,     q.gamma,       q.k2,
+                            q.q,       q.c,        q.slope_scale, q.curvature_scale,
+                            q.asinh_w, q.log1p_w2, q.ln_coef_lo,  q.ln_coef_hi,
+                            q.theta,   q.y_turn,   q.dz_turn,     q.dz_ground};
+        const double b[] = {
+            reused.y0,      reused.cos_i,    reused.sin_i,       reused.eta_p,
+            reused.beta,    reused.P,        reused.ln_P,        reused.ln_E,
+            reused.E,       reused.ln_w,     reused.gamma,       reused.k2,
+            reused.q,       reused.c,        reused.slope_scale, reused.curvature_scale,
+            reused.asinh_w, reused.log1p_w2, reused.ln_coef_lo,  reused.ln_coef_hi,
+            reused.theta,   reused.y_turn,   reused.dz_turn,     reused.dz_ground};
+        for (std::size_t k = 0; k < std::size(a); ++k) EXPECT_TRUE(same(a[k], b[k])) << k;
+        EXPECT_EQ(reused.ray_class, q.ray_class);
+        EXPECT_EQ(reused.turn_kind, q.turn_kind);
+        EXPECT_EQ(reused.sg, q.sg);
+        EXPECT_EQ(reused.s, q.s);
+        EXPECT_EQ(reused.vertex_form, q.vertex_form);
+        EXPECT_EQ(reused.hits_ground, q.hits_ground);
+        // Inferior rays of ordinary numbers take no ln P; the others keep it.
+        if (q.s > 0) ++(std::isnan(q.ln_P) ? ordinary : extreme);
+    }
+    // Both forms of the inferior constants are exercised (stiff alpha y0 among the profiles).
+    EXPECT_GT(ordinary, 50);
+    EXPECT_GT(extreme, 5);
 }
 
 TEST(ExactRay, SuperiorRaysFromFarAboveTheGradientStayFiniteAndStraight) {

@@ -90,7 +90,9 @@ TEST(TraceScene, AnAtmosphereBendsTheRaysAndItsToleranceIsTheScenes) {
     EXPECT_EQ(traced->mode, PathMode::PerRay);
     EXPECT_EQ(traced->atmosphere, "paper (inferior)");
     EXPECT_DOUBLE_EQ(traced->tolerance_px, 0.5);  // Mirage_Tolerance
-    EXPECT_GT(traced->render.stats.segments_per_ray(), 2.0);
+    // Straight rays are one segment each; curved ones that pass near the spheres or reach the
+    // sand take several (a sky ray with nothing near it is one: its asymptote).
+    EXPECT_GT(traced->render.stats.segments_per_ray(), 1.2);
     TraceOptions o = options(scene_path("desert"), 64, 48);
     o.tolerance_px = 0.1;
     auto tight = trace_scene(o);
@@ -122,7 +124,7 @@ TEST(TraceScene, SameBytesWithOneAndTwoThreads) {
             auto traced = trace_scene(o);
             ASSERT_TRUE(traced.ok()) << traced.message();
             EXPECT_EQ(traced->render.stats.threads, threads);
-            EXPECT_GT(traced->render.stats.segments_per_ray(), 2.0);
+            EXPECT_GT(traced->render.stats.segments_per_ray(), 1.2);  // curved, not straight
             bytes[threads - 1] = read_bytes(o.output);
         }
         EXPECT_GT(bytes[0].size(), 1000u);
