@@ -181,15 +181,21 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.max_trace_level = design.max_trace_level;
     for (const auto& l : design.left_out) rep.left_out.push_back(l);
     for (const auto& w : design.warnings) rep.warnings.push_back(w);
-    const std::vector<double> err = stack.boundaries() > 0
-                                        ? design_errors(ctx, rendered, centres, &rep.max_crossings)
-                                        : std::vector<double>(centres.size(), 0.0);
-    summarize_design_errors(err, centres, st.tolerance_px, rep);
+    // (With many origins the design's errors are the check's at the pixel centres, below:
+    // the errors at the scene's edge are angles seen from one eye.)
+    if (!ctx.many_origins) {
+        const std::vector<double> err =
+            stack.boundaries() > 0 ? design_errors(ctx, rendered, centres, &rep.max_crossings)
+                                   : std::vector<double>(centres.size(), 0.0);
+        summarize_design_errors(err, centres, st.tolerance_px, rep);
+    }
     clock.done("design");
 
     // The layers reach as far as the camera's rays still meet a boundary before they leave
     // through the top or reach the ground, and at least past the scene: no farther.
-    const double reach = layers_reach(ctx, rendered, centres);
+    const double reach = ctx.many_origins
+                             ? many_origins_reach(ctx, rendered, centres, &rep.max_crossings)
+                             : layers_reach(ctx, rendered, centres);
     rep.layers_extent = reach;
     const int k_cam = stack.layer_at(ctx.eye_y);
     rep.below_camera = k_cam;
@@ -206,6 +212,11 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                                    "reaches higher");
         rep.left_out.push_back("the layers beyond " + sig(reach, 4) +
                                " units from the camera: every camera ray has left them by then");
+    }
+    if (ctx.many_origins && !(rep.layers > 0)) {
+        // No layers: nothing bends, and no pixel errs.
+        summarize_design_errors(std::vector<double>(centres.size(), 0.0), centres, st.tolerance_px,
+                                rep);
     }
     const fs::path dir =
         opt.out_dir.empty() ? fs::path("build/render") / rep.name : fs::path(opt.out_dir);
@@ -225,9 +236,13 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             std::to_string(opt.width) + "x" + std::to_string(opt.height) +
             ", written by mirage compile.",
         "Atmosphere: " + rep.atmosphere + "; " + rep.mode + " layers.",
-        "Error over the " + std::to_string(rep.pixels) + " pixel centres: p50 " +
-            sig(rep.p50_error_px, 3) + " px, p95 " + sig(rep.p95_error_px, 3) + " px, max " +
-            sig(rep.max_error_px, 3) + " px (tolerance " + sig(rep.tolerance_px, 3) + " px).",
+        ctx.many_origins
+            ? "The camera's rays start at different points: every pixel's error, from its own "
+              "origin, is in report.json (tolerance " +
+                  sig(rep.tolerance_px, 3) + " px)."
+            : "Error over the " + std::to_string(rep.pixels) + " pixel centres: p50 " +
+                  sig(rep.p50_error_px, 3) + " px, p95 " + sig(rep.p95_error_px, 3) + " px, max " +
+                  sig(rep.max_error_px, 3) + " px (tolerance " + sig(rep.tolerance_px, 3) + " px).",
         "Do not edit: run mirage compile again."};
     const EmittedFiles files =
         emit_files(ctx, stack, reach, abs_dir.string(), rep.image_path, header);
@@ -244,7 +259,12 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         ps.width = rays.grid_width();
         ps.height = rays.grid_height();
         ps.eye = ctx.camera.location;
-        ps.camera_y = ctx.eye_y;
+        ps.camera_y = ctx.reference_y(rendered);
+        if (ctx.many_origins) {
+            ps.origins = &rays.origin;
+            ps.footprint = ctx.footprint;
+            ps.far = ctx.extent;
+        }
         ps.layers = {ctx.camera.location.x - reach, ctx.camera.location.x + reach,
                      ctx.camera.location.z - reach, ctx.camera.location.z + reach};
         // The exact paths a twentieth of a pixel from the truth: errors read to that.
@@ -256,6 +276,10 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             check_pixels(rendered, ctx.profile, ctx.scene, *ctx.accel, object_query(*ctx.accel),
                          rays.direction, rays.pixel_rad, cut_off, ps);
         summarize_check(pc, rays, st.tolerance_px, rep);
+        if (ctx.many_origins) {
+            std::vector<double> err(rep.pixel_error_px.begin(), rep.pixel_error_px.end());
+            summarize_design_errors(err, centres, st.tolerance_px, rep);
+        }
     } else {
         const size_t n = static_cast<size_t>(opt.width) * opt.height;
         rep.pixel_error_px.assign(n, 0.0f);

@@ -143,6 +143,180 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     return p;
 }
 
+// With many origins: where a ray ends as a point (a hit, or `far` along its final direction
+// from its origin), and the length of path that led there.
+struct EndPoint {
+    glm::dvec3 point{0.0};
+    double length = 0.0;
+};
+
+EndPoint end_point(const glm::dvec3& origin, const RayEnd& e, double far) {
+    if (e.hit) return {e.point, e.length};
+    return {origin + far * e.direction, far};
+}
+
+// The distance between two end points across the exact ray's direction of arrival there, in
+// pixels of the footprint at the exact end's path length (plus `travelled` before the start).
+double across_px(const PixelFootprint& fp, const glm::dvec3& exact_direction, const EndPoint& band,
+                 const EndPoint& exact, double travelled) {
+    const glm::dvec3 v = band.point - exact.point;
+    const double along = glm::dot(v, exact_direction);
+    const double across = std::sqrt(std::max(0.0, glm::dot(v, v) - along * along));
+    const double unit = fp.distance + fp.angle_rad * (travelled + exact.length);
+    return unit > 0.0 ? across / unit : (across > 0.0 ? kInf : 0.0);
+}
+
+// The band ray from an origin that may lie below the ground: straight there (the bottom
+// layer's index, the ground's) to the first surface or up to the ground, then through the
+// layers.
+RayEnd band_end_from(const LayerStack& stack, const ObjectQuery& objects, double camera_y,
+                     const glm::dvec3& origin, const glm::dvec3& dir, const HorizontalBox& box) {
+    if (origin.y >= 0.0) return band_end(stack, objects, camera_y, origin, dir, box);
+    const double below = dir.y > 0.0 ? -origin.y / dir.y : kInf;
+    RayEnd e;
+    if (auto h = objects(origin, dir, below)) {
+        e.hit = true;
+        e.point = origin + h->t * dir;
+        e.direction = dir;
+        e.normal = glm::dot(h->normal, dir) > 0.0 ? -h->normal : h->normal;
+        e.primitive = h->id;
+        e.length = h->t;
+        return e;
+    }
+    if (!std::isfinite(below)) {
+        e.direction = dir;
+        return e;
+    }
+    glm::dvec3 at = origin + below * dir;
+    at.y = 0.0;
+    e = band_end(stack, objects, camera_y, at, dir, box);
+    e.length += below;
+    return e;
+}
+
+struct OriginEnds {
+    bool cut_off = false;
+    EndPoint band, exact;
+    double camera_error_px = 0.0, reflection_error_px = 0.0;
+};
+
+OriginEnds origin_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
+                       const ObjectQuery& objects, const CurvedPropagator& exact,
+                       const PixelCheckSettings& s, const glm::dvec3& origin,
+                       const glm::dvec3& dir) {
+    RayEnd b = band_end_from(rendered, objects, s.camera_y, origin, dir, s.layers);
+    RayEnd e = exact_end(exact, accel, origin, dir, 0.0);
+    OriginEnds p;
+    p.cut_off = b.cut_off;
+    p.band = end_point(origin, b, s.far);
+    p.exact = end_point(origin, e, s.far);
+    p.camera_error_px = across_px(s.footprint, e.direction, p.band, p.exact, 0.0);
+    double travelled = 0.0, weight = 1.0;
+    for (int bounce = 0;
+         bounce < s.max_bounces && b.hit && e.hit && b.primitive >= 0 && b.primitive == e.primitive;
+         ++bounce) {
+        weight *= reflection_weight(scene, b.primitive);
+        if (weight < 1.0 / 255.0) break;
+        travelled += e.length;
+        // As pixel_ends: both reflections leave the point the band ray met.
+        glm::dvec3 o = b.point + 1e-6 * b.normal;
+        o.y = std::max(o.y, 0.0);
+        const RayEnd b2 = band_end(rendered, objects, s.camera_y, o,
+                                   glm::reflect(b.direction, b.normal), s.layers);
+        const RayEnd e2 =
+            exact_end(exact, accel, o, glm::reflect(e.direction, b.normal), travelled);
+        p.reflection_error_px = std::max(
+            p.reflection_error_px, across_px(s.footprint, e2.direction, end_point(o, b2, s.far),
+                                             end_point(o, e2, s.far), travelled));
+        b = b2;
+        e = e2;
+    }
+    return p;
+}
+
+PixelCheck check_many_origins(const LayerStack& rendered, const Profile& profile,
+                              const Scene& scene, const SceneAccel& accel,
+                              const ObjectQuery& objects, const std::vector<glm::dvec3>& directions,
+                              const std::vector<bool>& cut_off, const PixelCheckSettings& s) {
+    const int W = s.width, H = s.height;
+    const size_t n = static_cast<size_t>(W) * H;
+    const std::vector<glm::dvec3>& origins = *s.origins;
+    MIRAGE_CHECK(origins.size() == n);
+    CurvedSettings cs;
+    cs.profile = profile;
+    // The exact paths a twentieth of a pixel from the truth.
+    cs.tolerance_rad = 0.05 * s.footprint.angle_rad;
+    cs.tolerance_m = 0.05 * s.footprint.distance;
+    if (s.general) cs.general = *s.general;
+    cs.max_dz = s.max_dz;
+    const CurvedPropagator exact(cs);
+
+    std::vector<OriginEnds> ends(n);
+    ProgressBar bar("check", H, s.progress);
+    parallel_for(
+        H,
+        [&](long row) {
+            for (size_t i = static_cast<size_t>(row) * W; i < static_cast<size_t>(row + 1) * W; ++i)
+                if (!cut_off[i])
+                    ends[i] = origin_ends(rendered, scene, accel, objects, exact, s, origins[i],
+                                          directions[i]);
+            bar.advance();
+        },
+        0, 1);
+    bar.finish();
+
+    PixelCheck out;
+    out.seen_error_px.assign(n, 0.0f);
+    out.shift_rows.assign(n, 0.0f);
+    out.reflection_error_px.assign(n, 0.0f);
+    auto unit = [&](const EndPoint& e) {
+        return s.footprint.distance + s.footprint.angle_rad * e.length;
+    };
+    parallel_for(
+        W,
+        [&](long col) {
+            // Each exact end's reach: the distance to the farther of its neighbours' ends in
+            // the column, at least a hundredth of a pixel there.
+            std::vector<double> reach(H);
+            for (int row = 0; row < H; ++row) {
+                const size_t i = static_cast<size_t>(row) * W + col;
+                double r = 0.01 * unit(ends[i].exact);
+                for (int nb : {row - 1, row + 1}) {
+                    if (nb < 0 || nb >= H) continue;
+                    const size_t j = static_cast<size_t>(nb) * W + col;
+                    r = std::max(r, glm::length(ends[i].exact.point - ends[j].exact.point));
+                }
+                reach[row] = r;
+            }
+            for (int row = 0; row < H; ++row) {
+                const size_t i = static_cast<size_t>(row) * W + col;
+                if (cut_off[i] || ends[i].cut_off) {
+                    out.seen_error_px[i] = out.shift_rows[i] = static_cast<float>(kInf);
+                    continue;
+                }
+                const OriginEnds& p = ends[i];
+                out.seen_error_px[i] =
+                    static_cast<float>(std::max(p.camera_error_px, p.reflection_error_px));
+                out.reflection_error_px[i] = static_cast<float>(p.reflection_error_px);
+                double shift = kInf;
+                for (int d = 0; d < H && !std::isfinite(shift); ++d) {
+                    for (int q : {row - d, row + d}) {
+                        if (q < 0 || q >= H) continue;
+                        const size_t j = static_cast<size_t>(q) * W + col;
+                        if (cut_off[j] || ends[j].cut_off) continue;
+                        if (glm::length(ends[j].exact.point - p.band.point) <= reach[q]) {
+                            shift = d;
+                            break;
+                        }
+                    }
+                }
+                out.shift_rows[i] = static_cast<float>(shift);
+            }
+        },
+        0, 1);
+    return out;
+}
+
 }  // namespace
 
 PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, const Scene& scene,
@@ -150,6 +324,8 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
                         const std::vector<glm::dvec3>& directions,
                         const std::vector<double>& pixel_rad, const std::vector<bool>& cut_off,
                         const PixelCheckSettings& s) {
+    if (s.origins)
+        return check_many_origins(rendered, profile, scene, accel, objects, directions, cut_off, s);
     const int W = s.width, H = s.height;
     const size_t n = static_cast<size_t>(W) * H;
     MIRAGE_CHECK(directions.size() == n && pixel_rad.size() == n && cut_off.size() == n);

@@ -13,6 +13,7 @@
 #include "atmosphere/profile.h"
 #include "layers/band_tracer3d.h"
 #include "layers/stack.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 #include "trace/scene_accel.h"
 
@@ -32,6 +33,15 @@ struct PixelCheckSettings {
     // ::max_dz), not `profile`.
     std::shared_ptr<const Atmosphere> general;
     double max_dz = 0.0;
+    // A camera whose rays start at different points: ray i leaves (*origins)[i] (not `eye`),
+    // `camera_y` is the height of the layer POV-Ray's atmosphere stands for, and the errors are
+    // distances across the rays in the camera's unit of a pixel, footprint.distance +
+    // footprint.angle_rad * (path length from the ray's origin), with the exact paths sampled
+    // to a twentieth of it (exact_tolerance_rad is then not used).  A ray that leaves the scene
+    // is taken at `far` along its final direction from its origin.
+    const std::vector<glm::dvec3>* origins = nullptr;
+    PixelFootprint footprint;
+    double far = 0.0;
 };
 
 struct PixelCheck {
@@ -47,7 +57,9 @@ struct PixelCheck {
     std::vector<float> reflection_error_px;
 };
 
-/// Checks every ray of a width x height grid (pixel centres, or sub-pixel samples):
+/// Checks every ray of a width x height grid (with settings.origins, from their own origins:
+/// the angles below are then distances across the rays, in the camera's pixels, and
+/// `pixel_rad` is not read) (pixel centres, or sub-pixel samples):
 /// `directions[i]` and `pixel_rad[i]` (the angle of one pixel at ray i), `cut_off[i]` for
 /// rays known to be cut off (a band ray the tracer cuts off is found so anyway).
 /// `objects` stops band rays at the scene's surfaces (as POV-Ray does); `accel` holds the

@@ -21,10 +21,11 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 int trace_levels(const CompileContext& ctx, const LayerStack& stack, const ObjectQuery& objects,
-                 const glm::dvec3& origin, const glm::dvec3& dir, int level, double weight) {
+                 double camera_y, const glm::dvec3& origin, const glm::dvec3& dir, int level,
+                 double weight) {
     const Trace3dOutcome t =
         trace_layers_3d(stack, origin, dir, ctx.scene_box, ctx.layers_box,
-                        Trace3dOptions{4 * kMaxTraceLevel, &objects, ctx.eye_y});
+                        Trace3dOptions{4 * kMaxTraceLevel, &objects, camera_y});
     level += t.crossings;
     if (t.cut_off) return std::max(level, 4 * kMaxTraceLevel);
     int deepest = level;
@@ -38,8 +39,8 @@ int trace_levels(const CompileContext& ctx, const LayerStack& stack, const Objec
             const glm::dvec3 rd = glm::reflect(t.object_dir, n);
             glm::dvec3 start = t.object_point + 1e-6 * n;
             start.y = std::max(start.y, 0.0);
-            deepest = std::max(deepest,
-                               trace_levels(ctx, stack, objects, start, rd, level + 1, weight * r));
+            deepest = std::max(deepest, trace_levels(ctx, stack, objects, camera_y, start, rd,
+                                                     level + 1, weight * r));
         }
     }
     return deepest;
@@ -155,10 +156,16 @@ ObjectQuery object_query(const SceneAccel& accel) {
 int deepest_trace_level(const CompileContext& ctx, const LayerStack& rendered,
                         const CameraRays& rays) {
     const ObjectQuery objects = object_query(*ctx.accel);
+    const double camera_y = ctx.reference_y(rendered);
     std::vector<int> level(rays.size(), 0);
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        // A ray from below the ground enters the layers where it rises to it, if ever (the
+        // straight stretch below, in the bottom layer, costs no level).
+        const glm::dvec3 o = rays.origin.empty() ? ctx.camera.location : rays.origin[i];
+        const auto from = entry_into_atmosphere(o, rays.direction[i]);
         level[i] =
-            trace_levels(ctx, rendered, objects, ctx.camera.location, rays.direction[i], 1, 1.0);
+            from ? trace_levels(ctx, rendered, objects, camera_y, *from, rays.direction[i], 1, 1.0)
+                 : 1;
     });
     return rays.size() ? *std::max_element(level.begin(), level.end()) : 0;
 }
@@ -217,6 +224,7 @@ std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& r
 }
 
 double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const CameraRays& rays) {
+    if (ctx.many_origins) return many_origins_reach(ctx, rendered, rays);
     const double cap = ctx.layers_box.x1 - ctx.camera.location.x;
     if (rendered.boundaries() == 0) return 1.1 * ctx.extent;
     const RevolutionStack s = revolution_of(rendered, ctx.eye_y);
@@ -232,6 +240,7 @@ double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const
 }
 
 Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) {
+    if (ctx.many_origins) return design_many_origins(ctx, rays);
     if (ctx.air) return design_air_layers(ctx, rays);
     Design d;
     const AtmosphereSettings& st = ctx.settings;

@@ -1,4 +1,5 @@
 // Stage "emit" of mirage compile (compile/stages.h).
+#include <algorithm>
 #include <filesystem>
 
 #include "compile/stages.h"
@@ -11,7 +12,18 @@ EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, doub
                         const std::vector<std::string>& header) {
     const glm::dvec3& eye = ctx.camera.location;
     LayerEmitSettings es;
-    es.camera_y = ctx.eye_y;
+    es.camera_y = ctx.reference_y(stack);
+    es.many_origins = ctx.many_origins;
+    for (const glm::dvec3& corner :
+         {camera_ray(ctx.camera, 0, 0, ctx.options.width, ctx.options.height).origin,
+          camera_ray(ctx.camera, ctx.options.width, 0, ctx.options.width, ctx.options.height)
+              .origin,
+          camera_ray(ctx.camera, 0, ctx.options.height, ctx.options.width, ctx.options.height)
+              .origin,
+          camera_ray(ctx.camera, ctx.options.width, ctx.options.height, ctx.options.width,
+                     ctx.options.height)
+              .origin})
+        if (ctx.many_origins) es.lowest_y = std::min(es.lowest_y, corner.y);
     es.ground_height = ctx.settings.ground_height;
     es.extent = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
     es.layout = ctx.gaps ? LayerLayout::Gaps : LayerLayout::Nested;
@@ -27,7 +39,7 @@ EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, doub
     ini.antialias = ctx.options.antialias;
     EmittedFiles f;
     f.include = layers_include(stack, es);
-    f.csv = layers_csv(stack, ctx.eye_y);
+    f.csv = layers_csv(stack, es.camera_y);
     f.ini = render_ini(ini);
     return f;
 }

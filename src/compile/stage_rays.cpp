@@ -20,6 +20,7 @@ CameraRays CameraRays::centres() const {
     c.height = height;
     c.per_side = 1;
     const size_t n = static_cast<size_t>(width) * height;
+    c.origin.resize(n);
     c.direction.resize(n);
     c.elevation.resize(n);
     c.exit_dz.resize(n);
@@ -27,6 +28,7 @@ CameraRays CameraRays::centres() const {
     for (int row = 0; row < height; ++row)
         for (int col = 0; col < width; ++col) {
             const size_t i = static_cast<size_t>(row) * width + col, j = centre(col, row);
+            c.origin[i] = origin[j];
             c.direction[i] = direction[j];
             c.elevation[i] = elevation[j];
             c.exit_dz[i] = exit_dz[j];
@@ -42,6 +44,7 @@ CameraRays camera_rays(const CompileContext& ctx, int per_side) {
     r.per_side = per_side;
     const int GW = r.grid_width(), GH = r.grid_height();
     const size_t n = static_cast<size_t>(GW) * GH;
+    r.origin.resize(n);
     r.direction.resize(n);
     r.elevation.resize(n);
     r.exit_dz.resize(n);
@@ -55,13 +58,17 @@ CameraRays camera_rays(const CompileContext& ctx, int per_side) {
             for (int gx = 0; gx < GW; ++gx) {
                 const double x = (gx + 0.5) / per_side;
                 const size_t i = static_cast<size_t>(gy) * GW + gx;
-                const glm::dvec3 d = camera_ray(cam, x, y, W, H).direction;
+                const CameraRay ray = camera_ray(cam, x, y, W, H);
+                const glm::dvec3 d = ray.direction;
+                // A camera with one eye point: every ray from its location exactly.
+                const glm::dvec3 o = ctx.many_origins ? ray.origin : cam.location;
+                r.origin[i] = o;
                 r.direction[i] = d;
                 r.elevation[i] = std::asin(std::clamp(d.y, -1.0, 1.0));
                 const double hl = std::hypot(d.x, d.z);
-                r.exit_dz[i] = hl > 0.0 ? distance_to_box_edge(ctx.scene_box, cam.location.x,
-                                                               cam.location.z, d.x / hl, d.z / hl)
-                                        : ctx.extent;
+                r.exit_dz[i] =
+                    hl > 0.0 ? distance_to_box_edge(ctx.scene_box, o.x, o.z, d.x / hl, d.z / hl)
+                             : ctx.extent;
                 r.pixel_rad[i] = angle_between(camera_ray(cam, x, y - 0.5, W, H).direction,
                                                camera_ray(cam, x, y + 0.5, W, H).direction);
             }

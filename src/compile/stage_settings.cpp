@@ -48,7 +48,21 @@ double steepest_sine(const Camera& cam, int W, int H) {
 }  // namespace
 
 LayerStack CompileContext::rendered(const LayerStack& stack) const {
-    return gaps && stack.boundaries() > 0 ? with_gaps(stack, eye_y, gap) : stack;
+    return gaps && stack.boundaries() > 0 ? with_gaps(stack, reference_y(stack), gap) : stack;
+}
+
+double CompileContext::reference_y(const LayerStack& stack) const {
+    const int n = stack.boundaries();
+    if (!many_origins || n == 0) return eye_y;
+    int best = -1;
+    for (int k = 0; k <= n; ++k) {
+        if (!stack.air.empty() && stack.air[k]) continue;
+        if (best < 0 || stack.excess[k] >= stack.excess[best]) best = k;
+    }
+    const auto& h = stack.heights;
+    if (best == n) return h[n - 1] + std::max(1.0, h[n - 1]);
+    if (best == 0) return 0.5 * h[0];
+    return 0.5 * (h[best - 1] + h[best]);
 }
 
 Result<CompileContext> compile_settings(const CompileOptions& opt) {
@@ -98,11 +112,17 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     const Scene& scene = ctx.scene;
     ctx.camera = scene.camera;
     ctx.eye_y = ctx.camera.location.y;
-    if (!camera_has_one_viewpoint(ctx.camera))
+    ctx.many_origins = !camera_has_one_viewpoint(ctx.camera);
+    {
+        auto footprint = pixel_footprint(ctx.camera, opt.width, opt.height);
+        if (!footprint) return make_error(place(ctx.camera.loc, scene.file) + footprint.message());
+        ctx.footprint = *footprint;
+    }
+    if (ctx.many_origins && opt.layout == "nested")
         return make_error(place(ctx.camera.loc, scene.file) + "the " +
                           camera_type_name(ctx.camera.type) +
-                          " camera's rays start at different points: mirage compile fits the "
-                          "layers to the rays of one eye point");
+                          " camera's rays start at different points, inside different layers: "
+                          "--layout nested needs them all in one (use gaps or auto)");
     auto accel = SceneAccel::build(scene);
     if (!accel) return accel.error();
     ctx.accel = std::make_shared<const SceneAccel>(std::move(*accel));
@@ -145,6 +165,19 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
         }
     }
     if (extent <= 0.0) extent = 100.0 * ctx.eye_y;
+    if (ctx.many_origins) {
+        // Every ray's origin lies inside the scene's box: the image's corners and edges'
+        // midpoints bound how far the origins spread from the location.
+        double spread = 0.0;
+        for (const double fx : {0.0, 0.5, 1.0})
+            for (const double fy : {0.0, 0.5, 1.0}) {
+                const glm::dvec3 o =
+                    camera_ray(ctx.camera, fx * opt.width, fy * opt.height, opt.width, opt.height)
+                        .origin;
+                spread = std::max(spread, std::hypot(o.x - eye.x, o.z - eye.z));
+            }
+        extent += spread;
+    }
     ctx.extent = extent;
     ctx.scene_box = {eye.x - extent, eye.x + extent, eye.z - extent, eye.z + extent};
     const double reach = kLayersExtentFactor * extent;
@@ -154,7 +187,13 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     if (ctx.settings.air) {
         // Real air: the tracer's model, fitted for exact paths a twentieth of a pixel from the
         // truth (the pixel check's), followed as far as the tracer follows them.
-        const double px = pixel_angle_rad(ctx.camera, opt.width, opt.height);
+        // (With many origins the pixel's angle from each origin, or its width over the
+        // paths' reach.)
+        const double reach_dz =
+            ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
+        const double px = ctx.many_origins
+                              ? ctx.footprint.angle_rad + ctx.footprint.distance / reach_dz
+                              : pixel_angle_rad(ctx.camera, opt.width, opt.height);
         auto air = scene_atmosphere(ctx.settings, 0.05 * ctx.settings.tolerance_px * px);
         if (!air) return make_error(opt.scene + ": " + air.message());
         if (air->earth_radius() > 0.0) {
@@ -173,7 +212,10 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     }
     // The layout: nested planes, or slabs with gaps where the index steps are so small that
     // POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
-    if (opt.layout == "gaps") {
+    if (opt.layout == "gaps" || ctx.many_origins) {
+        // Rays from many origins start inside different layers: POV-Ray builds each one's
+        // list of interiors in its bounding tree's order, which only the gap layout's
+        // disjoint slabs (one interior at any point) make right.
         ctx.gaps = true;
     } else if (opt.layout == "auto") {
         if (ctx.air) {

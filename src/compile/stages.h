@@ -14,6 +14,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "layers/band_tracer3d.h"
 #include "layers/stack.h"
 #include "load/atmosphere_settings.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 #include "trace/scene_accel.h"
 #include "util/result.h"
@@ -60,9 +62,20 @@ struct CompileContext {
     std::shared_ptr<const SceneAccel> accel;  // the scene's objects for the rays
     std::vector<std::string> library_paths;   // as the .ini will list them (absolute)
     std::vector<std::string> left_out, warnings;
+    // A camera whose rays start at different points (orthographic, cylinder 3 and 4): every
+    // ray from its own origin, the layers at equal steps of the index over the heights the
+    // rays reach (design_many_origins), always in the gap layout, and errors in the camera's
+    // own unit of a pixel.
+    bool many_origins = false;
+    PixelFootprint footprint;  // one pixel along a camera ray (scene/camera.h)
 
     /// The stack as POV-Ray renders it: with the gaps of the gap layout.
     LayerStack rendered(const LayerStack& stack) const;
+    /// The height whose layer POV-Ray's atmosphere (index 1) stands for: the camera's; with
+    /// many origins a height inside the layer of the largest index (the last such layer POV-
+    /// Ray does not already see as its atmosphere), so that a ray from any origin never
+    /// meets a total reflection in a gap that its own layer would not give it.
+    double reference_y(const LayerStack& stack) const;
 };
 
 /// Stage "settings": parses the scene (leniently: the compiler needs the camera, the
@@ -74,11 +87,14 @@ Result<CompileContext> compile_settings(const CompileOptions& options);
 /// (i + 1/2) / per_side, row-major from the top of the image: grid row 3 r + 1 (for per_side
 /// 3) is the row of pixel row r's centres.
 struct CameraRays {
-    int width = 0, height = 0;  // of the image, pixels
-    int per_side = 1;           // samples per pixel and side
+    int width = 0, height = 0;       // of the image, pixels
+    int per_side = 1;                // samples per pixel and side
+    std::vector<glm::dvec3> origin;  // where each ray starts (the camera's location for a
+                                     // camera with one eye point; empty: every ray from it)
     std::vector<glm::dvec3> direction;
     std::vector<double> elevation;  // rad, > 0 up
-    std::vector<double> exit_dz;    // horizontal distance at which it leaves the scene's box
+    std::vector<double> exit_dz;    // horizontal distance from its origin at which it leaves
+                                    // the scene's box
     std::vector<double> pixel_rad;  // angle of one pixel row at this sample, rad
 
     int grid_width() const { return width * per_side; }
@@ -118,6 +134,25 @@ std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& r
 
 /// Stage "design": the layers for the rays (the pixel centres).
 Result<Design> design_layers(const CompileContext& ctx, const CameraRays& centres);
+
+/// The design for a camera with many origins (stage_design_origins.cpp): no fit to one eye's
+/// rays; boundaries at equal steps of the index (or, Mirage_Layers "uniform", at equal
+/// heights) between the lowest and the highest point the rays' exact paths reach inside the
+/// scene (the top no higher than where the index is within 1 % of its value aloft), fewer
+/// until every camera ray with its reflections keeps POV-Ray's trace-level budget.
+Result<Design> design_many_origins(const CompileContext& ctx, const CameraRays& centres);
+
+/// With many origins: how far from the camera the rendered layers must reach (as
+/// layers_reach): past the scene and past every ray's last boundary event; and the most
+/// boundary events of a ray.
+double many_origins_reach(const CompileContext& ctx, const LayerStack& rendered,
+                          const CameraRays& rays, int* max_crossings = nullptr);
+
+/// Where a ray from `origin` along unit `dir` enters the atmosphere: the origin itself, or
+/// for an origin below the ground rising, the point where it reaches the ground (below it the
+/// index is the ground's, the bottom layer's: the ray is straight there).  Nothing for an
+/// origin below the ground that never rises to it.
+std::optional<glm::dvec3> entry_into_atmosphere(const glm::dvec3& origin, const glm::dvec3& dir);
 
 /// How far the rendered layers must reach: as far as the camera's rays still meet a boundary
 /// before they leave through the top or reach the ground, at least a tenth past the scene,

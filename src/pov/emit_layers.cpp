@@ -24,9 +24,16 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
     const double n_cam = s.index(k_cam);
     std::ostringstream out;
     for (const auto& line : st.header) out << "// " << line << "\n";
-    out << "//\n// " << s.boundaries() << " boundaries; the camera at y = " << g17(st.camera_y)
-        << " is in layer " << k_cam << " of index " << g17(n_cam)
-        << ", the index every ior below is relative to.\n";
+    if (st.many_origins) {
+        out << "//\n// " << s.boundaries()
+            << " boundaries; the camera's rays start at different heights: layer " << k_cam
+            << " (y = " << g17(st.camera_y) << "), of the largest index " << g17(n_cam)
+            << ", is POV-Ray's atmosphere, the index every ior below is relative to.\n";
+    } else {
+        out << "//\n// " << s.boundaries() << " boundaries; the camera at y = " << g17(st.camera_y)
+            << " is in layer " << k_cam << " of index " << g17(n_cam)
+            << ", the index every ior below is relative to.\n";
+    }
     if (st.layout == LayerLayout::Gaps) {
         out << "// Gap layout: each layer a slab of its own, gaps of " << g17(st.gap)
             << " units between them hold the camera's index\n"
@@ -74,7 +81,9 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
             const double top = k == N ? 0.0 : h[k] - (k == k_cam - 1 ? 0.0 : 0.5 * g);
             if (k == 0) {
                 out << "plane { y, " << g17(top) << "\n    clipped_by { "
-                    << box(-1.0 - std::fabs(top), top + 0.5 * g) << " }\n"
+                    << box(std::min(-1.0 - std::fabs(top), st.lowest_y - 1.0 - std::fabs(top)),
+                           top + 0.5 * g)
+                    << " }\n"
                     << tail(k);
             } else if (k == N) {
                 out << "plane { -y, " << g17(-bottom) << "\n    clipped_by { "

@@ -33,13 +33,20 @@ enum class LayerLayout {
 // each refraction is float over double and nothing accumulates; it costs twice the levels.
 
 struct LayerEmitSettings {
-    double camera_y = 0.0;  // height of the camera, scene units
+    double camera_y = 0.0;  // height of the camera (or of the reference layer), scene units
     HorizontalBox extent;   // horizontal extent of the layers, scene units
     LayerLayout layout = LayerLayout::Nested;
     double gap = 0.0;                 // thickness of the gaps (Gaps layout), scene units
     double ground_height = 0.0;       // Mirage_Ground_Height: every layer is raised by it (the
                                       // heights above are above the ground, scene/ground.h)
     std::vector<std::string> header;  // comment lines at the top of the include
+    // The lowest point a camera ray starts at (a camera with many origins may start some
+    // below the ground): the bottom layer reaches below it, so that POV-Ray finds those
+    // origins inside it.
+    double lowest_y = 0.0;
+    // The rays start at different points (camera_y is then the height of the layer of the
+    // largest index, which POV-Ray's atmosphere stands for): only the include's comment says so.
+    bool many_origins = false;
 };
 
 /// The text of mirage_layers.inc.

@@ -2,6 +2,7 @@
 // render/tracepixel.cpp.
 #include "scene/camera.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/transform.h"
@@ -208,6 +209,61 @@ double pixel_angle_rad(const Camera& camera, int width, int height) {
     const glm::dvec3 b =
         camera_ray(camera, 0.5 * width, 0.5 * height + 0.5, width, height).direction;
     return angle_between(a, b);
+}
+
+Result<PixelFootprint> pixel_footprint(const Camera& camera, int width, int height) {
+    constexpr double kRel = 1e-9;
+    const glm::dvec3 d = glm::normalize(camera.direction);
+    PixelFootprint fp;
+    switch (camera.type) {
+        case CameraType::Orthographic: {
+            // The components of right / width and up / height perpendicular to the rays span
+            // the pixel's parallelogram; a displacement perpendicular to the rays smaller than
+            // its smaller height stays within one pixel.
+            const glm::dvec3 r = camera.right / static_cast<double>(width);
+            const glm::dvec3 u = camera.up / static_cast<double>(height);
+            const glm::dvec3 rp = r - glm::dot(r, d) * d, up = u - glm::dot(u, d) * d;
+            const double area = glm::length(glm::cross(rp, up));
+            const double longest = std::max(glm::length(rp), glm::length(up));
+            fp.distance = longest > 0.0 ? area / longest : 0.0;
+            return fp;
+        }
+        case CameraType::Cylinder3: {
+            const double lu = glm::length(camera.up);
+            const bool level =
+                lu > 0.0 && camera.up.y > 0.0 && std::abs(camera.up.x) <= kRel * lu &&
+                std::abs(camera.up.z) <= kRel * lu &&
+                std::abs(camera.direction.y) <= kRel * glm::length(camera.direction) &&
+                std::abs(camera.right.y) <= kRel * glm::length(camera.right);
+            if (!level)
+                return make_error(
+                    "the cylinder 3 camera is not level (up vertical, direction and right "
+                    "horizontal): its rows are offset along up and its columns turned, and "
+                    "mirage follows its curved rays only when a ray's vertical plane meets the "
+                    "rows alone");
+            // TracePixel: the origin moves by y0 |up| along the unit up vector.
+            fp.distance = lu / height;
+            return fp;
+        }
+        case CameraType::Cylinder4: {
+            const double lr = glm::length(camera.right);
+            const glm::dvec3 r = camera.right / lr;
+            const bool plane = lr > 0.0 && std::abs(r.y) <= kRel &&
+                               std::abs(glm::dot(r, glm::normalize(camera.up))) <= kRel &&
+                               std::abs(glm::dot(r, d)) <= kRel;
+            if (!plane)
+                return make_error(
+                    "the cylinder 4 camera's right vector is not horizontal and perpendicular "
+                    "to up and direction: its columns are offset along right and its rows "
+                    "turned, and mirage follows its curved rays only when a ray's vertical "
+                    "plane meets the rows alone");
+            fp.angle_rad = camera.angle_deg * kPi / 180.0 / height;
+            return fp;
+        }
+        default:
+            fp.angle_rad = pixel_angle_rad(camera, width, height);
+            return fp;
+    }
 }
 
 Result<CameraState> apply_camera_statement(const CameraState& base, const CameraModifiers& mods) {

@@ -43,6 +43,30 @@ double angle_between(const glm::dvec3& a, const glm::dvec3& b);
 /// centre column half a pixel above and below the centre: the unit of tolerances in pixels.
 double pixel_angle_rad(const Camera& camera, int width, int height);
 
+/// One pixel's size along a camera ray, the unit of tolerances in pixels for every camera: at
+/// path length s from the ray's own origin, a displacement of the ray within its vertical
+/// plane of at most `distance + angle_rad * s` moves it by at most one pixel in the image.
+/// For a camera with one eye point it is the angle of one pixel seen from the eye (distance 0,
+/// angle_rad pixel_angle_rad).  An orthographic camera's rays are parallel: its rows and
+/// columns are distances apart, perpendicular to the rays (angle 0; distance the smaller
+/// height of the pixel's parallelogram).  A cylinder 3 camera's rows are offset along up and
+/// its columns turn about it: a level one (up vertical, direction and right horizontal) moves
+/// a ray within its vertical plane only across rows, |up| / height apart.  A cylinder 4
+/// camera's columns are offset along right and its rows turn in the plane of up and
+/// direction: with right horizontal and perpendicular to both, that plane is each ray's
+/// vertical plane, and a row is the angle angle / height from the ray's own origin.
+struct PixelFootprint {
+    double distance = 0.0;   // scene units
+    double angle_rad = 0.0;  // rad, times the path length from the ray's origin
+};
+
+/// The footprint of one pixel of a width x height image; fails (naming the camera's type)
+/// for a cylinder 3 camera that is not level and a cylinder 4 camera whose right vector is
+/// not horizontal or not perpendicular to up and direction: a ray's vertical displacement then
+/// mixes rows offset by a distance with columns turned by an angle, which one allowance of the
+/// form distance + angle * s does not bound.
+Result<PixelFootprint> pixel_footprint(const Camera& camera, int width, int height);
+
 /// The state POV-Ray keeps for a camera while parsing: its vectors plus look_at and angle.
 /// The defaults are POV-Ray's default camera.
 struct CameraState {

@@ -331,6 +331,7 @@ bool general_path(const CurvedSettings& settings, const SceneAccel* accel, const
     cp.earth_radius = atm.earth_radius();
     SampleSettings ss;
     ss.tolerance_rad = settings.tolerance_rad;
+    ss.tolerance_m = settings.tolerance_m;
     ss.start_distance = travelled;
     ss.max_dz = general_max_dz(settings, accel, origin);
     if (reference) {
@@ -380,6 +381,7 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
     cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
     SampleSettings ss;
     ss.tolerance_rad = settings.tolerance_rad;
+    ss.tolerance_m = settings.tolerance_m;
     ss.start_distance = travelled;
     if (accel && !accel->unbounded_elsewhere()) {
         thread_local std::vector<SceneAccel::Crossing> crossings;
@@ -405,6 +407,7 @@ CurvedPath reference_path(const CurvedSettings& settings, const glm::dvec3& orig
     MIRAGE_CHECK(ray.ok());
     SampleSettings ss;
     ss.tolerance_rad = settings.tolerance_rad;
+    ss.tolerance_m = settings.tolerance_m;
     ss.start_distance = travelled;
     CurvedPath cp;
     cp.ray = *ray;
@@ -413,9 +416,9 @@ CurvedPath reference_path(const CurvedSettings& settings, const glm::dvec3& orig
     return cp;
 }
 
-PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec2& heading,
-              const CurvedPath& cp) {
-    PolylineMarch march(accel, origin);
+// Marches `cp` from `origin` on from the march's current point (which is `origin`).
+PathHit march_from(PolylineMarch& march, const glm::dvec3& origin, const glm::dvec2& heading,
+                   const CurvedPath& cp) {
     const auto& points = cp.path.points;
     const auto& clear = cp.path.clear_length;
     auto world = [&](const glm::dvec2& p) {
@@ -451,6 +454,12 @@ PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec
             glm::dvec3(std::cos(e) * heading.x, std::sin(e), std::cos(e) * heading.y);
     }
     return result;
+}
+
+PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec2& heading,
+              const CurvedPath& cp) {
+    PolylineMarch march(accel, origin);
+    return march_from(march, origin, heading, cp);
 }
 
 // Whether a ray goes straight, for the reference sampling (curved_path).
@@ -516,10 +525,29 @@ PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin, con
 
 CurvedPropagator::CurvedPropagator(const CurvedSettings& settings) : settings_(settings) {
     MIRAGE_CHECK((settings.profile.kind == ProfileKind::None && !settings.general) ||
-                 settings.tolerance_rad > 0.0);
+                 settings.tolerance_rad > 0.0 || settings.tolerance_m > 0.0);
 }
 
 PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& start) const {
+    if (start.origin.y < -ground_slack(start.origin) && start.direction.y > 0.0) {
+        // Below the ground the index is the ground's throughout (the band model's bottom
+        // layer): straight up to the ground, then along the exact path from there.
+        const double t = -start.origin.y / start.direction.y;
+        glm::dvec3 at_ground = start.origin + t * start.direction;
+        at_ground.y = 0.0;
+        PolylineMarch march(accel, start.origin);
+        if (march.segment_to(at_ground)) return march.result();
+        RayStart rest = start;
+        rest.origin = at_ground;
+        rest.travelled = start.travelled + march.path_length();
+        const std::optional<CurvedPath> cp =
+            curved_path(settings_, accel, rest.origin, rest.direction, rest.travelled);
+        if (!cp) {
+            march.ray(start.direction);
+            return march.result();
+        }
+        return march_from(march, rest.origin, cp->heading, *cp);
+    }
     if (settings_.sampling == PathSampling::Reference) {
         const auto cp =
             settings_.general

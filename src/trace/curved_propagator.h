@@ -42,7 +42,11 @@ struct CurvedSettings {
     // it goes on straight.  0: twice the horizontal reach of the scene's bounded objects from
     // the eye (a ray trapped in a duct turns for ever).
     double max_dz = 0.0;
-    double tolerance_rad = 0.0;  // largest path error, as an angle seen from the eye, rad
+    // The largest path error, as a height within the ray's vertical plane: tolerance_m plus
+    // tolerance_rad times the path length from where the ray's history began (the eye, or
+    // each camera ray's own origin for a camera with many: scene/camera.h, PixelFootprint).
+    double tolerance_rad = 0.0;  // rad
+    double tolerance_m = 0.0;    // scene units
     PathSampling sampling = PathSampling::NearSurfaces;
     // Where the camera rays start.  Rays from there share an index, by azimuth, of the boxes
     // their vertical planes can cross (built once per scene and thread).
@@ -88,7 +92,9 @@ PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin,
                           const CurvedPath& path);
 
 /// Every ray (camera and reflected, each from its own start and direction) along its own
-/// exact path.
+/// exact path.  A ray that starts below the ground (a camera with many origins, some under
+/// it) goes straight while below it, where the index is the ground's as in the band model's
+/// bottom layer, and, rising, along its exact path from the point where it reaches the ground.
 class CurvedPropagator final : public Propagator {
   public:
     explicit CurvedPropagator(const CurvedSettings& settings);

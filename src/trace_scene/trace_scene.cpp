@@ -7,6 +7,7 @@
 #include <memory>
 #include <sstream>
 
+#include "atmosphere/sampler.h"
 #include "image/image_io.h"
 #include "load/mirage_scene.h"
 #include "scene/camera.h"
@@ -89,15 +90,28 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     report.height = opt.height;
     report.tolerance_px = settings.tolerance_px;
     report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
+    report.many_origins = !camera_has_one_viewpoint(scene.camera);
     const Profile profile = profile_in_scene_units(settings);
     const bool bends = bends_rays(settings);
-    if (opt.atmosphere && bends && !camera_has_one_viewpoint(scene.camera)) {
-        // Paths are followed to a tolerance of an angle of one pixel seen from the eye.
-        return make_error(
-            (scene.camera.loc.file.empty() ? scene.file : to_string(scene.camera.loc)) + ": the " +
-            camera_type_name(scene.camera.type) +
-            " camera's rays start at different points: the curved paths are followed to an "
-            "angle of one pixel from one eye point; trace it with --no-atmosphere");
+    if (opt.atmosphere && bends) {
+        // The tolerance's unit: one pixel along each camera ray, from the eye or, for a
+        // camera with many origins, from the ray's own origin.
+        auto footprint = pixel_footprint(scene.camera, opt.width, opt.height);
+        if (!footprint)
+            return make_error(
+                (scene.camera.loc.file.empty() ? scene.file : to_string(scene.camera.loc)) + ": " +
+                footprint.message() + "; trace it with --no-atmosphere");
+        report.footprint = *footprint;
+        const double distance = report.tolerance_px * report.footprint.distance;
+        if (report.footprint.distance > 0.0 && !(distance >= kMinToleranceM))
+            return make_error(
+                (scene.camera.loc.file.empty() ? scene.file : to_string(scene.camera.loc)) +
+                ": the " + camera_type_name(scene.camera.type) + " camera's tolerance of " +
+                sig(report.tolerance_px, 3) + " px is " + sig(distance, 3) +
+                " units across its rays, less than the " + shortest(kMinToleranceM) +
+                " units mirage samples paths for (widen the view)");
+    } else {
+        report.footprint.angle_rad = report.pixel_rad;
     }
     if (!opt.atmosphere) {
         report.atmosphere = "off (--no-atmosphere)";
@@ -109,21 +123,27 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
 
     CurvedSettings curved;
     curved.profile = profile;
-    curved.tolerance_rad = report.tolerance_px * report.pixel_rad;
+    curved.tolerance_rad = report.tolerance_px * report.footprint.angle_rad;
+    curved.tolerance_m = report.tolerance_px * report.footprint.distance;
     if (settings.air && opt.atmosphere) {
-        // Real air: the general engine's model, fitted finely enough for this tolerance.
-        auto atmosphere = scene_atmosphere(settings, curved.tolerance_rad, &report.model_pieces);
+        // Real air: the general engine's model, fitted finely enough for this tolerance (for
+        // a distance across the rays, the angle it makes over the paths' reach).
+        double fit_rad = curved.tolerance_rad;
+        double reach = 0.0;
+        if (settings.extent) {
+            reach = *settings.extent;
+        } else {
+            auto accel = SceneAccel::build(scene);
+            if (!accel) return accel.error();
+            reach = general_path_reach(*accel, scene.camera.location);
+        }
+        if (curved.tolerance_m > 0.0) fit_rad += curved.tolerance_m / reach;
+        auto atmosphere = scene_atmosphere(settings, fit_rad, &report.model_pieces);
         if (!atmosphere) return make_error(opt.scene + ": " + atmosphere.message());
         curved.general = std::move(*atmosphere);
         // Paths are followed to the declared extent, else to twice the scene's reach: the
         // same for every ray, the rows' of --scanline-paths among them.
-        if (settings.extent) {
-            curved.max_dz = *settings.extent;
-        } else {
-            auto accel = SceneAccel::build(scene);
-            if (!accel) return accel.error();
-            curved.max_dz = general_path_reach(*accel, scene.camera.location);
-        }
+        curved.max_dz = reach;
     }
     if (opt.reference_sampling) curved.sampling = PathSampling::Reference;
     curved.eye = scene.camera.location;
@@ -165,8 +185,15 @@ std::string trace_summary(const TraceReport& r) {
     if (r.model_pieces > 0) out << " (fitted: " << r.model_pieces << " pieces)";
     out << ", " << path_mode_name(r.mode);
     if (r.mode != PathMode::Straight) {
-        out << " within " << sig(r.tolerance_px, 3) << " px ("
-            << sig(r.tolerance_px * r.pixel_rad, 3) << " rad)";
+        out << " within " << sig(r.tolerance_px, 3) << " px (";
+        if (r.footprint.distance > 0.0) {
+            out << sig(r.tolerance_px * r.footprint.distance, 3) << " units across the rays";
+            if (r.footprint.angle_rad > 0.0) out << " + ";
+        }
+        if (r.footprint.angle_rad > 0.0 || r.footprint.distance == 0.0)
+            out << sig(r.tolerance_px * r.footprint.angle_rad, 3) << " rad";
+        if (r.many_origins) out << ", from each ray's origin";
+        out << ")";
     }
     out << "\n" << format_stats(r.render.stats, r.width, r.height) << "\n";
     if (!r.output.empty()) out << "wrote " << r.output << "\n";

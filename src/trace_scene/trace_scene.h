@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/camera.h"
 #include "trace/render.h"
 #include "util/result.h"
 
@@ -41,6 +42,8 @@ struct TraceReport {
     PathMode mode = PathMode::Straight;
     double tolerance_px = 0.0;  // the paths' largest error, pixels
     double pixel_rad = 0.0;     // one pixel's angle at the image centre, rad
+    PixelFootprint footprint;   // one pixel along a camera ray (scene/camera.h)
+    bool many_origins = false;  // the camera's rays start at different points
     int model_pieces = 0;       // real air: the fitted model's pieces (0: closed forms)
     RenderResult render;        // the image (linear) and the render's statistics
     std::string output;         // the file written, if any
