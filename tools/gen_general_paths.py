@@ -165,6 +165,30 @@ def ciddor(lam_nm, T, p, h, co2):
 
 
 # ---------------------------------------------------------------------------------------
+# The temperature models of the GSL tracer Wigner-GPU-Lab/numerical-simulate-mirage (its
+# Eikonal.h, getRefract: n = 1 + 7.86e-4 * 101 kPa / T), written from their published formulas
+# for tools/peer_compare.sh: water (ambient T_a over water at T_b), conventional and porous
+# asphalt (ambient T_a).  Heights in m, temperatures in degC.
+
+PEER_DECAY = {'water': mp.mpf('20.1'), 'conventional': mp.mpf('10.08'), 'porous': mp.mpf('8.35')}
+
+
+def peer_temperature_c(model, t_amb, t_base, h):
+    if model == 'water':
+        return t_amb + (t_base - t_amb) * (mp.mpf('0.011') + mp.mpf('1.05') * mp.exp(-mp.mpf('20.1') * h))
+    if model == 'conventional':
+        return t_amb + mp.mpf('0.018') + mp.mpf('6.37') * mp.exp(-mp.mpf('10.08') * h)
+    if model == 'porous':
+        return t_amb + (mp.mpf('-66.8') + mp.mpf('1.9') * t_amb) * \
+            (mp.mpf('0.002') + mp.mpf('0.994') * mp.exp(-mp.mpf('8.35') * h))
+    raise ValueError('unknown peer model %r' % model)
+
+
+def peer_refractivity(model, t_amb, t_base, h):
+    return mp.mpf('7.86e-4') * 101 / (peer_temperature_c(model, t_amb, t_base, h) + mp.mpf('273.15'))
+
+
+# ---------------------------------------------------------------------------------------
 # Profiles: n^2(y) over heights above the ground, then flattened when R > 0.
 
 GL_X, GL_W = None, None
@@ -212,6 +236,12 @@ class Profile:
             self.sign = 1 if spec['profile'] == 'inferior' else -1
             self.top = mp.mpf(spec['top_m'])
             self.n0_sq = self.eta0 ** 2
+        elif kind == 'peer_model':
+            self.model = spec['model']
+            self.t_amb = mp.mpf(spec['temp_amb_c'])
+            self.t_base = mp.mpf(spec.get('temp_base_c', spec['temp_amb_c']))
+            self.top = mp.mpf(spec['top_m'])
+            self.n0_sq = self.n_sq_phys(mp.mpf(0))
         elif kind == 'n_sounding':
             hs = [mp.mpf(v) for v in spec['height_m']]
             ns = [mp.mpf(v) for v in spec['n']]
@@ -292,6 +322,8 @@ class Profile:
             s += [(top - bot) for bot, top, _, _ in self.invs]
         if k == 'exponential':
             s.append(1 / self.alpha)
+        if k == 'peer_model':
+            s.append(1 / PEER_DECAY[self.model])
         return min(s) if s else None
 
     def make_grid(self):
@@ -361,6 +393,8 @@ class Profile:
             return self.n0_sq + self.sign * self.eta1 ** 2 * (1 - mp.exp(-self.alpha * h))
         if k == 'n_sounding':
             return self.n0_sq + self.spline.value(h)
+        if k == 'peer_model':
+            return (1 + peer_refractivity(self.model, self.t_amb, self.t_base, h)) ** 2
         return (1 + self.refractivity(h)) ** 2
 
     def flat(self, h):

@@ -172,6 +172,15 @@ TurningPoint ExactPath::turning_point(int k) const {
     return quadratic()->turning_point(k);
 }
 
+bool ExactPath::turning_point_before(int k, double dz, TurningPoint& tp) const {
+    if (auto r = exponential()) {
+        if (k != 0 || !exponential_turns(*r)) return false;
+        tp = {r->dz_turn, r->y_turn, r->s > 0};
+        return tp.dz < dz;
+    }
+    return quadratic()->turning_point_before(k, dz, tp);
+}
+
 int ExactPath::first_turning_point_after(double dz) const {
     if (auto r = exponential()) return exponential_turns(*r) && dz <= r->dz_turn ? 0 : -1;
     return quadratic()->first_turning_point_after(dz);

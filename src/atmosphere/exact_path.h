@@ -68,6 +68,9 @@ class ExactPath {
     int turning_point_count() const;
     TurningPoint turning_point(int k) const;
     int first_turning_point_after(double dz) const;
+    /// Whether the k-th turning point lies before dz, and then it in `tp` (computing no more of
+    /// the path than that needs).
+    bool turning_point_before(int k, double dz, TurningPoint& tp) const;
 
     bool hits_ground() const;
     double dz_ground() const;  // +inf when never

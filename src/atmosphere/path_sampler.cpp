@@ -426,9 +426,9 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
     std::vector<double> starts{0.0};
     const int count = path.turning_point_count();
     for (int k = 0; count < 0 || k < count; ++k) {
-        const double t = path.turning_point(k).dz;
-        if (t >= end) break;
-        if (t > starts.back()) starts.push_back(t);
+        TurningPoint tp;
+        if (!path.turning_point_before(k, end, tp)) break;
+        if (tp.dz > starts.back()) starts.push_back(tp.dz);
     }
     if (starts.size() > 1) {
         out.turns = true;

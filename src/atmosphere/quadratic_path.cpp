@@ -683,6 +683,18 @@ TurningPoint QuadraticPath::turning_point(int k) const {
     return tp;
 }
 
+bool QuadraticPath::turning_point_before(int k, double dz, TurningPoint& tp) const {
+    if (!vertex_ahead_ || k < 0 || (k > 0 && !periodic_)) return false;
+    if (k > 0) {
+        // The k-th lies at t1 + k L, L the run's length, which is at least the part computed.
+        const double t1 = first_turn_dz();
+        while (!cur_.done && t1 + k * cur_.t < dz) extend();
+        if (!cur_.done) return false;
+    }
+    tp = turning_point(k);
+    return tp.dz < dz;
+}
+
 int QuadraticPath::first_turning_point_after(double dz) const {
     if (!vertex_ahead_) return -1;
     if (dz <= first_turn_dz()) return 0;

@@ -99,6 +99,11 @@ class QuadraticPath {
     TurningPoint turning_point(int k) const;
     /// The first turning point at or after dz (k >= 0), or -1 if none: for walking them.
     int first_turning_point_after(double dz) const;
+    /// Whether the k-th turning point ahead lies before dz, and then it in `tp`.  The run is
+    /// computed only as far as the answer needs: a trapped ray's second turning height may lie
+    /// far above anything the query reaches (a wide duct), and a ray whose run has already
+    /// lasted past dz turns there no more.
+    bool turning_point_before(int k, double dz, TurningPoint& tp) const;
 
     bool hits_ground() const {
         return fate_ == PathFate::Ground || (fate_ == PathFate::Straight && sg_ < 0);

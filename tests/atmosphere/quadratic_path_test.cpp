@@ -182,6 +182,51 @@ TEST(QuadraticPath, DuctedRaysArePeriodicAndSymmetricAboutEveryTurningPoint) {
         }
 }
 
+// turning_point_before answers whether the k-th turning point lies before a distance without
+// computing the path further than that needs: the same answers and turning points as
+// turning_point(k) on a fresh copy of the path, and the same heights afterwards.
+TEST(QuadraticPath, TurningPointBeforeAgreesWithTheTurningPoints) {
+    auto q = fit_or_die(testing::road_duct_spec(), 1e-11);
+    ASSERT_TRUE(q);
+    const auto ducts = find_ducts(*q);
+    ASSERT_EQ(ducts.size(), 1u);
+    int before = 0, beyond = 0;
+    for (double y0 : {ducts[0].peak, 0.5 * (ducts[0].bottom + ducts[0].top), 0.3, 2.0})
+        for (double elev : {0.0, 4e-4, -7e-4, 0.01, -0.02}) {
+            auto made = QuadraticPath::make(*q, y0, M_PI / 2 - elev);
+            ASSERT_TRUE(made.ok());
+            const int count = made->turning_point_count();
+            for (int k = 0; k < 4; ++k) {
+                const bool exists = count < 0 || k < count;
+                const double dz_k = exists ? QuadraticPath(*made).turning_point(k).dz : 0.0;
+                for (double f : {0.5, 0.999, 1.001, 3.0}) {
+                    const double dz = exists ? f * dz_k : f * 100.0;
+                    const QuadraticPath lazy = *made;
+                    TurningPoint tp;
+                    const bool got = lazy.turning_point_before(k, dz, tp);
+                    EXPECT_EQ(got, exists && dz_k < dz) << y0 << " " << elev << " k=" << k;
+                    if (got) {
+                        const TurningPoint ref = QuadraticPath(*made).turning_point(k);
+                        EXPECT_EQ(tp.dz, ref.dz);
+                        EXPECT_EQ(tp.y, ref.y);
+                        EXPECT_EQ(tp.lowest, ref.lowest);
+                        ++before;
+                    } else {
+                        ++beyond;
+                    }
+                    const QuadraticPath full = *made;
+                    full.sweep();  // the whole run computed
+                    for (double d : {0.25 * dz, dz, 2.0 * dz}) {
+                        EXPECT_EQ(lazy.height_at(d), full.height_at(d));
+                        EXPECT_EQ(lazy.slope_at(d), full.slope_at(d));
+                    }
+                }
+            }
+        }
+    EXPECT_GT(before, 20);
+    EXPECT_GT(beyond, 20);
+}
+
 TEST(QuadraticPath, HomogeneousAirGivesStraightLines) {
     auto q = QuadraticProfile::make({0.0, 10.0}, {0.0}, {0.0}, 1.0003 * 1.0003, 0.0);
     ASSERT_TRUE(q.ok());
