@@ -107,6 +107,37 @@ struct PixelEnds {
     double reflection_error_rad = 0.0;
 };
 
+// The reflections a pixel's band and exact rays follow while they meet the same mirror, and
+// the largest error between them that `error(origin, travelled, band, exact)` measures.  Both
+// reflections leave the point the band ray met: the exact image shows that point from a pixel
+// nearby (the shift measures how far), and its reflection there is what the pixel would show.
+// A small move on a curved mirror turns the reflected ray far but moves the picture only as
+// far as the point moves.  The exact reflection arrives with the exact direction.
+template <typename Error>
+double worst_reflection_error(const LayerStack& rendered, const Scene& scene,
+                              const SceneAccel& accel, const ObjectQuery& objects,
+                              const CurvedPropagator& exact, const PixelCheckSettings& s, RayEnd b,
+                              RayEnd e, const Error& error) {
+    double worst = 0.0, travelled = 0.0, weight = 1.0;
+    for (int bounce = 0;
+         bounce < s.max_bounces && b.hit && e.hit && b.primitive >= 0 && b.primitive == e.primitive;
+         ++bounce) {
+        weight *= reflection_weight(scene, b.primitive);
+        if (weight < 1.0 / 255.0) break;
+        travelled += e.length;
+        glm::dvec3 o = b.point + 1e-6 * b.normal;
+        o.y = std::max(o.y, 0.0);
+        const RayEnd b2 = band_end(rendered, objects, s.camera_y, o,
+                                   glm::reflect(b.direction, b.normal), s.layers);
+        const RayEnd e2 =
+            exact_end(exact, accel, o, glm::reflect(e.direction, b.normal), travelled);
+        worst = std::max(worst, error(o, travelled, b2, e2));
+        b = b2;
+        e = e2;
+    }
+    return worst;
+}
+
 PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
                      const ObjectQuery& objects, const CurvedPropagator& exact,
                      const PixelCheckSettings& s, const glm::dvec3& dir) {
@@ -117,29 +148,11 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     p.band_seen = seen_from(s.eye, b);
     p.exact_seen = seen_from(s.eye, e);
     p.camera_error_rad = end_error_rad(s.eye, 0.0, b, e);
-    double travelled = 0.0, weight = 1.0;
-    for (int bounce = 0;
-         bounce < s.max_bounces && b.hit && e.hit && b.primitive >= 0 && b.primitive == e.primitive;
-         ++bounce) {
-        weight *= reflection_weight(scene, b.primitive);
-        if (weight < 1.0 / 255.0) break;
-        travelled += e.length;
-        // Both reflections leave the point the band ray met: the exact image shows that
-        // point from a pixel nearby (the shift measures how far), and its reflection there
-        // is what the pixel would show.  A small move on a curved mirror turns the reflected
-        // ray far but moves the picture only as far as the point moves.  The exact
-        // reflection arrives with the exact direction.
-        glm::dvec3 o = b.point + 1e-6 * b.normal;
-        o.y = std::max(o.y, 0.0);
-        const RayEnd b2 = band_end(rendered, objects, s.camera_y, o,
-                                   glm::reflect(b.direction, b.normal), s.layers);
-        const RayEnd e2 =
-            exact_end(exact, accel, o, glm::reflect(e.direction, b.normal), travelled);
-        p.reflection_error_rad =
-            std::max(p.reflection_error_rad, end_error_rad(o, travelled, b2, e2));
-        b = b2;
-        e = e2;
-    }
+    p.reflection_error_rad = worst_reflection_error(
+        rendered, scene, accel, objects, exact, s, b, e,
+        [](const glm::dvec3& o, double travelled, const RayEnd& b2, const RayEnd& e2) {
+            return end_error_rad(o, travelled, b2, e2);
+        });
     return p;
 }
 
@@ -211,26 +224,12 @@ OriginEnds origin_ends(const LayerStack& rendered, const Scene& scene, const Sce
     p.band = end_point(origin, b, s.far);
     p.exact = end_point(origin, e, s.far);
     p.camera_error_px = across_px(s.footprint, e.direction, p.band, p.exact, 0.0);
-    double travelled = 0.0, weight = 1.0;
-    for (int bounce = 0;
-         bounce < s.max_bounces && b.hit && e.hit && b.primitive >= 0 && b.primitive == e.primitive;
-         ++bounce) {
-        weight *= reflection_weight(scene, b.primitive);
-        if (weight < 1.0 / 255.0) break;
-        travelled += e.length;
-        // As pixel_ends: both reflections leave the point the band ray met.
-        glm::dvec3 o = b.point + 1e-6 * b.normal;
-        o.y = std::max(o.y, 0.0);
-        const RayEnd b2 = band_end(rendered, objects, s.camera_y, o,
-                                   glm::reflect(b.direction, b.normal), s.layers);
-        const RayEnd e2 =
-            exact_end(exact, accel, o, glm::reflect(e.direction, b.normal), travelled);
-        p.reflection_error_px = std::max(
-            p.reflection_error_px, across_px(s.footprint, e2.direction, end_point(o, b2, s.far),
-                                             end_point(o, e2, s.far), travelled));
-        b = b2;
-        e = e2;
-    }
+    p.reflection_error_px = worst_reflection_error(
+        rendered, scene, accel, objects, exact, s, b, e,
+        [&s](const glm::dvec3& o, double travelled, const RayEnd& b2, const RayEnd& e2) {
+            return across_px(s.footprint, e2.direction, end_point(o, b2, s.far),
+                             end_point(o, e2, s.far), travelled);
+        });
     return p;
 }
 
