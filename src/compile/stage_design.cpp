@@ -132,18 +132,9 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
         d.stack = merge_invisible_boundaries(air_layers(air, h), ctx.eye_y);
         d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
         if (uniform || d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
-        const int fewer = std::max(
-            2, std::min(count - 1,
-                        static_cast<int>(count * double(kMaxTraceLevel - 1) / d.max_trace_level)));
-        d.warnings.push_back("a camera ray with its reflections reached trace level " +
-                             std::to_string(d.max_trace_level) + " with " + std::to_string(count) +
-                             " index steps; redesigned with " + std::to_string(fewer));
-        count = fewer;
+        count = fewer_steps_for_trace_level(d, count, "index steps");
     }
-    if (d.max_trace_level > kMaxTraceLevel)
-        d.warnings.push_back(
-            "some camera rays reach POV-Ray's trace-level ceiling with these layers: they "
-            "will render black");
+    warn_past_trace_level_ceiling(d);
     d.left_out.push_back("layers above y = " + sig(top, 4) +
                          ": no camera ray reaches higher inside the scene, or the index no "
                          "longer changes");
@@ -168,6 +159,23 @@ ObjectQuery object_query(const SceneAccel& accel) {
         if (!h) return std::nullopt;
         return ObjectHit{h->t, h->normal, h->primitive};
     };
+}
+
+int fewer_steps_for_trace_level(Design& d, int count, const std::string& steps) {
+    const int fewer = std::max(
+        2, std::min(count - 1,
+                    static_cast<int>(count * double(kMaxTraceLevel - 1) / d.max_trace_level)));
+    d.warnings.push_back("a camera ray with its reflections reached trace level " +
+                         std::to_string(d.max_trace_level) + " with " + std::to_string(count) +
+                         " " + steps + "; redesigned with " + std::to_string(fewer));
+    return fewer;
+}
+
+void warn_past_trace_level_ceiling(Design& d) {
+    if (d.max_trace_level > kMaxTraceLevel)
+        d.warnings.push_back(
+            "some camera rays reach POV-Ray's trace-level ceiling with these layers: they "
+            "will render black");
 }
 
 int deepest_trace_level(const CompileContext& ctx, const LayerStack& rendered,
@@ -283,10 +291,7 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
         d.left_out.push_back("layers above y = " + sig(top, 4) +
                              ": no camera ray reaches higher inside the scene");
         d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
-        if (d.max_trace_level > kMaxTraceLevel)
-            d.warnings.push_back(
-                "some camera rays reach POV-Ray's trace-level ceiling with these layers: they "
-                "will render black");
+        warn_past_trace_level_ceiling(d);
         return d;
     }
     // Errors of the homogeneous model: when no ray bends by the tolerance, no layers at all.

@@ -226,18 +226,9 @@ Result<Design> design_many_origins(const CompileContext& ctx, const CameraRays& 
         d.stack = s;
         d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
         if (uniform || d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
-        const int fewer = std::max(
-            2, std::min(count - 1,
-                        static_cast<int>(count * double(kMaxTraceLevel - 1) / d.max_trace_level)));
-        d.warnings.push_back("a camera ray with its reflections reached trace level " +
-                             std::to_string(d.max_trace_level) + " with " + std::to_string(count) +
-                             " steps; redesigned with " + std::to_string(fewer));
-        count = fewer;
+        count = fewer_steps_for_trace_level(d, count, "steps");
     }
-    if (d.max_trace_level > kMaxTraceLevel)
-        d.warnings.push_back(
-            "some camera rays reach POV-Ray's trace-level ceiling with these layers: they "
-            "will render black");
+    warn_past_trace_level_ceiling(d);
     d.left_out.push_back("layers of the " + camera + " camera's rays between y = " + sig(lo, 4) +
                          " and " + sig(hi, 4) +
                          " only: no ray, from its own origin, reaches lower or higher inside "

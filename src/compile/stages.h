@@ -132,6 +132,14 @@ struct Design {
 int deepest_trace_level(const CompileContext& ctx, const LayerStack& rendered,
                         const CameraRays& rays);
 
+/// A design of `count` steps whose rays reached d.max_trace_level past POV-Ray's ceiling: the
+/// count to design again with (scaled to fit, at least 2, fewer than `count`), with the warning
+/// that says so (`steps` names them: "index steps", "steps").
+int fewer_steps_for_trace_level(Design& d, int count, const std::string& steps);
+
+/// The warning, when some camera rays of d reach POV-Ray's trace-level ceiling.
+void warn_past_trace_level_ceiling(Design& d);
+
 /// Every ray's error (pixels) of the design at the scene's edge against the exact path
 /// (layers/outcome.h), +inf for a ray the band tracer cut off, and the most boundary events
 /// of a ray.
