@@ -546,17 +546,78 @@ bool QuadraticPath::extend() const {
     return true;
 }
 
-void QuadraticPath::complete() const {
-    while (extend()) {
+void QuadraticPath::cross_pieces(double t_stop) const {
+    // extend()'s general case, piece after piece with the cursor in locals: the run enters
+    // each piece at a knot (not at its origin or a turning point) and leaves it at the next
+    // knot, before the end piece and the top; it stops before the piece holding the start
+    // while the start's run distance is unknown (extend() marks it there).  The same
+    // arithmetic as extend(), so the segments are the same.
+    Cursor& c = cur_;
+    Sweep& s = sweep_;
+    if (c.done || c.first || c.at_vertex) return;
+    const QuadraticProfile& p = *profile_;
+    const int m = p.piece_count();
+    const int dir = s.dir;
+    const int stop_piece = s.end == SweepEnd::Vertex ? end_piece_ : -2;
+    const double level = e0_ - Q0_;
+    const std::vector<double>& knots = p.knots();
+    int j = c.j;
+    double y = c.y, t = c.t, slope = c.slope, Qb = c.Q;
+    if (s.segments.empty()) s.segments.reserve(64);
+    while (t < t_stop && j >= 0 && j < m && j != stop_piece) {
+        const double ylo = knots[j], yhi = knots[j + 1];
+        if (!t1_known_ && y0_ >= ylo && y0_ <= yhi) break;
+        const double b = p.b(j), cq = p.c(j);
+        const double Np = b + 2.0 * cq * (y - ylo);
+        const double a_here = 0.5 * Np * inv_beta_sq_;
+        const double kappa = cq * inv_beta_sq_;
+        const double lambda = p.root_abs_c(j) * inv_beta_;
+        const double yb = dir > 0 ? yhi : ylo;
+        const double db = yb - y;
+        Qb = p.e(dir > 0 ? j + 1 : j) - level;
+        const double s_b = dir * std::sqrt(std::max(0.0, Qb)) * inv_beta_;
+        QuadraticSegment& seg = s.segments.emplace_back();
+        seg.piece = j;
+        seg.kappa = kappa;
+        seg.lambda = lambda;
+        seg.t0 = t;
+        seg.ta = t;
+        seg.ya = y;
+        seg.sa = slope;
+        seg.aa = a_here;
+        seg.y1 = yb;
+        t += crossing_time(db, slope, s_b, a_here, kappa, lambda);
+        seg.t1 = t;
+        y = yb;
+        slope = s_b;
+        j += dir;
     }
+    if (j == c.j) return;
+    c.j = j;
+    c.y = y;
+    c.t = t;
+    c.slope = slope;
+    c.Q = std::max(0.0, Qb);
+}
+
+void QuadraticPath::complete() const {
+    do {
+        cross_pieces(kInf);
+    } while (extend());
 }
 
 void QuadraticPath::ensure_time(double t) const {
-    while (!cur_.done && cur_.t < t) extend();
+    while (!cur_.done && cur_.t < t) {
+        cross_pieces(t);
+        if (cur_.t >= t) break;
+        extend();
+    }
 }
 
 void QuadraticPath::ensure_t1() const {
-    while (!t1_known_ && extend()) {
+    while (!t1_known_) {
+        cross_pieces(kInf);
+        if (!extend()) break;
     }
     if (!t1_known_) {
         t1_ = sweep_.length;
@@ -688,7 +749,10 @@ bool QuadraticPath::turning_point_before(int k, double dz, TurningPoint& tp) con
     if (k > 0) {
         // The k-th lies at t1 + k L, L the run's length, which is at least the part computed.
         const double t1 = first_turn_dz();
-        while (!cur_.done && t1 + k * cur_.t < dz) extend();
+        while (!cur_.done && t1 + k * cur_.t < dz) {
+            cross_pieces((dz - t1) / k);
+            if (t1 + k * cur_.t < dz) extend();
+        }
         if (!cur_.done) return false;
     }
     tp = turning_point(k);

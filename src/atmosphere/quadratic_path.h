@@ -159,6 +159,9 @@ class QuadraticPath {
     const QuadraticSegment& segment_for(double t) const;
 
     bool extend() const;  // one more segment; false when the run is complete
+    /// Segments from knot to knot, as extend() computes them, while the run's distance is
+    /// below t_stop and nothing else happens in the piece.
+    void cross_pieces(double t_stop) const;
     void complete() const;
     void ensure_time(double t) const;
     void ensure_t1() const;

@@ -227,6 +227,79 @@ TEST(QuadraticPath, TurningPointBeforeAgreesWithTheTurningPoints) {
     EXPECT_GT(beyond, 20);
 }
 
+// The run is computed piece after piece from knot to knot (QuadraticPath::cross_pieces) and
+// by the general step where something else happens (the origin's piece, a turning point, the
+// piece holding the start, the top).  Every segment must take up where the one before ended,
+// in the next piece, and reach its far knot at its own crossing time; the start must lie on
+// the run at the first turning point's distance; and the run must be the same however it was
+// computed: in one go, or in small steps by height queries (each stopping the piece loop at a
+// distance).  A loop that ran into the end piece, past the start's piece or the top, or that
+// carried the slope or n^2 - beta^2 wrongly from piece to piece fails here.
+TEST(QuadraticPath, EverySegmentTakesUpWhereTheLastEndedAndReachesItsKnot) {
+    std::mt19937_64 rng(23);
+    int segments = 0, turning = 0, grounded = 0, ducted = 0;
+    for (const auto& spec : {testing::hot_road_spec(), testing::road_duct_spec()}) {
+        auto q = fit_or_die(spec, 1e-11);
+        ASSERT_TRUE(q);
+        for (const auto& r : random_rays(rng, 150, 0.02, 8.0, 1e-6, 0.05)) {
+            auto made = QuadraticPath::make(*q, r.y0, M_PI / 2 - r.elev);
+            ASSERT_TRUE(made.ok());
+            const std::string what =
+                "y0=" + std::to_string(r.y0) + " elev=" + std::to_string(r.elev);
+            const QuadraticPath full = *made;
+            const Sweep& s = full.sweep();
+            for (size_t k = 0; k < s.segments.size(); ++k) {
+                const QuadraticSegment& g = s.segments[k];
+                if (k > 0) {
+                    const QuadraticSegment& prev = s.segments[k - 1];
+                    ASSERT_EQ(g.t0, prev.t1) << what << " segment " << k;
+                    ASSERT_EQ(g.piece, prev.piece + s.dir) << what << " segment " << k;
+                    // Entered at the knot the last one reached (a segment ending on a turning
+                    // point is anchored there instead).
+                    const bool vertex_end = k + 1 == s.segments.size() && s.end == SweepEnd::Vertex;
+                    if (!vertex_end) ASSERT_EQ(g.ya, prev.y1) << what << " segment " << k;
+                }
+                ASSERT_GE(g.t1, g.t0) << what;
+                EXPECT_NEAR(sweep_height(s, g.t1), g.y1, 1e-9 * (1.0 + std::fabs(g.y1)))
+                    << what << " segment " << k;
+                ++segments;
+            }
+            if (full.turning_point_count() != 0) {
+                // The start lies on the run at the first turning point's distance.
+                const double t1 = full.first_turn_dz();
+                EXPECT_NEAR(sweep_height(s, t1), r.y0, 1e-9 * (1.0 + r.y0)) << what;
+                ++turning;
+            }
+            grounded += full.hits_ground();
+            ducted += full.fate() == PathFate::Ducted;
+            // In small steps: the same segments, bit for bit.
+            const QuadraticPath stepped = *made;
+            const double reach = std::min(std::isfinite(full.dz_ground()) ? full.dz_ground() : 1e4,
+                                          full.turning_point_count() != 0
+                                              ? full.first_turn_dz() + s.length
+                                              : s.length + 1.0);
+            // (Short of the ground hit itself, where a path computed just up to it and one
+            // computed beyond evaluate the last segment and its end: 0 against -4e-17.)
+            for (int i = 1; i < 64; ++i) {
+                const double d = reach * i / 64.0;
+                ASSERT_EQ(stepped.height_at(d), full.height_at(d)) << what << " d=" << d;
+                ASSERT_EQ(stepped.slope_at(d), full.slope_at(d)) << what << " d=" << d;
+            }
+            EXPECT_EQ(stepped.dz_ground(), full.dz_ground()) << what;
+            const Sweep& t = stepped.sweep();
+            ASSERT_EQ(t.segments.size(), s.segments.size()) << what;
+            for (size_t k = 0; k < s.segments.size(); ++k) {
+                EXPECT_EQ(t.segments[k].t1, s.segments[k].t1) << what;
+                EXPECT_EQ(t.segments[k].sa, s.segments[k].sa) << what;
+            }
+        }
+    }
+    EXPECT_GT(segments, 2000);
+    EXPECT_GT(turning, 30);
+    EXPECT_GT(grounded, 30);
+    EXPECT_GT(ducted, 10);
+}
+
 TEST(QuadraticPath, HomogeneousAirGivesStraightLines) {
     auto q = QuadraticProfile::make({0.0, 10.0}, {0.0}, {0.0}, 1.0003 * 1.0003, 0.0);
     ASSERT_TRUE(q.ok());
