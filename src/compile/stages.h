@@ -41,8 +41,9 @@ inline constexpr double kLayersExtentFactor = 1000.0;
 
 /// On the curved Earth a band ray's final direction is the flattened frame's, which is
 /// turned by dz / R from the eye's where the ray stops bending (at most where the layers
-/// end): the layers may reach no farther than this many radians of the Earth, 1 mrad (6.4 km
-/// on the Earth), so that the sky POV-Ray looks up is at most that far off.
+/// end): the layers at and above the camera's may reach no farther than this many radians of
+/// the Earth, 1 mrad (6.4 km on the Earth), so that the sky POV-Ray looks up is at most that far
+/// off.  (Those below reach as far as a camera ray turns in them: layers_reach_below.)
 inline constexpr double kMaxCurvedSkyRad = 1e-3;
 
 /// What every stage reads: the scene and its atmosphere as the compiler sees them.
