@@ -174,10 +174,10 @@ INSTANTIATE_TEST_SUITE_P(Ground, RealAirImageDiff, ::testing::Values(true, false
 constexpr int kCropW = 320, kCropH = 240;
 constexpr int kCropX = 84, kCropY = 94, kCropWidth = 92, kCropHeight = 72;  // 0-based
 constexpr int kSkyX = 146, kSkyWidth = 25, kSkyHeight = 66;  // sky between the car and the van
-// Measured (docs/atmospheres.md): 0.88 % of the crop, 0 of the sky strip; with the camera's
-// layer at the mean index and the layers below the camera ending with those above at 1.1
-// extents, 3.2 % and 25 pixels (1.5 %, a line of ground across the sky); with the camera's
-// index alone right, 1.45 % and the same line.
+// Measured (docs/atmospheres.md): 7 px (0.106 %) of the crop, 0 of the sky strip; with the
+// camera's layer at the mean index of its heights and the layers below the camera ending with
+// those above at 1.1 extents, 161 px (2.43 %: the car's top mirrored at the camera layer's
+// floor) and 25 px of the strip (1.52 %: a line of ground across the sky).
 constexpr double kCropUnexplained = 0.012;
 constexpr double kSkyUnexplained = 0.005;
 
