@@ -197,6 +197,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                              ? many_origins_reach(ctx, rendered, centres, &rep.max_crossings)
                              : layers_reach(ctx, rendered, centres);
     rep.layers_extent = reach;
+    const std::optional<double> reach_below =
+        ctx.many_origins ? std::nullopt : layers_reach_below(ctx, rendered, centres, reach);
     const int k_cam = stack.layer_at(ctx.eye_y);
     rep.below_camera = k_cam;
     rep.above_camera = stack.boundaries() - k_cam;
@@ -210,8 +212,11 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
                                    ": the index is within 1% of eta(infinity), or no camera ray "
                                    "reaches higher");
-        rep.left_out.push_back("the layers beyond " + sig(reach, 4) +
-                               " units from the camera: every camera ray has left them by then");
+        rep.left_out.push_back(
+            "the layers beyond " + sig(reach, 4) + " units from the camera" +
+            (reach_below ? " (those below the camera's beyond " + sig(*reach_below, 4) + ")"
+                         : std::string()) +
+            ": every camera ray has left them by then");
     }
     if (ctx.many_origins && !(rep.layers > 0)) {
         // No layers: nothing bends, and no pixel errs.
@@ -245,7 +250,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                   sig(rep.max_error_px, 3) + " px (tolerance " + sig(rep.tolerance_px, 3) + " px).",
         "Do not edit: run mirage compile again."};
     const EmittedFiles files =
-        emit_files(ctx, stack, reach, abs_dir.string(), rep.image_path, header);
+        emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path, header);
     clock.done("emit");
 
     // What every pixel and sample shows: its ray through the rendered layers against the
@@ -267,6 +272,11 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         }
         ps.layers = {ctx.camera.location.x - reach, ctx.camera.location.x + reach,
                      ctx.camera.location.z - reach, ctx.camera.location.z + reach};
+        if (reach_below) {
+            const double r = *reach_below;
+            ps.layers_below = HorizontalBox{ctx.camera.location.x - r, ctx.camera.location.x + r,
+                                            ctx.camera.location.z - r, ctx.camera.location.z + r};
+        }
         // The exact paths a twentieth of a pixel from the truth: errors read to that.
         ps.exact_tolerance_rad = 0.05 * finest;
         ps.progress = opt.progress;

@@ -69,9 +69,11 @@ RayEnd exact_end(const CurvedPropagator& exact, const SceneAccel& accel, const g
 }
 
 RayEnd band_end(const LayerStack& stack, const ObjectQuery& objects, double camera_y,
-                const glm::dvec3& origin, const glm::dvec3& dir, const HorizontalBox& box) {
-    const Trace3dOutcome t =
-        trace_layers_3d(stack, origin, dir, box, box, Trace3dOptions{100000, &objects, camera_y});
+                const glm::dvec3& origin, const glm::dvec3& dir, const HorizontalBox& box,
+                const std::optional<HorizontalBox>& below) {
+    Trace3dOptions o{100000, &objects, camera_y};
+    o.below = below;
+    const Trace3dOutcome t = trace_layers_3d(stack, origin, dir, box, box, o);
     RayEnd e;
     e.cut_off = t.cut_off;
     if (t.ground) {  // the ground where no object is: the exact ray ends there too
@@ -128,7 +130,7 @@ double worst_reflection_error(const LayerStack& rendered, const Scene& scene,
         glm::dvec3 o = b.point + 1e-6 * b.normal;
         o.y = std::max(o.y, 0.0);
         const RayEnd b2 = band_end(rendered, objects, s.camera_y, o,
-                                   glm::reflect(b.direction, b.normal), s.layers);
+                                   glm::reflect(b.direction, b.normal), s.layers, s.layers_below);
         const RayEnd e2 =
             exact_end(exact, accel, o, glm::reflect(e.direction, b.normal), travelled);
         worst = std::max(worst, error(o, travelled, b2, e2));
@@ -141,7 +143,7 @@ double worst_reflection_error(const LayerStack& rendered, const Scene& scene,
 PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
                      const ObjectQuery& objects, const CurvedPropagator& exact,
                      const PixelCheckSettings& s, const glm::dvec3& dir) {
-    RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, dir, s.layers);
+    RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, dir, s.layers, s.layers_below);
     RayEnd e = exact_end(exact, accel, s.eye, dir, 0.0);
     PixelEnds p;
     p.cut_off = b.cut_off;
@@ -183,8 +185,9 @@ double across_px(const PixelFootprint& fp, const glm::dvec3& exact_direction, co
 // layer's index, the ground's) to the first surface or up to the ground, then through the
 // layers.
 RayEnd band_end_from(const LayerStack& stack, const ObjectQuery& objects, double camera_y,
-                     const glm::dvec3& origin, const glm::dvec3& dir, const HorizontalBox& box) {
-    if (origin.y >= 0.0) return band_end(stack, objects, camera_y, origin, dir, box);
+                     const glm::dvec3& origin, const glm::dvec3& dir, const HorizontalBox& box,
+                     const std::optional<HorizontalBox>& layers_below) {
+    if (origin.y >= 0.0) return band_end(stack, objects, camera_y, origin, dir, box, layers_below);
     const double below = dir.y > 0.0 ? -origin.y / dir.y : kInf;
     RayEnd e;
     if (auto h = objects(origin, dir, below)) {
@@ -202,7 +205,7 @@ RayEnd band_end_from(const LayerStack& stack, const ObjectQuery& objects, double
     }
     glm::dvec3 at = origin + below * dir;
     at.y = 0.0;
-    e = band_end(stack, objects, camera_y, at, dir, box);
+    e = band_end(stack, objects, camera_y, at, dir, box, layers_below);
     e.length += below;
     return e;
 }
@@ -217,7 +220,7 @@ OriginEnds origin_ends(const LayerStack& rendered, const Scene& scene, const Sce
                        const ObjectQuery& objects, const CurvedPropagator& exact,
                        const PixelCheckSettings& s, const glm::dvec3& origin,
                        const glm::dvec3& dir) {
-    RayEnd b = band_end_from(rendered, objects, s.camera_y, origin, dir, s.layers);
+    RayEnd b = band_end_from(rendered, objects, s.camera_y, origin, dir, s.layers, s.layers_below);
     RayEnd e = exact_end(exact, accel, origin, dir, 0.0);
     OriginEnds p;
     p.cut_off = b.cut_off;

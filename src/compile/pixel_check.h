@@ -22,10 +22,12 @@ namespace mirage {
 class Atmosphere;  // atmosphere/exact_path.h
 
 struct PixelCheckSettings {
-    int width = 0, height = 0;          // the image; rays are row-major from the top row
-    glm::dvec3 eye{0.0};                // where every camera ray starts
-    double camera_y = 0.0;              // the camera's height, for POV-Ray's ior quotients
-    HorizontalBox layers{};             // horizontal extent of the rendered layers
+    int width = 0, height = 0;  // the image; rays are row-major from the top row
+    glm::dvec3 eye{0.0};        // where every camera ray starts
+    double camera_y = 0.0;      // the camera's height, for POV-Ray's ior quotients
+    HorizontalBox layers{};     // horizontal extent of the rendered layers
+    // Of those below the camera's layer, when they reach farther (Trace3dOptions::below).
+    std::optional<HorizontalBox> layers_below = std::nullopt;
     double exact_tolerance_rad = 1e-5;  // sampling tolerance of the exact paths
     int max_bounces = 4;                // reflections followed, while their weight shows
     bool progress = false;              // a progress bar on stderr (on a terminal)

@@ -23,9 +23,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 int trace_levels(const CompileContext& ctx, const LayerStack& stack, const ObjectQuery& objects,
                  double camera_y, const glm::dvec3& origin, const glm::dvec3& dir, int level,
                  double weight) {
-    const Trace3dOutcome t =
-        trace_layers_3d(stack, origin, dir, ctx.scene_box, ctx.layers_box,
-                        Trace3dOptions{4 * kMaxTraceLevel, &objects, camera_y});
+    Trace3dOptions o{4 * kMaxTraceLevel, &objects, camera_y};
+    o.below = ctx.layers_below_box;
+    const Trace3dOutcome t = trace_layers_3d(stack, origin, dir, ctx.scene_box, ctx.layers_box, o);
     level += t.crossings;
     if (t.cut_off) return std::max(level, 4 * kMaxTraceLevel);
     int deepest = level;
@@ -129,7 +129,7 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
         std::vector<double> h = uniform ? equal_height_boundaries(top, count)
                                         : equal_index_boundaries(air, top, count, min_thickness);
         move_off_camera(h, ctx.eye_y);
-        d.stack = merge_invisible_boundaries(air_layers(air, h), ctx.eye_y);
+        d.stack = merge_invisible_boundaries(air_layers_for_eye(air, h, ctx.eye_y), ctx.eye_y);
         d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
         if (uniform || d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
         count = fewer_steps_for_trace_level(d, count, "index steps");
@@ -261,6 +261,24 @@ double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const
         reach[i] = 1.1 * p.points[p.points.size() - 2].x;
     });
     const double r = std::max(1.1 * ctx.extent, *std::max_element(reach.begin(), reach.end()));
+    return std::min(r, cap);
+}
+
+std::optional<double> layers_reach_below(const CompileContext& ctx, const LayerStack& rendered,
+                                         const CameraRays& rays, double reach) {
+    if (!ctx.layers_below_box || rendered.boundaries() == 0) return std::nullopt;
+    const double cap = ctx.layers_below_box->x1 - ctx.camera.location.x;
+    const ObjectQuery objects = object_query(*ctx.accel);
+    const double camera_y = ctx.reference_y(rendered);
+    std::vector<double> last(rays.size(), 0.0);
+    parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        Trace3dOptions o{100000, &objects, camera_y};
+        o.below = ctx.layers_below_box;
+        const Trace3dOutcome t = trace_layers_3d(rendered, ctx.camera.location, rays.direction[i],
+                                                 ctx.scene_box, ctx.layers_box, o);
+        if (!t.cut_off) last[i] = 1.1 * t.last_event;
+    });
+    const double r = std::max(reach, *std::max_element(last.begin(), last.end()));
     return std::min(r, cap);
 }
 

@@ -8,8 +8,8 @@
 namespace mirage {
 
 EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, double reach,
-                        const std::string& out_dir, const std::string& image,
-                        const std::vector<std::string>& header) {
+                        std::optional<double> reach_below, const std::string& out_dir,
+                        const std::string& image, const std::vector<std::string>& header) {
     const glm::dvec3& eye = ctx.camera.location;
     LayerEmitSettings es;
     es.camera_y = ctx.reference_y(stack);
@@ -26,6 +26,10 @@ EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, doub
         if (ctx.many_origins) es.lowest_y = std::min(es.lowest_y, corner.y);
     es.ground_height = ctx.settings.ground_height;
     es.extent = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
+    if (reach_below) {
+        const double r = *reach_below;
+        es.extent_below = HorizontalBox{eye.x - r, eye.x + r, eye.z - r, eye.z + r};
+    }
     es.layout = ctx.gaps ? LayerLayout::Gaps : LayerLayout::Nested;
     es.gap = ctx.gap;
     es.header = header;

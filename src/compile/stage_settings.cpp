@@ -202,6 +202,12 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
             // (curved_propagator.h): POV-Ray looks the sky up with it unturned.  The layers
             // reach just past the scene, so that angle stays below 1.1 extent / R.
             const double near = 1.1 * extent;
+            // The layers below the camera's may reach as far as on flat ground: a camera ray
+            // that turns in them beyond the scene (one that skims a layer just under its
+            // index) would otherwise leave them still going down, and POV-Ray's straight ray
+            // meet the ground there instead of turning up to the sky; it stops bending where
+            // it rises past the camera's layer.
+            ctx.layers_below_box = ctx.layers_box;
             ctx.layers_box = {eye.x - near, eye.x + near, eye.z - near, eye.z + near};
             const double R = air->earth_radius();
             if (near > kMaxCurvedSkyRad * R) {

@@ -41,8 +41,9 @@ inline constexpr double kLayersExtentFactor = 1000.0;
 
 /// On the curved Earth a band ray's final direction is the flattened frame's, which is
 /// turned by dz / R from the eye's where the ray stops bending (at most where the layers
-/// end): the layers may reach no farther than this many radians of the Earth, 1 mrad (6.4 km
-/// on the Earth), so that the sky POV-Ray looks up is at most that far off.
+/// end): the layers at and above the camera's may reach no farther than this many radians of
+/// the Earth, 1 mrad (6.4 km on the Earth), so that the sky POV-Ray looks up is at most that far
+/// off.  (Those below reach as far as a camera ray turns in them: layers_reach_below.)
 inline constexpr double kMaxCurvedSkyRad = 1e-3;
 
 /// What every stage reads: the scene and its atmosphere as the compiler sees them.
@@ -59,9 +60,12 @@ struct CompileContext {
     std::string name;
     Camera camera;
     double eye_y = 0.0;
-    double extent = 0.0;                      // horizontal reach of the scene from the camera
-    HorizontalBox scene_box{};                // the scene, around the camera
-    HorizontalBox layers_box{};               // how far the layers may reach
+    double extent = 0.0;         // horizontal reach of the scene from the camera
+    HorizontalBox scene_box{};   // the scene, around the camera
+    HorizontalBox layers_box{};  // how far the layers may reach
+    // How far the layers below the camera's may reach when farther than layers_box (the
+    // curved Earth: compile_settings), else nothing.
+    std::optional<HorizontalBox> layers_below_box = std::nullopt;
     bool gaps = false;                        // the gap layout (see pov/emit_layers.h)
     double gap = 0.0;                         // its gap thickness
     double steepest_sine = 0.0;               // |sin(elevation)| of the steepest camera ray
@@ -173,6 +177,13 @@ std::optional<glm::dvec3> entry_into_atmosphere(const glm::dvec3& origin, const 
 /// at most ctx.layers_box.
 double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const CameraRays& rays);
 
+/// How far the rendered layers below the camera's must reach, when ctx.layers_below_box lets
+/// them reach farther than `reach` (that of the others): as far as a camera ray still meets
+/// one of them (the band tracer's last boundary event, + 10 %), at least `reach`, at most
+/// ctx.layers_below_box.  Nothing otherwise.
+std::optional<double> layers_reach_below(const CompileContext& ctx, const LayerStack& rendered,
+                                         const CameraRays& rays, double reach);
+
 /// The texts of the outputs, by file name.
 struct EmittedFiles {
     std::string include, csv, ini;
@@ -182,8 +193,8 @@ struct EmittedFiles {
 /// the template with them into `image` (finding the include in `out_dir`), the layer table.
 /// `header` lines open the include.
 EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, double reach,
-                        const std::string& out_dir, const std::string& image,
-                        const std::vector<std::string>& header);
+                        std::optional<double> reach_below, const std::string& out_dir,
+                        const std::string& image, const std::vector<std::string>& header);
 
 /// The rays POV-Ray's band render follows: stops band rays at the scene's surfaces.
 ObjectQuery object_query(const SceneAccel& accel);

@@ -52,6 +52,13 @@ LayerStack air_layers(const Atmosphere& air, const std::vector<double>& heights)
     return s;
 }
 
+LayerStack air_layers_for_eye(const Atmosphere& air, const std::vector<double>& heights,
+                              double eye_y) {
+    LayerStack s = air_layers(air, heights);
+    s.excess[s.layer_at(eye_y)] = air.n_sq(eye_y) - air.n_sq(0.0);
+    return s;
+}
+
 double air_peak_below(const Atmosphere& air, double y0, double elevation, double scene_dz,
                       double ceiling) {
     auto path = ExactPath::make(air, y0, M_PI / 2 - elevation);

@@ -28,6 +28,14 @@ double air_constant_above(const Atmosphere& air);
 /// boundary.  Its eta0 is n(0).
 LayerStack air_layers(const Atmosphere& air, const std::vector<double>& heights);
 
+/// The same, its camera's layer (the one holding eye_y) holding n^2 at eye_y instead of the
+/// mean: a band ray keeps n cos(e) across every boundary, so with the eye's own index every
+/// camera ray carries the exact path's invariant, and the directions it takes in every other
+/// layer (where it turns, the sky it leaves for) are those the layers' indices give the exact
+/// path (docs/atmospheres.md, "Bands for real air").
+LayerStack air_layers_for_eye(const Atmosphere& air, const std::vector<double>& heights,
+                              double eye_y);
+
 /// The highest point of the exact path from height y0 at `elevation` (rad) over the
 /// horizontal distance [0, scene_dz] (to the ground, if it meets it first), counted only as
 /// far as the path is at or below `ceiling` afterwards: a path that rises above the ceiling

@@ -59,6 +59,13 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
     int k = s.layer_at(origin.y);
     bool in_scene = true;
     const int top = s.boundaries();
+    // Each layer but the camera's is an object of POV-Ray's within a box: those below the
+    // camera's layer within `below`, the others within `layers`.  Outside its layer's box, and
+    // in the camera's layer, a ray is in POV-Ray's atmosphere (`free`): k is then the layer
+    // its height is in, and the next boundary refracts only where the layer beyond it is there.
+    const HorizontalBox& below = opt.below ? *opt.below : layers;
+    auto box_of = [&](int layer) -> const HorizontalBox& { return layer < k_cam ? below : layers; };
+    bool free = k == k_cam || !box_of(k).contains(origin.x, origin.z);
     for (int events = 0;; ++events) {
         if (events >= max_events) {
             out.cut_off = true;
@@ -75,18 +82,27 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
             t_plane = (floor - p.y) / d.y;
             next = k - 1;  // -1: the ground
         }
+        t_plane = std::max(t_plane, 0.0);
         // Unit directions and scene-sized distances: no overflow for hypot to guard against.
         const double hlen = std::sqrt(d.x * d.x + d.z * d.z);
-        const double t_scene =
-            in_scene && hlen > 0.0
-                ? distance_to_box_edge(scene, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
-                : kInf;
-        const double t_layers =
-            hlen > 0.0 ? distance_to_box_edge(layers, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
-                       : kInf;
+        auto to_edge = [&](const HorizontalBox& b) {
+            if (!b.contains(p.x, p.z)) return 0.0;
+            return hlen > 0.0 ? distance_to_box_edge(b, p.x, p.z, d.x / hlen, d.z / hlen) / hlen
+                              : kInf;
+        };
+        const double t_scene = in_scene ? (hlen > 0.0 ? to_edge(scene) : kInf) : kInf;
+        // Inside a layer's box: where the ray leaves it sideways.  Free: whether the layer
+        // beyond the boundary ahead is there where the ray meets it.
+        const double t_box = free ? kInf : to_edge(box_of(k));
+        bool present = true;
+        if (free && next >= 0 && next != k_cam && std::isfinite(t_plane)) {
+            const glm::dvec3 q = p + t_plane * d;
+            present = box_of(next).contains(q.x, q.z);
+        }
+        const bool leaves_box = t_box <= t_plane;
+        const double t_step = std::min(t_plane, t_box);
         if (objects) {
-            const double reach = std::min(t_plane, t_layers);
-            if (auto hit = (*objects)(p, d, std::isfinite(reach) ? reach : 1e30)) {
+            if (auto hit = (*objects)(p, d, std::isfinite(t_step) ? t_step : 1e30)) {
                 if (in_scene && t_scene < hit->t) {
                     out.scene_point = p + t_scene * d;
                     out.scene_dir = d;
@@ -97,15 +113,24 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
                 return out;
             }
         }
-        if (in_scene && t_scene <= t_plane) {
+        if (in_scene && t_scene <= t_step) {
             out.scene_point = p + t_scene * d;
             out.scene_dir = d;
             in_scene = false;
         }
-        if (t_layers <= t_plane || !std::isfinite(t_plane)) {
+        if (!std::isfinite(t_step)) {
+            // Straight on for good (every object ahead was asked for above, to 1e30).
             out.sky = d.y > 0.0;
             out.final_dir = d;
             return out;
+        }
+        if (leaves_box) {
+            // Out of the layer's box into POV-Ray's atmosphere; its vertical face refracts by
+            // the layer's index over the camera's, which leaves a near-horizontal ray's slope as
+            // it was (not followed).
+            p += t_box * d;
+            free = true;
+            continue;
         }
         p += t_plane * d;
         if (next < 0) {  // the ground
@@ -116,12 +141,20 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
             }
             return out;
         }
-        // Snell's law at the horizontal boundary, with POV-Ray's ratio eta = n_from / n_to.
+        if (free && (next == k_cam || !present)) {  // no object there: on in the atmosphere
+            k = next;
+            free = next == k_cam || !box_of(next).contains(p.x, p.z);
+            continue;
+        }
+        // Snell's law at the horizontal boundary, with POV-Ray's ratio eta = n_from / n_to
+        // (from the atmosphere when free, into it when entering the camera's layer).
         // POV-Ray passes a boundary of ratio 1 without refracting or spending a trace level.
+        const int from = free ? k_cam : k;
         const double eta =
-            opt.pov_precision ? pov_ior_ratio(s, k_cam, k, next) : s.index(k) / s.index(next);
+            opt.pov_precision ? pov_ior_ratio(s, k_cam, from, next) : s.index(from) / s.index(next);
         if (std::fabs(eta - 1.0) < 1e-10) {
             k = next;
+            free = next == k_cam;
             continue;
         }
         ++out.crossings;
@@ -134,6 +167,7 @@ Trace3dOutcome trace_layers_3d(const LayerStack& s, const glm::dvec3& origin,
         } else {
             d = glm::normalize(t);
             k = next;
+            free = next == k_cam;
         }
     }
 }

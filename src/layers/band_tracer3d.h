@@ -47,12 +47,17 @@ struct Trace3dOutcome {
 };
 
 /// Traces from `origin` along `dir` (unit).  The scene ends at `scene`; the layers span
-/// `layers` (which contains `scene`); outside them the ray is straight.
+/// `layers` (which contains `scene`; those below the camera's layer options.below, if given);
+/// outside them the ray is straight, and meets the objects there as POV-Ray's ray does.
 struct Trace3dOptions {
     int max_events = 100000;
     const ObjectQuery* objects = nullptr;  // stops the ray at the first opaque object
     double camera_y = std::numeric_limits<double>::quiet_NaN();  // NaN: the ray starts there
     bool pov_precision = true;  // POV-Ray's single-precision iors; false: exact indices
+    // How far the boundaries below the camera's layer reach, when farther than `layers` (which
+    // then bounds the camera's ceiling and the boundaries above it); outside a boundary's box
+    // a ray is in POV-Ray's atmosphere, the camera's layer.
+    std::optional<HorizontalBox> below = std::nullopt;
 };
 
 /// A ray may start on the ground (y = 0, going up) or anywhere above it; the camera's layer

@@ -54,13 +54,18 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
            "}\n\n";
     const auto& h = s.heights;
     const int N = s.boundaries();
-    auto corners = [&](double y0, double y1) {
+    // Layers below the camera's may reach farther than those above.
+    const HorizontalBox& low = st.extent_below ? *st.extent_below : st.extent;
+    auto corners = [&](double y0, double y1, bool below) {
+        const HorizontalBox& e = below ? low : st.extent;
         std::ostringstream b;
-        b << "<" << g17(st.extent.x0) << ", " << g17(y0) << ", " << g17(st.extent.z0) << ">, <"
-          << g17(st.extent.x1) << ", " << g17(y1) << ", " << g17(st.extent.z1) << ">";
+        b << "<" << g17(e.x0) << ", " << g17(y0) << ", " << g17(e.z0) << ">, <" << g17(e.x1) << ", "
+          << g17(y1) << ", " << g17(e.z1) << ">";
         return b.str();
     };
-    auto box = [&](double y0, double y1) { return "box { " + corners(y0, y1) + " }"; };
+    auto box = [&](double y0, double y1, bool below) {
+        return "box { " + corners(y0, y1, below) + " }";
+    };
     auto tail = [&](int layer) {
         // POV-Ray keeps an ior in single precision: the float value is what it will use.
         return "    texture { Mirage_Layer_Texture }\n    interior { ior " +
@@ -82,15 +87,15 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
             if (k == 0) {
                 out << "plane { y, " << g17(top) << "\n    clipped_by { "
                     << box(std::min(-1.0 - std::fabs(top), st.lowest_y - 1.0 - std::fabs(top)),
-                           top + 0.5 * g)
+                           top + 0.5 * g, k < k_cam)
                     << " }\n"
                     << tail(k);
             } else if (k == N) {
                 out << "plane { -y, " << g17(-bottom) << "\n    clipped_by { "
-                    << box(bottom - 0.5 * g, bottom + 1e6) << " }\n"
+                    << box(bottom - 0.5 * g, bottom + 1e6, k < k_cam) << " }\n"
                     << tail(k);
             } else {
-                out << "box { " << corners(bottom, top) << "\n" << tail(k);
+                out << "box { " << corners(bottom, top, k < k_cam) << "\n" << tail(k);
             }
         }
         return out.str();
@@ -108,7 +113,7 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
         // or just above it.
         const int layer = under ? j : j + 1;
         out << "plane { " << (under ? "y, " : "-y, ") << (under ? g17(h[j]) : g17(-h[j]))
-            << "\n    clipped_by { " << box(h[j] - half, h[j] + half) << " }\n"
+            << "\n    clipped_by { " << box(h[j] - half, h[j] + half, under) << " }\n"
             << tail(layer);
     }
     return out.str();

@@ -10,6 +10,7 @@
 // bounds it tightly; layers are invisible (rgbf 1, no finish) and cast no shadow.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ enum class LayerLayout {
 struct LayerEmitSettings {
     double camera_y = 0.0;  // height of the camera (or of the reference layer), scene units
     HorizontalBox extent;   // horizontal extent of the layers, scene units
+    // Of the layers below the camera's, when they reach farther (the curved Earth: rays turn
+    // in them beyond the scene, while the layers above end near it).
+    std::optional<HorizontalBox> extent_below = std::nullopt;
     LayerLayout layout = LayerLayout::Nested;
     double gap = 0.0;                 // thickness of the gaps (Gaps layout), scene units
     double ground_height = 0.0;       // Mirage_Ground_Height: every layer is raised by it (the
