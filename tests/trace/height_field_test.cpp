@@ -196,7 +196,9 @@ TEST(HeightFieldShape, TrianglesInsideAndBounds) {
 
 // POV-Ray's own render of small height fields (random heights, so that a cell split along
 // the other diagonal or normals interpolated otherwise change many pixels), from an 8-bit
-// grey image and a palette image, flat and smooth, with a water level and transforms.
+// grey image and a palette image, flat and smooth, with a water level and transforms.  The
+// same heights split along the other diagonal (POV-Ray's render of the images mirrored in x
+// and the fields mirrored back) score 21.5 dB against POV-Ray's image; the tracer 41.3 dB.
 TEST(HeightFieldParity, SmallFieldsFlatAndSmooth) {
     if (!testing::povray_available()) GTEST_SKIP() << "povray is not on PATH";
     const auto dir = source_dir("parity");
