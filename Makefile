@@ -46,7 +46,7 @@ AW      ?= $(if $(filter command line,$(origin W)),$(W),320)
 AH      ?= $(if $(filter command line,$(origin H)),$(H),240)
 
 # Debian 12 packages the build, the tests and the renders need.
-PACKAGES := g++ make cmake pkg-config povray povray-includes povray-examples libopenimageio-dev \
+PACKAGES := g++ make cmake pkg-config povray povray-includes povray-examples libopenimageio-dev libpng-dev \
             openimageio-tools libglm-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev \
             gnuplot-nox fonts-dejavu-core ffmpeg parallel munge slurmctld slurmd slurm-client \
             python3

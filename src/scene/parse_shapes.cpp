@@ -5,6 +5,8 @@
 #include <map>
 #include <optional>
 
+#include "scene/function.h"
+#include "scene/image_file.h"
 #include "scene/scene_parser.h"
 #include "scene/transform.h"
 #include "scene/truetype.h"
@@ -18,11 +20,11 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
 
 // The shapes parse_shape_arguments (or parse_mesh) reads.
 const char* const kShapeKeywords[] = {
-    "sphere",         "plane", "box",     "cylinder", "disc",
-    "cone",           "torus", "quadric", "triangle", "smooth_triangle",
-    "polygon",        "mesh",  "mesh2",   "poly",     "cubic",
-    "quartic",        "text",  "prism",   "lathe",    "sor",
-    "superellipsoid", "isosurface",
+    "sphere",         "plane",      "box",          "cylinder", "disc",
+    "cone",           "torus",      "quadric",      "triangle", "smooth_triangle",
+    "polygon",        "mesh",       "mesh2",        "poly",     "cubic",
+    "quartic",        "text",       "prism",        "lathe",    "sor",
+    "superellipsoid", "isosurface", "height_field",
 };
 
 bool SceneParser::is_shape_keyword(const std::string& word) {
@@ -160,6 +162,7 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
         if (!(s.e > 0.0 && s.n > 0.0)) fail(at, "superellipsoid exponents must be > 0");
         return s;
     }
+    if (w == "height_field") return parse_height_field(kw);
     if (w == "lathe") {
         Lathe lathe;
         if (accept_word("linear_spline")) {
@@ -355,8 +358,8 @@ Shape SceneParser::parse_isosurface(const Token& kw) {
     if (iso.function) {
         std::string why;
         if (!function_evaluable(*iso.function, &why, true)) {
-            unsupported(f, "isosurface function (it needs " + why +
-                               ", which mirage does not evaluate)");
+            unsupported(
+                f, "isosurface function (it needs " + why + ", which mirage does not evaluate)");
             iso.function = nullptr;
         }
     }
@@ -773,6 +776,132 @@ ObjectNode SceneParser::parse_mesh(const Token& kw) {
         node.children.push_back(std::move(part));
     }
     return node;
+}
+
+// POV-Ray's Parse_HField: the image (Parse_Image with HF_FILE: a file, or function W, H
+// { ... } evaluated as Make_Pattern_Image does), then water_level and smooth in any order.
+HeightField SceneParser::parse_height_field(const Token& kw) {
+    static const char* const kTypes[] = {"gif", "tga",  "iff",  "ppm", "pgm", "png",
+                                         "pot", "jpeg", "tiff", "exr", "hdr", "sys"};
+    Token type_token = peek(0);
+    std::string type;
+    for (const char* t : kTypes) {
+        if (type_token.is_word(t)) {
+            type = next().text();
+            break;
+        }
+    }
+    // The heights are POV-Ray's HF_VAL / 65536 (exact in a float).
+    auto data = std::make_shared<HeightFieldData>();
+    if (type.empty() && peek_word("function")) {
+        Token f = next();
+        Token at = peek(0);
+        const double w = std::floor(parse_float() + 0.5);
+        accept_comma();
+        const double h = std::floor(parse_float() + 0.5);
+        if (!(w >= 2.0 && h >= 2.0 && w * h <= 1e8)) {
+            fail(at, "a height_field function needs at least 2 x 2 points");
+        }
+        data->width = static_cast<int>(w);
+        data->depth = static_cast<int>(h);
+        data->heights.assign(static_cast<std::size_t>(w * h), 65535.0f / 65536.0f);
+        std::shared_ptr<const FunctionCode> code = parse_function_block(f, {"x", "y", "z"});
+        std::string why;
+        if (code && !function_evaluable(*code, &why)) {
+            unsupported(f, "height_field function: it calls " + why);
+            code = nullptr;
+        }
+        if (code) {
+            // Make_Pattern_Image: the value at x = column / (W - 1), y = row / (H - 1) in a
+            // 16-bit grey image, row 0 on top; image_height_at scales it back.
+            for (int row = 0; row < data->depth; ++row) {
+                for (int col = 0; col < data->width; ++col) {
+                    const double args[3] = {col / (w - 1.0), row / (h - 1.0), 0.0};
+                    double v = evaluate_function(*code, args, 3);
+                    v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0);
+                    const float grey = static_cast<float>(std::lround(v * 65535.0)) / 65535.0f;
+                    data->heights[static_cast<std::size_t>(data->depth - 1 - row) * data->width +
+                                  col] =
+                        static_cast<float>(static_cast<std::uint16_t>(grey * 65535.0f)) / 65536.0f;
+                }
+            }
+        }
+        // Unevaluated (reported above): the heights are taken at their highest, which
+        // keeps the extent (the unit box) for the compiler.
+    } else {
+        Token name_at = peek(0);
+        if (!starts_string(name_at)) {
+            fail(name_at, "expected the height field's image file name, got " + describe(name_at));
+        }
+        const std::string name = parse_string(true);
+        if (type.empty()) {
+            // The type from the extension (POV-Ray's InferFileTypeFromExt), else the
+            // platform's default, PNG.
+            std::string ext = std::filesystem::path(name).extension().string();
+            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            static const char* const kExtensions[] = {".tga",  ".png", ".pgm",  ".ppm", ".jpg",
+                                                      ".jpeg", ".tif", ".tiff", ".exr", ".hdr",
+                                                      ".gif",  ".iff", ".bmp",  ".pot", ""};
+            bool known = false;
+            for (const char* e : kExtensions) known = known || ext == e;
+            if (!known) {
+                fail(name_at, "could not determine a valid image file type from the extension '" +
+                                  ext + "'");
+            }
+            type = ext == ".gif" ? "gif" : ext == ".pot" ? "pot" : ext == ".iff" ? "iff" : "png";
+        }
+        if (type == "gif" || type == "pot" || type == "iff") {
+            // POV-Ray reads these as palette images (pot: two halves of one 16-bit map);
+            // the image library here expands palettes to colour.
+            fail(type_token, "unsupported height_field image type '" + type + "'");
+        }
+        std::vector<std::string> dirs{
+            std::filesystem::path(name_at.file->path).parent_path().string()};
+        for (const std::string& lib : options_.library_paths) dirs.push_back(lib);
+        std::string found;
+        for (const std::string& d : dirs) {
+            const std::filesystem::path candidate =
+                d.empty() ? std::filesystem::path(name) : std::filesystem::path(d) / name;
+            std::error_code ec;
+            if (std::filesystem::is_regular_file(candidate, ec)) {
+                found = candidate.string();
+                break;
+            }
+        }
+        if (found.empty()) fail(name_at, "cannot find height field image file '" + name + "'");
+        auto image = read_height_image(found);
+        if (!image) fail(name_at, image.message());
+        if (image->width < 2 || image->height < 2) {
+            fail(name_at, found + ": a height field needs an image of at least 2 x 2 pixels");
+        }
+        // An input: no output may replace it.
+        if (std::find(scene_.files.begin(), scene_.files.end(), found) == scene_.files.end()) {
+            scene_.files.push_back(found);
+        }
+        data->width = image->width;
+        data->depth = image->height;
+        data->heights.resize(image->heights.size());
+        for (int z = 0; z < data->depth; ++z) {  // Compute_HField: image row max_z - z - 1
+            for (int x = 0; x < data->width; ++x) {
+                data->heights[static_cast<std::size_t>(z) * data->width + x] =
+                    image
+                        ->heights[static_cast<std::size_t>(data->depth - 1 - z) * data->width + x] /
+                    65536.0f;
+            }
+        }
+    }
+    while (true) {
+        if (accept_word("water_level")) {
+            data->water_level = parse_float();
+        } else if (accept_word("smooth")) {
+            data->smooth = true;
+        } else {
+            break;
+        }
+    }
+    HeightField hf;
+    hf.data = std::move(data);
+    return hf;
 }
 
 }  // namespace mirage::scene_detail

@@ -24,8 +24,9 @@ struct ItemArity {
 };
 
 constexpr ItemArity kUnsupportedGlobalSettings[] = {
-    {"photons", Arity::Block},     {"radiosity", Arity::Block},
-    {"subsurface", Arity::Block},  {"hf_gray_16", Arity::OptionalFloat},
+    {"photons", Arity::Block},
+    {"radiosity", Arity::Block},
+    {"subsurface", Arity::Block},
     {"mm_per_unit", Arity::Float},
 };
 
@@ -243,6 +244,16 @@ void SceneParser::parse_global_settings(const Token& kw) {
         if (t.is_word("ambient_light")) {
             next();
             scene_.global.ambient_light = parse_rgb_colour();
+            continue;
+        }
+        if (t.is_word("hf_gray_16")) {
+            // POV-Ray 3.7 ignores it here (a grey output file is a command-line option), with
+            // this warning; the image does not change.
+            Token item = next();
+            allow_float(1.0);
+            add_message(item, "warning",
+                        "in POV-Ray 3.7 and later 'hf_gray_16' is an output option (+FNg, "
+                        "Grayscale_Output); the setting here is ignored");
             continue;
         }
         if (t.is_word("max_intersections")) {

@@ -401,6 +401,7 @@ class SceneParser {
     static bool is_shape_keyword(const std::string& word);
     Shape parse_shape_arguments(const Token& keyword);
     Shape parse_polygon(const Token& keyword);
+    HeightField parse_height_field(const Token& keyword);
     ObjectNode parse_mesh(const Token& keyword);
     Shape parse_text(const Token& keyword);
     Shape parse_isosurface(const Token& keyword);

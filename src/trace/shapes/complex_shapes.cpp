@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "trace/shapes/height_field.h"
 #include "trace/shapes/isosurface.h"
 #include "trace/shapes/lathe_sor.h"
 #include "trace/shapes/mesh.h"
@@ -25,6 +26,9 @@ Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitiv
     if (const auto* t = std::get_if<Text>(&primitive.shape)) return prepare_text(*t, primitive);
     if (const auto* r = std::get_if<Prism>(&primitive.shape)) return prepare_prism(*r, primitive);
     if (const auto* l = std::get_if<Lathe>(&primitive.shape)) return prepare_lathe(*l, primitive);
+    if (const auto* h = std::get_if<HeightField>(&primitive.shape)) {
+        return prepare_height_field(*h, primitive);
+    }
     if (const auto* o = std::get_if<Sor>(&primitive.shape)) return prepare_sor(*o, primitive);
     if (const auto* e = std::get_if<Superellipsoid>(&primitive.shape)) {
         return prepare_superellipsoid(*e, primitive);
