@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "trace/shapes/blob.h"
 #include "trace/shapes/lathe_sor.h"
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/poly.h"
@@ -25,6 +26,7 @@ Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitiv
     if (const auto* r = std::get_if<Prism>(&primitive.shape)) return prepare_prism(*r, primitive);
     if (const auto* l = std::get_if<Lathe>(&primitive.shape)) return prepare_lathe(*l, primitive);
     if (const auto* o = std::get_if<Sor>(&primitive.shape)) return prepare_sor(*o, primitive);
+    if (const auto* b = std::get_if<Blob>(&primitive.shape)) return prepare_blob(*b, primitive);
     if (const auto* e = std::get_if<Superellipsoid>(&primitive.shape)) {
         return prepare_superellipsoid(*e, primitive);
     }
