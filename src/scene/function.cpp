@@ -10,6 +10,7 @@ namespace mirage {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
 
 struct Builtin {
     const char* name;
@@ -32,7 +33,7 @@ struct Internal {
     bool known;
 };
 constexpr Internal kInternals[] = {
-    {0, "f_algbr_cyl1", 5, false},
+    {0, "f_algbr_cyl1", 5, true},
     {1, "f_algbr_cyl2", 5, false},
     {2, "f_algbr_cyl3", 5, false},
     {3, "f_algbr_cyl4", 5, false},
@@ -57,7 +58,7 @@ constexpr Internal kInternals[] = {
     {22, "f_glob", 1, false},
     {23, "f_heart", 1, false},
     {24, "f_helical_torus", 10, false},
-    {25, "f_helix1", 7, false},
+    {25, "f_helix1", 7, true},
     {26, "f_helix2", 7, false},
     {27, "f_hex_x", 1, false},
     {28, "f_hex_y", 1, false},
@@ -108,16 +109,74 @@ constexpr Internal kInternals[] = {
     {73, "f_umbrella", 1, false},
     {74, "f_witch_of_agnesi", 2, false},
     {75, "f_witch_of_agnesi_2d", 6, false},
-    {76, "f_noise3d", 0, false},
+    {76, "f_noise3d", 0, true},
     {77, "f_pattern", 0, false},
-    {78, "f_noise_generator", 1, false},
+    {78, "f_noise_generator", 1, true},
 };
 
-double internal_value(int n, const double* p) {
+// fnintern.cpp's ROT2D(p, d, ang) for the algebraic cylinders: with p > 0 the curve in the
+// x-y plane is turned into a surface of revolution about y (x becomes the distance from the
+// axis less d), turned by ang degrees in that plane; x2 and y2 are the squares after it.
+void rot2d(double& X, double& Y, double Z, double& x2, double& y2, double p, double d,
+           double ang_deg) {
+    if (!(p > 0.0)) return;
+    x2 = std::sqrt(x2 + Z * Z) - d;
+    const double th = ang_deg * kPi / 180.0;
+    if (th != 0.0) {
+        X = x2 * std::cos(th) - Y * std::sin(th);
+        Y = x2 * std::sin(th) + Y * std::cos(th);
+    } else {
+        X = x2;
+    }
+    x2 = X * X;
+    y2 = Y * Y;
+}
+
+double internal_value(int n, const double* p, const FunctionEnv* env) {
     // p[0..2] = x, y, z; p[3 + i] = PARAM(i).
     const double X = p[0], Y = p[1], Z = p[2];
     const double* P = p + 3;
     switch (n) {
+        case 0: {  // f_algbr_cyl1
+            double x = X, y = Y, x2 = X * X, y2 = Y * Y;
+            rot2d(x, y, Z, x2, y2, P[2], P[3], P[4]);
+            x = std::abs(x);
+            const double r = -(x2 * x - x2 + y2);
+            return -std::min(P[1], std::max(P[0] * r, -P[1]));
+        }
+        case 25: {  // f_helix1
+            double x = X, z = Z;
+            const double r = std::sqrt(x * x + z * z);
+            if (x == 0.0 && z == 0.0) x = 0.000001;
+            double th = std::atan2(z, x);
+            th = std::fmod(th * P[0] + Y * P[1] * P[0], kTwoPi);
+            if (th < 0.0) th += kTwoPi;
+            z = (th - kPi) / P[4] / (P[1] * P[0]);
+            x = r - P[3];
+            double r2;
+            if (P[5] == 1.0) {
+                r2 = std::sqrt(x * x + z * z);
+            } else {
+                if (P[6] != 0.0) {
+                    const double c = std::cos(P[6] * kPi / 180.0), s = std::sin(P[6] * kPi / 180.0);
+                    const double xr = x * c - z * s;
+                    z = x * s + z * c;
+                    x = xr;
+                }
+                if (P[5] != 0.0) {
+                    const double e = 2.0 / P[5];
+                    r2 = std::pow(std::pow(std::abs(x), e) + std::pow(std::abs(z), e), P[5] * .5);
+                } else {
+                    r2 = std::max(std::abs(x), std::abs(z));
+                }
+            }
+            return -P[2] + std::min(P[3] + r, r2);
+        }
+        case 76:
+        case 78:
+            if (!env || !env->noise) return 0.0;
+            return env->noise(X, Y, Z, n == 76 ? env->noise_generator
+                                               : (static_cast<int>(P[0]) & 0x03));
         case 17:
             return std::sqrt(X * X * P[0] * P[0] + Y * Y * P[1] * P[1] + Z * Z * P[2] * P[2]);
         case 45:
@@ -235,19 +294,22 @@ double builtin_value(int b, const double* a, int n) {
 
 constexpr int kMaxSlots = 64;
 
-double eval(const FunctionCode& f, int node, double* args, int count, int depth);
+double eval(const FunctionCode& f, int node, double* args, int count, int depth,
+            const FunctionEnv* env);
 
-double call(const FunctionCode& f, const double* args, int count, int depth) {
+double call(const FunctionCode& f, const double* args, int count, int depth,
+            const FunctionEnv* env) {
     if (depth > 64) return 0.0;
     double frame[kMaxSlots] = {};
     std::memcpy(frame, args, sizeof(double) * static_cast<std::size_t>(std::min(count, kMaxSlots)));
-    if (f.internal >= 0) return internal_value(f.internal, frame);
+    if (f.internal >= 0) return internal_value(f.internal, frame, env);
     if (f.root < 0) return 0.0;
     const int slots = std::min(kMaxSlots, static_cast<int>(f.parameters.size() + f.locals.size()));
-    return eval(f, f.root, frame, slots, depth);
+    return eval(f, f.root, frame, slots, depth, env);
 }
 
-double eval(const FunctionCode& f, int i, double* args, int count, int depth) {
+double eval(const FunctionCode& f, int i, double* args, int count, int depth,
+            const FunctionEnv* env) {
     const FunctionCode::Node& n = f.nodes[static_cast<std::size_t>(i)];
     using Op = FunctionCode::Op;
     switch (n.op) {
@@ -256,17 +318,17 @@ double eval(const FunctionCode& f, int i, double* args, int count, int depth) {
         case Op::Parameter:
             return n.index < count ? args[n.index] : 0.0;
         case Op::Neg:
-            return -eval(f, n.a, args, count, depth);
+            return -eval(f, n.a, args, count, depth, env);
         case Op::Sum:
         case Op::Prod: {
             // POV-Ray's compile_seq_op: for i = from; i <= to; i += 1.
-            const double from = eval(f, n.args[0], args, count, depth);
-            const double to = eval(f, n.args[1], args, count, depth);
+            const double from = eval(f, n.args[0], args, count, depth, env);
+            const double to = eval(f, n.args[1], args, count, depth, env);
             double r = n.op == Op::Sum ? 0.0 : 1.0;
             if (n.index >= count) return r;
             for (double k = from; k <= to; k += 1.0) {
                 args[n.index] = k;
-                const double v = eval(f, n.args[2], args, count, depth);
+                const double v = eval(f, n.args[2], args, count, depth, env);
                 r = n.op == Op::Sum ? r + v : r * v;
             }
             return r;
@@ -276,15 +338,15 @@ double eval(const FunctionCode& f, int i, double* args, int count, int depth) {
             double a[kMaxSlots] = {};
             const int k = std::min(static_cast<int>(n.args.size()), kMaxSlots);
             for (int j = 0; j < k; ++j)
-                a[j] = eval(f, n.args[static_cast<std::size_t>(j)], args, count, depth);
+                a[j] = eval(f, n.args[static_cast<std::size_t>(j)], args, count, depth, env);
             if (n.op == Op::Builtin) return builtin_value(n.builtin, a, k);
-            return call(*n.callee, a, k, depth + 1);
+            return call(*n.callee, a, k, depth + 1, env);
         }
         default:
             break;
     }
-    const double x = eval(f, n.a, args, count, depth);
-    const double y = eval(f, n.b, args, count, depth);
+    const double x = eval(f, n.a, args, count, depth, env);
+    const double y = eval(f, n.b, args, count, depth, env);
     switch (n.op) {
         case Op::Add:
             return x + y;
@@ -347,21 +409,27 @@ int FunctionCode::arity() const {
     return static_cast<int>(parameters.size());
 }
 
-bool function_evaluable(const FunctionCode& f, std::string* why) {
+bool internal_function_needs_noise(int n) { return n == 76 || n == 78; }
+
+bool function_evaluable(const FunctionCode& f, std::string* why, bool with_noise) {
     if (f.internal >= 0) {
         std::string name = "internal function";
-        if (internal_function_known(f.internal, &name)) return true;
+        if (internal_function_known(f.internal, &name) &&
+            (with_noise || !internal_function_needs_noise(f.internal))) {
+            return true;
+        }
         if (why) *why = name + " (internal " + std::to_string(f.internal) + ")";
         return false;
     }
     for (const FunctionCode::Node& n : f.nodes) {
-        if (n.callee && !function_evaluable(*n.callee, why)) return false;
+        if (n.callee && !function_evaluable(*n.callee, why, with_noise)) return false;
     }
     return true;
 }
 
-double evaluate_function(const FunctionCode& f, const double* args, int count) {
-    return call(f, args, count, 0);
+double evaluate_function(const FunctionCode& f, const double* args, int count,
+                         const FunctionEnv* env) {
+    return call(f, args, count, 0, env);
 }
 
 }  // namespace mirage

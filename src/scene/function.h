@@ -55,16 +55,29 @@ struct FunctionCode {
 /// sum and prod are not built-ins here (they declare a variable).
 int function_builtin(const std::string& name, int* arity);
 
+/// What evaluating a function may need from the tracer: POV-Ray's solid noise, for f_noise3d
+/// and f_noise_generator (it lives in trace/noise.cpp; the scene module does not link it).
+struct FunctionEnv {
+    /// POV-Ray's Noise(p, generator), a value in [0, 1]; null: noise cannot be evaluated.
+    double (*noise)(double x, double y, double z, int generator) = nullptr;
+    int noise_generator = 2;  // the scene's (global_settings), for f_noise3d
+};
+
 /// Whether mirage evaluates functions.inc's internal function number `n`.  Its name and how
 /// many parameters it takes after x, y and z are given for any of POV-Ray's (0 to 78).
 bool internal_function_known(int n, std::string* name = nullptr, int* extra = nullptr);
 
-/// Whether `f` and everything it calls can be evaluated; if not, `why` names the first
-/// internal function mirage does not know (e.g. "f_noise3d (internal 76)").
-bool function_evaluable(const FunctionCode& f, std::string* why);
+/// Whether the internal function `n` needs FunctionEnv's noise (f_noise3d, f_noise_generator).
+bool internal_function_needs_noise(int n);
+
+/// Whether `f` and everything it calls can be evaluated (with noise only when `with_noise`);
+/// if not, `why` names the first internal function it cannot (e.g. "f_noise3d (internal 76)").
+bool function_evaluable(const FunctionCode& f, std::string* why, bool with_noise = false);
 
 /// The function's value for these arguments (missing ones are 0).  Calls nest at most 64
-/// deep (a recursive function is refused at parse time; this guards evaluation).
-double evaluate_function(const FunctionCode& f, const double* args, int count);
+/// deep (a recursive function is refused at parse time; this guards evaluation).  Noise
+/// functions give 0 without an `env` that has noise.
+double evaluate_function(const FunctionCode& f, const double* args, int count,
+                         const FunctionEnv* env = nullptr);
 
 }  // namespace mirage

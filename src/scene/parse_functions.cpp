@@ -306,8 +306,10 @@ double SceneParser::call_function_value(const Token& name, const FunctionCode& f
     if (!function_evaluable(f, &why)) {
         // Like any value outside the subset: a declaration computed from it becomes opaque,
         // a use elsewhere is refused (strict) or skipped with its stand-in 0 (lenient).
+        const bool tracer_only = function_evaluable(f, nullptr, true);
         unsupported(name, "function '" + name.text() + "' (it needs " + why +
-                              ", which mirage does not evaluate)");
+                              (tracer_only ? ", which mirage evaluates only in shapes it traces)"
+                                           : ", which mirage does not evaluate)"));
         return 0.0;
     }
     return evaluate_function(f, args.data(), static_cast<int>(args.size()));

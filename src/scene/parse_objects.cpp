@@ -97,7 +97,7 @@ const ModifierArity* find_arity(const ModifierArity (&table)[N], const std::stri
 bool SceneParser::is_unsupported_object_keyword(const Token& t) const {
     return is_keyword(t) && !is_shape_keyword(t.text()) &&
            one_of(t.text(), {"bicubic_patch", "blob",         "cubic",
-                             "height_field",  "isosurface",   "julia_fractal",
+                             "height_field",  "julia_fractal",
                              "lathe",         "light_group",  "mesh",
                              "mesh2",         "ovus",         "parametric",
                              "poly",          "polygon",      "polynomial",
@@ -286,6 +286,12 @@ void SceneParser::parse_shape(const Token& kw, ObjectNode& node) {
         if (kw.is_word("text")) transform_object(node, make_rotation(glm::dvec3(0.001)));
     }
     parse_object_modifiers(node, kw);
+    if (const auto* iso = std::get_if<Isosurface>(&node.shape); iso && !iso->function) {
+        // Its function is outside the subset (reported where it was read): left out in
+        // lenient mode, as an object mirage cannot read.
+        node.kind = ObjectNode::Kind::Empty;
+        node.unknown = "object 'isosurface'";
+    }
 }
 
 /// `union { Obj translate x }` and the like: the object named, moved (true); `union { A B }`

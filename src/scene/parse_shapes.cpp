@@ -22,7 +22,7 @@ const char* const kShapeKeywords[] = {
     "cone",           "torus", "quadric", "triangle", "smooth_triangle",
     "polygon",        "mesh",  "mesh2",   "poly",     "cubic",
     "quartic",        "text",  "prism",   "lathe",    "sor",
-    "superellipsoid", "blob",
+    "superellipsoid", "isosurface", "blob",
 };
 
 bool SceneParser::is_shape_keyword(const std::string& word) {
@@ -150,6 +150,7 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
     }
     if (w == "polygon") return parse_polygon(kw);
     if (w == "text") return parse_text(kw);
+    if (w == "isosurface") return parse_isosurface(kw);
     if (w == "superellipsoid") {
         Superellipsoid s;
         Token at = peek(0);
@@ -338,6 +339,104 @@ Shape SceneParser::parse_text(const Token& kw) {
     if (!text) fail(at, text.message());
     (void)kw;
     return *text;
+}
+
+// POV-Ray's Parse_Isosurface (parse.cpp): the function first, then in any order its container,
+// threshold, accuracy, max_gradient, max_trace, evaluate, open and all_intersections; values
+// POV-Ray replaces with a warning are replaced the same way.  A function mirage cannot
+// evaluate (a pattern's, or an internal one it does not know) leaves `function` null: the
+// object is unsupported.
+Shape SceneParser::parse_isosurface(const Token& kw) {
+    Isosurface iso;
+    const Token f = next();
+    if (!f.is_word("function")) {
+        fail(f, "expected 'function' to begin the isosurface, got " + describe(f));
+    }
+    iso.function = parse_function_block(f, {});
+    if (iso.function) {
+        std::string why;
+        if (!function_evaluable(*iso.function, &why, true)) {
+            unsupported(f, "isosurface function (it needs " + why +
+                               ", which mirage does not evaluate)");
+            iso.function = nullptr;
+        }
+    }
+    constexpr int kMaxTrace = 10;  // POV-Ray's ISOSURFACE_MAXTRACE
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_word("contained_by")) {
+            next();
+            expect_open_brace(t);
+            const Token c = peek(0);
+            if (c.is_word("box")) {
+                next();
+                expect_open_brace(c);
+                const glm::dvec3 a = parse_vector();
+                accept_comma();
+                const glm::dvec3 b = parse_vector();
+                expect_close_brace(c);
+                iso.sphere_container = false;
+                iso.corner1 = glm::min(a, b);
+                iso.corner2 = glm::max(a, b);
+            } else if (c.is_word("sphere")) {
+                next();
+                expect_open_brace(c);
+                iso.centre = parse_vector();
+                accept_comma();
+                iso.radius = parse_float();
+                expect_close_brace(c);
+                iso.sphere_container = true;
+            }
+            expect_close_brace(t);
+        } else if (t.is_word("threshold")) {
+            next();
+            iso.threshold = parse_float();
+        } else if (t.is_word("accuracy")) {
+            next();
+            iso.accuracy = parse_float();
+        } else if (t.is_word("max_gradient")) {
+            next();
+            iso.max_gradient = parse_float();
+        } else if (t.is_word("max_trace")) {
+            next();
+            // POV-Ray keeps it in a short.
+            iso.max_trace = static_cast<short>(static_cast<int>(parse_float()));
+        } else if (t.is_word("evaluate")) {
+            next();
+            iso.evaluate = true;
+            iso.eval_params.x = parse_float();
+            accept_comma();
+            iso.eval_params.y = parse_float();
+            accept_comma();
+            iso.eval_params.z = parse_float();
+        } else if (t.is_word("open")) {
+            next();
+            iso.open = true;
+        } else if (t.is_word("all_intersections")) {
+            next();
+            iso.all_intersections = true;
+            iso.max_trace = kMaxTrace;
+        } else {
+            break;
+        }
+    }
+    if (iso.accuracy <= 0.0) {
+        add_message(kw, "warning", "isosurface 'accuracy' is not positive, using 0.001");
+        iso.accuracy = 0.001;
+    }
+    if (iso.max_gradient <= 0.0) {
+        add_message(kw, "warning", "isosurface 'max_gradient' is not positive, using 1.1");
+        iso.max_gradient = 1.1;
+    }
+    if (iso.max_trace > kMaxTrace) {
+        add_message(kw, "warning", "isosurface 'max_trace' exceeds 10, using 10");
+        iso.max_trace = kMaxTrace;
+    }
+    if (iso.max_trace < 1) {
+        add_message(kw, "warning", "isosurface 'max_trace' is not positive, using 1");
+        iso.max_trace = 1;
+    }
+    return iso;
 }
 
 Shape SceneParser::parse_polygon(const Token& kw) {

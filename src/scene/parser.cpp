@@ -94,6 +94,18 @@ Scene SceneParser::parse(std::shared_ptr<SourceFile> main_file) {
     if (!explicit_noise_generator_) {
         scene_.global.noise_generator = language_version_ >= 3.5 - 1e-9 ? 2 : 1;
     }
+    // f_noise3d uses the scene's noise generator, whatever came before global_settings.
+    const auto set_noise = [&](Primitive& p) {
+        if (auto* iso = std::get_if<Isosurface>(&p.shape)) {
+            iso->noise_generator = scene_.global.noise_generator;
+        }
+    };
+    for (Primitive& p : scene_.primitives) set_noise(p);
+    for (UnknownObject& u : scene_.unknown_objects) {
+        for (auto& bound : u.bounds) {
+            for (Primitive& p : bound) set_noise(p);
+        }
+    }
     return std::move(scene_);
 }
 

@@ -404,6 +404,7 @@ class SceneParser {
     Shape parse_polygon(const Token& keyword);
     ObjectNode parse_mesh(const Token& keyword);
     Shape parse_text(const Token& keyword);
+    Shape parse_isosurface(const Token& keyword);
     /// A file the scene names (a font, an image), looked up as POV-Ray does: as given, in the
     /// including file's directory, then the library paths, each also with `extension` added.
     std::string find_scene_file(const std::string& name, const std::string& extension) const;

@@ -145,9 +145,12 @@ struct Isosurface {
     double threshold = 0.0;
     double accuracy = 0.001;
     double max_gradient = 1.1;
-    int max_trace = 1;
+    int max_trace = 1;  // 1 to 10 (all_intersections: 10, POV-Ray's ISOSURFACE_MAXTRACE)
     bool all_intersections = false;
     bool open = false;
+    bool evaluate = false;  // `evaluate P0, P1, P2`: the gradient adapted along each ray
+    glm::dvec3 eval_params{0.0};
+    int noise_generator = 2;  // the scene's (global_settings), for f_noise3d; set after parsing
 };
 /// A TrueType glyph as POV-Ray's truetype.cpp holds it: its contours in em units (font units
 /// over unitsPerEm), each with its first point repeated at the end, and the glyph header's

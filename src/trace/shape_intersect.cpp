@@ -122,9 +122,9 @@ void set_local_frame(PreparedShape& s, const Transform& t, const glm::dmat4& can
     s.normal_to_world = glm::transpose(glm::dmat3(s.world_to_local));
 }
 
-/// POV-Ray's Sphere::Intersect: the two depths along a unit direction, or false for a miss
-/// (including rays that only graze, half chord^2 <= EPSILON).
-inline bool sphere_roots(const glm::dvec3& centre, double radius_sq, const glm::dvec3& origin,
+}  // namespace
+
+bool sphere_roots(const glm::dvec3& centre, double radius_sq, const glm::dvec3& origin,
                          const glm::dvec3& direction, bool allow_behind, double& t1, double& t2) {
     const glm::dvec3 oc = centre - origin;
     const double oc_sq = glm::dot(oc, oc);
@@ -139,9 +139,6 @@ inline bool sphere_roots(const glm::dvec3& centre, double radius_sq, const glm::
     return true;
 }
 
-/// POV-Ray's Box::Intersect (boxes.cpp) in the box's own space, unnormalised direction: the
-/// entry and exit depths with the sides hit, the sides disambiguated where the ray passes
-/// within CLOSE_TOLERANCE of an edge.  `t_start` is where the entry depth starts (POV-Ray: 0).
 bool box_roots(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& p, const glm::dvec3& d,
                double t_start, double& t_near, int& s_near, double& t_far, int& s_far) {
     double tmin = t_start;
@@ -190,8 +187,6 @@ bool box_roots(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& p, 
     s_far = smax;
     return true;
 }
-
-}  // namespace
 
 Result<PreparedShape> prepare_shape(const Primitive& primitive) {
     const Transform& t = primitive.transform;

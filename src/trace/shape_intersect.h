@@ -142,6 +142,19 @@ bool inside_shape(const PreparedShape& shape, const glm::dvec3& point);
 glm::dvec3 shape_normal(const PreparedShape& shape, const glm::dvec3& point, const ShapeHit& hit);
 glm::dvec3 shape_normal(const PreparedShape& shape, const glm::dvec3& point, int part);
 
+/// POV-Ray's Sphere::Intersect: the two depths along a unit direction, or false for a miss
+/// (including rays that only graze, half chord^2 <= EPSILON; with `allow_behind` false also
+/// a ray outside the sphere moving away from it).
+bool sphere_roots(const glm::dvec3& centre, double radius_sq, const glm::dvec3& origin,
+                  const glm::dvec3& direction, bool allow_behind, double& t1, double& t2);
+
+/// POV-Ray's Box::Intersect (boxes.cpp) in the box's own space, unnormalised direction: the
+/// entry and exit depths with the sides hit (POV-Ray's numbers: 2 axis + 1 low, 2 axis + 2
+/// high), the sides disambiguated where the ray passes within CLOSE_TOLERANCE of an edge.
+/// `t_start` is where the entry depth starts (POV-Ray: 0).
+bool box_roots(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& p, const glm::dvec3& d,
+               double t_start, double& t_near, int& s_near, double& t_far, int& s_far);
+
 /// Bounds of the surface in world space; unbounded (infinite) for planes and the like.
 Aabb shape_bounds(const PreparedShape& shape);
 

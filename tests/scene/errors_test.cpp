@@ -147,9 +147,9 @@ TEST(Errors, UnbalancedDirectives) {
 }
 
 TEST(Errors, UnsupportedInStrictMode) {
-    EXPECT_EQ(parse_error("isosurface { function { x } }"),
-              "scene.pov:1:1: unsupported object 'isosurface'\n"
-              "isosurface { function { x } }\n"
+    EXPECT_EQ(parse_error("julia_fractal { <1, 0, 0, 0> }"),
+              "scene.pov:1:1: unsupported object 'julia_fractal'\n"
+              "julia_fractal { <1, 0, 0, 0> }\n"
               "^");
     EXPECT_EQ(parse_error("sphere { 0, 1 photons { target } }"),
               "scene.pov:1:15: unsupported modifier 'photons' in 'sphere'\n"

@@ -52,12 +52,12 @@ TEST(Parser, ColorsIncParsesAndItsColoursWork) {
 TEST(Parser, LenientModeSkipsWhatItCannotRenderAndKeepsTheRest) {
     const std::string scene = R"(#version 3.7;
 camera { location <0, 2, -5> look_at <0, 1, 0> }
-isosurface {
-    function { x * x + y * y + z * z - 1 }
-    contained_by { box { -2, 2 } }
-    max_gradient 4
+julia_fractal {
+    <-0.083, 0.0, -0.83, -0.025>
+    quaternion sqr
+    max_iteration 8
 }
-#declare Blob = blob { threshold 0.5 sphere { 0, 1, 1 } }
+#declare Blob = bicubic_patch { type 0 flatness 0 u_steps 2 v_steps 2 <0,0,0> }
 light_source { <5, 5, -5>, rgb 1 photons { refraction on } }
 sphere {
     <0, 1, 0>, 1
@@ -73,7 +73,7 @@ media { scattering { 1, 0.1 } }
 )";
     auto strict = parse_scene_text(scene, "scene.pov", ParseOptions{});
     ASSERT_FALSE(strict.ok());
-    EXPECT_EQ(strict.message(), "scene.pov:3:1: unsupported object 'isosurface'\nisosurface {\n^");
+    EXPECT_EQ(strict.message(), "scene.pov:3:1: unsupported object 'julia_fractal'\njulia_fractal {\n^");
 
     ParseOptions lenient;
     lenient.strict = false;
@@ -92,8 +92,8 @@ media { scattering { 1, 0.1 } }
                           std::to_string(k.loc.column));
     }
     std::vector<std::string> expected{
-        "object 'isosurface' @3:1",
-        "object 'blob' @8:17",
+        "object 'julia_fractal' @3:1",
+        "object 'bicubic_patch' @8:17",
         "light source modifier 'photons' (only point lights) @9:34",
         "modifier 'photons' in 'sphere' @12:5",
         "pattern 'julia' @13:15",

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "trace/shapes/blob.h"
+#include "trace/shapes/isosurface.h"
 #include "trace/shapes/lathe_sor.h"
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/poly.h"
@@ -29,6 +30,9 @@ Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitiv
     if (const auto* b = std::get_if<Blob>(&primitive.shape)) return prepare_blob(*b, primitive);
     if (const auto* e = std::get_if<Superellipsoid>(&primitive.shape)) {
         return prepare_superellipsoid(*e, primitive);
+    }
+    if (const auto* i = std::get_if<Isosurface>(&primitive.shape)) {
+        return prepare_isosurface(*i, primitive);
     }
     if (const auto* p = std::get_if<Polygon>(&primitive.shape)) {
         return prepare_polygon(*p, primitive);
