@@ -340,6 +340,13 @@ double eval(const FunctionCode& f, int i, double* args, int count, int depth,
             for (int j = 0; j < k; ++j)
                 a[j] = eval(f, n.args[static_cast<std::size_t>(j)], args, count, depth, env);
             if (n.op == Op::Builtin) return builtin_value(n.builtin, a, k);
+            if (n.callee->pigment) {
+                double c[5] = {};
+                if (env && env->pigment) env->pigment(*n.callee->pigment, a[0], a[1], a[2], c);
+                // .gray: POV-Ray's GREY_SCALE weights.
+                return n.index == 5 ? 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]
+                                    : c[std::clamp(n.index, 0, 4)];
+            }
             return call(*n.callee, a, k, depth + 1, env);
         }
         default:
@@ -411,18 +418,23 @@ int FunctionCode::arity() const {
 
 bool internal_function_needs_noise(int n) { return n == 76 || n == 78; }
 
-bool function_evaluable(const FunctionCode& f, std::string* why, bool with_noise) {
+bool function_evaluable(const FunctionCode& f, std::string* why, bool with_tracer) {
+    if (f.pigment) {
+        if (with_tracer) return true;
+        if (why) *why = "a pigment function";
+        return false;
+    }
     if (f.internal >= 0) {
         std::string name = "internal function";
         if (internal_function_known(f.internal, &name) &&
-            (with_noise || !internal_function_needs_noise(f.internal))) {
+            (with_tracer || !internal_function_needs_noise(f.internal))) {
             return true;
         }
         if (why) *why = name + " (internal " + std::to_string(f.internal) + ")";
         return false;
     }
     for (const FunctionCode::Node& n : f.nodes) {
-        if (n.callee && !function_evaluable(*n.callee, why, with_noise)) return false;
+        if (n.callee && !function_evaluable(*n.callee, why, with_tracer)) return false;
     }
     return true;
 }

@@ -10,6 +10,8 @@
 
 namespace mirage {
 
+struct Pigment;  // scene/scene.h
+
 struct FunctionCode {
     enum class Op {
         Constant,
@@ -35,7 +37,8 @@ struct FunctionCode {
     struct Node {
         Op op = Op::Constant;
         double value = 0.0;  // Constant
-        int index = 0;       // Parameter
+        int index = 0;       // Parameter; Call of a pigment function: the component
+                             // (0 to 4 red green blue filter transmit, 5 gray)
         int a = -1, b = -1;  // operands
         std::vector<int> args;
         int builtin = 0;
@@ -46,6 +49,7 @@ struct FunctionCode {
     std::vector<Node> nodes;
     int root = -1;
     int internal = -1;  // function { internal(n) }: one of functions.inc's
+    std::shared_ptr<const Pigment> pigment;  // function { pigment { ... } }: a colour of x, y, z
 
     /// How many arguments a call passes (an internal function: x, y, z and its own).
     int arity() const;
@@ -56,10 +60,13 @@ struct FunctionCode {
 int function_builtin(const std::string& name, int* arity);
 
 /// What evaluating a function may need from the tracer: POV-Ray's solid noise, for f_noise3d
-/// and f_noise_generator (it lives in trace/noise.cpp; the scene module does not link it).
+/// and f_noise_generator, and its pigments, for pigment functions (they live in trace/; the
+/// scene module does not link it).
 struct FunctionEnv {
     /// POV-Ray's Noise(p, generator), a value in [0, 1]; null: noise cannot be evaluated.
     double (*noise)(double x, double y, double z, int generator) = nullptr;
+    /// POV-Ray's Compute_Pigment at (x, y, z) into red, green, blue, filter, transmit.
+    void (*pigment)(const Pigment& pigment, double x, double y, double z, double* rgbft) = nullptr;
     int noise_generator = 2;  // the scene's (global_settings), for f_noise3d
 };
 
@@ -70,13 +77,14 @@ bool internal_function_known(int n, std::string* name = nullptr, int* extra = nu
 /// Whether the internal function `n` needs FunctionEnv's noise (f_noise3d, f_noise_generator).
 bool internal_function_needs_noise(int n);
 
-/// Whether `f` and everything it calls can be evaluated (with noise only when `with_noise`);
-/// if not, `why` names the first internal function it cannot (e.g. "f_noise3d (internal 76)").
-bool function_evaluable(const FunctionCode& f, std::string* why, bool with_noise = false);
+/// Whether `f` and everything it calls can be evaluated (noise and pigment functions only
+/// `with_tracer`, the tracer's FunctionEnv); if not, `why` names the first function it cannot
+/// (e.g. "f_noise3d (internal 76)").
+bool function_evaluable(const FunctionCode& f, std::string* why, bool with_tracer = false);
 
 /// The function's value for these arguments (missing ones are 0).  Calls nest at most 64
 /// deep (a recursive function is refused at parse time; this guards evaluation).  Noise
-/// functions give 0 without an `env` that has noise.
+/// functions and pigment functions give 0 without an `env` that has them.
 double evaluate_function(const FunctionCode& f, const double* args, int count,
                          const FunctionEnv* env = nullptr);
 

@@ -6,12 +6,14 @@
 // compare, there is no `!`, `?:` or vectors; precedence from loosest: `|`, `&`, the
 // comparisons, `+ -`, `* /`, unary `- +`.  Inside, x y z (and u v) name the parameters, a
 // declared float is a constant, a declared function or a built-in (sin, pow, select, sum...) is
-// called.  Functions of pigments, patterns, splines and transforms are refused as unsupported.
+// called.  A pigment function is called with a component (F(x, y, z).red), evaluated by the
+// tracer only; functions of patterns, splines and transforms are refused as unsupported.
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "scene/function.h"
+#include "scene/object_tree.h"
 #include "scene/scene_parser.h"
 
 namespace mirage::scene_detail {
@@ -90,8 +92,21 @@ std::shared_ptr<const FunctionCode> SceneParser::parse_function_block(
     const Token& keyword, std::vector<std::string> parameters) {
     Token open = expect_open_brace(keyword);
     const Token& first = peek(0);
-    static const char* const kOtherFunctions[] = {"pattern",   "pigment",   "spline",
-                                                  "transform", "image_map", "pattern_function"};
+    if (first.is_word("pigment")) {
+        // POV-Ray's Parse_DeclareFunction: a pigment function, its colour at (x, y, z).
+        Token kw = next();
+        auto pigment = std::make_shared<Pigment>();
+        expect_open_brace(kw);
+        parse_pigment_body(*pigment, kw);
+        finish_pigment(*pigment);
+        expect_close_brace(kw);
+        expect_close_brace(keyword);
+        auto f = std::make_shared<FunctionCode>();
+        f->pigment = std::move(pigment);
+        return f;
+    }
+    static const char* const kOtherFunctions[] = {"pattern", "spline", "transform", "image_map",
+                                                  "pattern_function"};
     for (const char* w : kOtherFunctions) {
         if (first.is_word(w)) {
             // A vector function or a pattern's: the shading side's (or nobody's yet).
@@ -268,6 +283,24 @@ int SceneParser::parse_function_primary(FunctionCode& f) {
         if (static_cast<int>(n.args.size()) != want) {
             fail(t, "the function '" + name + "' takes " + std::to_string(want) +
                         " arguments, got " + std::to_string(n.args.size()));
+        }
+        if ((*callee)->pigment) {
+            // A colour: one of its components (fnsyntax.cpp's member access).
+            expect_punct(".", "after the pigment function '" + name + "' (a colour: .red, "
+                              ".green, .blue, .filter, .transmit or .gray)");
+            Token c = next();
+            static const std::pair<const char*, int> kMembers[] = {
+                {"red", 0},    {"green", 1},    {"blue", 2}, {"filter", 3},
+                {"transmit", 4}, {"gray", 5},   {"x", 0},    {"y", 1},
+                {"z", 2},      {"u", 0},        {"v", 1},    {"t", 4}};
+            n.index = -1;
+            for (const auto& [member, index] : kMembers) {
+                if (c.is_word(member)) n.index = index;
+            }
+            if (n.index < 0) {
+                fail(c, "expected red, green, blue, filter, transmit or gray after '.', got " +
+                            describe(c));
+            }
         }
         return add_node(f, std::move(n));
     }

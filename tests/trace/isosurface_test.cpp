@@ -124,6 +124,33 @@ TEST(Isosurface, NoiseIsPovRaysNoiseWithTheScenesGenerator) {
     }
 }
 
+TEST(Isosurface, APigmentFunctionGivesTheComponentAsked) {
+    // gradient x from black to <1, 0.5, 0> at x = 0.5: red 0.5, gray 0.297 * 0.5 + 0.589 * 0.25.
+    const std::string f =
+        "#declare F = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] "
+        "} } }\n";
+    const glm::dvec3 q(0.5, 0, 0.2);
+    const Parsed red = build(f + "isosurface { function { y - F(x, y, z).red } "
+                                 "contained_by { box { <0, -1, -1>, <0.9, 2, 1> } } }");
+    EXPECT_TRUE(inside_shape(red.accel.shape(0), q + glm::dvec3(0, 0.5 - 1e-6, 0)));
+    EXPECT_FALSE(inside_shape(red.accel.shape(0), q + glm::dvec3(0, 0.5 + 1e-6, 0)));
+    const Parsed gray = build(f + "isosurface { function { y - F(x, y, z).gray } "
+                                  "contained_by { box { <0, -1, -1>, <0.9, 2, 1> } } }");
+    const double g = 0.297 * 0.5 + 0.589 * 0.25;
+    EXPECT_TRUE(inside_shape(gray.accel.shape(0), q + glm::dvec3(0, g - 1e-6, 0)));
+    EXPECT_FALSE(inside_shape(gray.accel.shape(0), q + glm::dvec3(0, g + 1e-6, 0)));
+    EXPECT_EQ(parse_error(f + "isosurface { function { y - F(x, y, z) } }"),
+              "scene.pov:2:40: expected '.' after the pigment function 'F' (a colour: .red, "
+              ".green, .blue, .filter, .transmit or .gray), got '}'\n"
+              "isosurface { function { y - F(x, y, z) } }\n"
+              "                                       ^");
+    EXPECT_EQ(parse_error(f + "isosurface { function { y - F(x, y, z).w } }"),
+              "scene.pov:2:40: expected red, green, blue, filter, transmit or gray after '.', got "
+              "undefined identifier 'w'\n"
+              "isosurface { function { y - F(x, y, z).w } }\n"
+              "                                       ^");
+}
+
 TEST(Isosurface, BadInputIsReportedWhereItIs) {
     EXPECT_EQ(parse_error("isosurface {\n  sphere { 0, 1 } }"),
               "scene.pov:2:3: expected 'function' to begin the isosurface, got 'sphere'\n"

@@ -16,6 +16,7 @@
 
 #include "scene/function.h"
 #include "trace/noise.h"
+#include "trace/pigment_eval.h"
 
 namespace mirage {
 namespace {
@@ -27,6 +28,15 @@ double trace_noise(double x, double y, double z, int generator) {
     return noise(glm::dvec3(x, y, z), generator);
 }
 
+void trace_pigment(const Pigment& pigment, double x, double y, double z, double* rgbft) {
+    const PigmentColour c = evaluate_pigment(pigment, glm::dvec3(x, y, z));
+    rgbft[0] = c.rgb.x;
+    rgbft[1] = c.rgb.y;
+    rgbft[2] = c.rgb.z;
+    rgbft[3] = c.filter;
+    rgbft[4] = c.transmit;
+}
+
 glm::dvec3 transform_point(const glm::dmat4& m, const glm::dvec3& p) {
     return glm::dvec3(m * glm::dvec4(p, 1.0));
 }
@@ -35,6 +45,7 @@ class IsosurfaceShape final : public ComplexShape {
   public:
     IsosurfaceShape(const Isosurface& iso, const Transform& t) : iso_(iso) {
         env_.noise = &trace_noise;
+        env_.pigment = &trace_pigment;
         env_.noise_generator = iso.noise_generator;
         world_to_local_ = t.inverse;
         local_to_world_ = t.matrix;
