@@ -24,7 +24,7 @@ const char* const kShapeKeywords[] = {
     "cone",           "torus",      "quadric",      "triangle", "smooth_triangle",
     "polygon",        "mesh",       "mesh2",        "poly",     "cubic",
     "quartic",        "text",       "prism",        "lathe",    "sor",
-    "superellipsoid", "isosurface", "height_field",
+    "superellipsoid", "isosurface", "height_field", "blob",
 };
 
 bool SceneParser::is_shape_keyword(const std::string& word) {
@@ -163,6 +163,7 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
         return s;
     }
     if (w == "height_field") return parse_height_field(kw);
+    if (w == "blob") return parse_blob(kw);
     if (w == "lathe") {
         Lathe lathe;
         if (accept_word("linear_spline")) {
@@ -902,6 +903,75 @@ HeightField SceneParser::parse_height_field(const Token& kw) {
     HeightField hf;
     hf.data = std::move(data);
     return hf;
+}
+
+// POV-Ray's Parse_Blob: the threshold (1 unless given) and the components, the old
+// `component strength, radius, <centre>` or `sphere { <centre>, radius, [strength] s mods }`
+// and `cylinder { <a>, <b>, radius, [strength] s mods }`, until the first object modifier.
+// A component's radius is squared at once, so a negative radius acts as its magnitude and a
+// radius of 0 gives a component without effect (POV-Ray's "degenerate blob element").
+Shape SceneParser::parse_blob(const Token& kw) {
+    Blob blob;
+    while (true) {
+        const Token t = peek(0);
+        if (accept_word("threshold")) {
+            blob.threshold = parse_float();
+            continue;
+        }
+        if (accept_word("component")) {
+            BlobComponent c;
+            c.strength = parse_float();
+            accept_comma();
+            c.radius = parse_float();
+            accept_comma();
+            c.centre = parse_vector();
+            blob.components.push_back(c);
+            continue;
+        }
+        if (t.is_word("sphere") || t.is_word("cylinder")) {
+            const Token item = next();
+            expect_open_brace(item);
+            BlobComponent c;
+            c.cylinder = t.is_word("cylinder");
+            Token at = peek(0);
+            c.centre = parse_vector();
+            accept_comma();
+            if (c.cylinder) {
+                c.end = parse_vector();
+                accept_comma();
+            }
+            c.radius = parse_float();
+            accept_comma();
+            accept_word("strength");
+            c.strength = parse_float();
+            if (c.cylinder && glm::length(c.end - c.centre) < kEpsilon) {
+                fail(at, "degenerate cylindrical component in blob: its ends are the same point");
+            }
+            Transform mods;
+            while (true) {
+                const Token m = peek(0);
+                Transform tr;
+                if (parse_transform_item(tr)) {
+                    mods = compose_transforms(mods, tr);
+                    continue;
+                }
+                if (m.is_word("texture") || m.is_word("pigment") || m.is_word("normal") ||
+                    m.is_word("finish")) {
+                    fail(m, "a blob component's own " + m.text() +
+                                " is not supported yet (give the blob one texture)");
+                }
+                break;
+            }
+            expect_close_brace(item);
+            c.to_world = mods.matrix;
+            c.from_world = mods.inverse;
+            blob.components.push_back(c);
+            continue;
+        }
+        break;
+    }
+    if (blob.components.empty()) fail(kw, "a blob needs at least one component");
+    return blob;
 }
 
 }  // namespace mirage::scene_detail

@@ -400,6 +400,7 @@ class SceneParser {
     // ---- shapes (parse_shapes.cpp) ----
     static bool is_shape_keyword(const std::string& word);
     Shape parse_shape_arguments(const Token& keyword);
+    Shape parse_blob(const Token& keyword);
     Shape parse_polygon(const Token& keyword);
     HeightField parse_height_field(const Token& keyword);
     ObjectNode parse_mesh(const Token& keyword);

@@ -57,7 +57,7 @@ julia_fractal {
     quaternion sqr
     max_iteration 8
 }
-#declare Blob = blob { threshold 0.5 sphere { 0, 1, 1 } }
+#declare Blob = bicubic_patch { type 0 flatness 0 u_steps 2 v_steps 2 <0,0,0> }
 light_source { <5, 5, -5>, rgb 1 photons { refraction on } }
 sphere {
     <0, 1, 0>, 1
@@ -93,7 +93,7 @@ media { scattering { 1, 0.1 } }
     }
     std::vector<std::string> expected{
         "object 'julia_fractal' @3:1",
-        "object 'blob' @8:17",
+        "object 'bicubic_patch' @8:17",
         "light source modifier 'photons' (only point lights) @9:34",
         "modifier 'photons' in 'sphere' @12:5",
         "pattern 'julia' @13:15",

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "trace/shapes/blob.h"
 #include "trace/shapes/height_field.h"
 #include "trace/shapes/isosurface.h"
 #include "trace/shapes/lathe_sor.h"
@@ -30,6 +31,7 @@ Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitiv
         return prepare_height_field(*h, primitive);
     }
     if (const auto* o = std::get_if<Sor>(&primitive.shape)) return prepare_sor(*o, primitive);
+    if (const auto* b = std::get_if<Blob>(&primitive.shape)) return prepare_blob(*b, primitive);
     if (const auto* e = std::get_if<Superellipsoid>(&primitive.shape)) {
         return prepare_superellipsoid(*e, primitive);
     }
