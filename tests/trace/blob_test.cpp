@@ -1,41 +1,22 @@
 // Blobs: the density field against its closed form, hits and normals of one-component blobs
 // against spheres, the parser's defaults and refusals, and POV-Ray's image.
+#include "trace/shapes/blob.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "parsed_scene.h"
 #include "scene/parser.h"
 #include "shapes_parity_test.h"
 #include "trace/scene_accel.h"
-#include "trace/shapes/blob.h"
 
 namespace mirage {
 namespace {
 
-struct Parsed {
-    Scene scene;
-    SceneAccel accel;
-};
-
-Parsed build(const std::string& text) {
-    auto scene = parse_scene_text(text, "scene.pov", ParseOptions{});
-    EXPECT_TRUE(scene.ok()) << scene.message();
-    if (!scene.ok()) return {};
-    auto accel = SceneAccel::build(*scene);
-    EXPECT_TRUE(accel.ok()) << accel.message();
-    if (!accel.ok()) return {};
-    return Parsed{std::move(*scene), std::move(*accel)};
-}
-
-std::vector<double> hits(const Parsed& p, glm::dvec3 o, glm::dvec3 d) {
-    std::vector<ShapeHit> h;
-    intersect_shape_all(p.accel.shape(0), o, glm::normalize(d), 1e-4, 1e6, h);
-    std::vector<double> t;
-    for (const auto& x : h) t.push_back(x.t);
-    std::sort(t.begin(), t.end());
-    return t;
-}
+using testing::build;
+using testing::Parsed;
 
 const Blob& blob_of(const Parsed& p) { return std::get<Blob>(p.scene.primitives.at(0).shape); }
 
@@ -70,7 +51,7 @@ TEST(Blob, OneSphereComponentIsASphereOfTheRadiusWhereTheFieldMeetsTheThreshold)
     const Parsed p =
         build("blob { threshold 0.25 sphere { <0,0,0>, 2, 1 } pigment { rgb 1 } translate y }\n");
     const double r = std::sqrt(2.0);
-    auto t = hits(p, {-5, 1, 0}, {1, 0, 0});
+    auto t = testing::hit_depths(p, {-5, 1, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 5.0 - r, 1e-9);
     EXPECT_NEAR(t[1], 5.0 + r, 1e-9);
@@ -92,14 +73,14 @@ TEST(Blob, OneSphereComponentIsASphereOfTheRadiusWhereTheFieldMeetsTheThreshold)
 TEST(Blob, ACylinderComponentIsACapsuleAndAScaledSphereAnEllipsoid) {
     // A cylinder of radius 1, strength 1, threshold 0.25: radius sqrt(0.5) around the axis
     // from <-1,0,0> to <1,0,0>, rounded at both ends.
-    const Parsed cyl = build(
-        "blob { threshold 0.25 cylinder { <-1,0,0>, <1,0,0>, 1, 1 } pigment { rgb 1 } }\n");
+    const Parsed cyl =
+        build("blob { threshold 0.25 cylinder { <-1,0,0>, <1,0,0>, 1, 1 } pigment { rgb 1 } }\n");
     const double r = std::sqrt(0.5);
-    auto t = hits(cyl, {0.3, 5, 0}, {0, -1, 0});
+    auto t = testing::hit_depths(cyl, {0.3, 5, 0}, {0, -1, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 5.0 - r, 1e-9);
     EXPECT_NEAR(t[1], 5.0 + r, 1e-9);
-    t = hits(cyl, {-5, 0, 0}, {1, 0, 0});
+    t = testing::hit_depths(cyl, {-5, 0, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 4.0 - r, 1e-9);
     EXPECT_NEAR(t[1], 6.0 + r, 1e-9);
@@ -107,7 +88,7 @@ TEST(Blob, ACylinderComponentIsACapsuleAndAScaledSphereAnEllipsoid) {
     // 2 sqrt(0.5), sqrt(0.5), sqrt(0.5).
     const Parsed ell =
         build("blob { threshold 0.25 sphere { 0, 1, 1 scale <2,1,1> } pigment { rgb 1 } }\n");
-    t = hits(ell, {-5, 0, 0}, {1, 0, 0});
+    t = testing::hit_depths(ell, {-5, 0, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 5.0 - 2.0 * r, 1e-9);
     EXPECT_NEAR(t[1], 5.0 + 2.0 * r, 1e-9);
@@ -124,7 +105,7 @@ TEST(Blob, ANegativeComponentCutsAndTheOldSyntaxAndDefaultThresholdHold) {
     EXPECT_FALSE(inside_shape(p.accel.shape(0), {0, 0, 0}));
     EXPECT_TRUE(inside_shape(p.accel.shape(0), {0.6, 0, 0}));
     // Along z through a positive centre only that sphere reaches: 2 (1 - z^2)^2 = 1.
-    const auto t = hits(p, {0.5, 0, -5}, {0, 0, 1});
+    const auto t = testing::hit_depths(p, {0.5, 0, -5}, {0, 0, 1});
     const double z = std::sqrt(1.0 - 1.0 / std::sqrt(2.0));
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 5.0 - z, 1e-9);
@@ -132,31 +113,30 @@ TEST(Blob, ANegativeComponentCutsAndTheOldSyntaxAndDefaultThresholdHold) {
 }
 
 TEST(Blob, ARadiusIsSquaredSoItsSignDoesNotMatterAndZeroGivesNothing) {
-    const Parsed neg =
-        build("blob { threshold 0.25 sphere { 0, -2, 1 } sphere { <5,0,0>, 0, 1 } "
-              "pigment { rgb 1 } }\n");
+    const Parsed neg = build(
+        "blob { threshold 0.25 sphere { 0, -2, 1 } sphere { <5,0,0>, 0, 1 } "
+        "pigment { rgb 1 } }\n");
     EXPECT_NEAR(blob_field(blob_of(neg), {1, 0, 0}), 0.5625, 1e-12);
     EXPECT_EQ(blob_field(blob_of(neg), {5, 0, 0.001}), 0.0);
-    auto t = hits(neg, {-5, 0, 0}, {1, 0, 0});
+    auto t = testing::hit_depths(neg, {-5, 0, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 5.0 - std::sqrt(2.0), 1e-9);
 }
 
 TEST(Blob, BadInputIsRefusedWithItsPlace) {
-    auto empty = parse_scene_text("blob { threshold 1 pigment { rgb 1 } }", "scene.pov",
-                                  ParseOptions{});
+    auto empty =
+        parse_scene_text("blob { threshold 1 pigment { rgb 1 } }", "scene.pov", ParseOptions{});
     ASSERT_FALSE(empty.ok());
     EXPECT_EQ(empty.message().rfind("scene.pov:1:1: a blob needs at least one component", 0), 0u)
         << empty.message();
     auto degenerate = parse_scene_text("blob {\n  cylinder { <1,2,3>, <1,2,3>, 1, 1 }\n}",
                                        "scene.pov", ParseOptions{});
     ASSERT_FALSE(degenerate.ok());
-    EXPECT_EQ(degenerate.message().rfind(
-                  "scene.pov:2:14: degenerate cylindrical component in blob", 0),
-              0u)
+    EXPECT_EQ(
+        degenerate.message().rfind("scene.pov:2:14: degenerate cylindrical component in blob", 0),
+        0u)
         << degenerate.message();
-    auto missing = parse_scene_text("blob { sphere { <0,0,0>, 1 } }", "scene.pov",
-                                    ParseOptions{});
+    auto missing = parse_scene_text("blob { sphere { <0,0,0>, 1 } }", "scene.pov", ParseOptions{});
     ASSERT_FALSE(missing.ok());
     EXPECT_EQ(missing.message().rfind("scene.pov:1:", 0), 0u) << missing.message();
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parsed_scene.h"
 #include "scene/parser.h"
 #include "shapes_parity_test.h"
 #include "trace/noise.h"
@@ -13,36 +14,15 @@
 namespace mirage {
 namespace {
 
-struct Parsed {
-    Scene scene;
-    SceneAccel accel;
-};
+using testing::Parsed;
 
-ParseOptions with_includes() {
-    ParseOptions options;
-    options.library_paths = {"/usr/share/povray-3.7/include"};
-    return options;
-}
-
+// The scenes include POV-Ray's include files (fonts, functions.inc).
 Parsed build(const std::string& text) {
-    auto scene = parse_scene_text(text, "scene.pov", with_includes());
-    EXPECT_TRUE(scene.ok()) << scene.message();
-    if (!scene.ok()) return {};
-    auto accel = SceneAccel::build(*scene);
-    EXPECT_TRUE(accel.ok()) << accel.message();
-    if (!accel.ok()) return {};
-    return Parsed{std::move(*scene), std::move(*accel)};
-}
-
-std::vector<ShapeHit> hits(const Parsed& p, glm::dvec3 o, glm::dvec3 d) {
-    std::vector<ShapeHit> h;
-    intersect_shape_all(p.accel.shape(0), o, glm::normalize(d), 1e-4, 1e6, h);
-    std::sort(h.begin(), h.end(), [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
-    return h;
+    return testing::build(text, testing::with_povray_includes());
 }
 
 std::string parse_error(const std::string& text) {
-    auto s = parse_scene_text(text, "scene.pov", with_includes());
+    auto s = parse_scene_text(text, "scene.pov", testing::with_povray_includes());
     return s.ok() ? std::string("(no error)") : s.message();
 }
 
@@ -53,7 +33,7 @@ TEST(Isosurface, TheRootLiesWithinAccuracyBeyondTheSurface) {
         "isosurface { function { sqrt(x*x + y*y + z*z) - 1 } contained_by { box { -2, 2 } } "
         "accuracy 0.0001 }");
     const glm::dvec3 o(0.3, 0.2, -5);
-    const auto h = hits(p, o, glm::dvec3(0, 0, 1));
+    const auto h = testing::sorted_hits(p, o, glm::dvec3(0, 0, 1));
     ASSERT_EQ(h.size(), 1u);  // max_trace 1: the first root only
     const double exact = 5.0 - std::sqrt(1.0 - 0.09 - 0.04);
     EXPECT_GE(h[0].t, exact);
@@ -71,7 +51,7 @@ TEST(Isosurface, AllIntersectionsFindsTheWayOutInTheTransformedSphere) {
         "#include \"functions.inc\"\n"
         "isosurface { function { f_sphere(x, y, z, 1) } contained_by { sphere { 0, 3 } } "
         "all_intersections scale 2 translate <0, 0, 1> }");
-    const auto h = hits(p, glm::dvec3(0, 0, -5), glm::dvec3(0, 0, 1));
+    const auto h = testing::sorted_hits(p, glm::dvec3(0, 0, -5), glm::dvec3(0, 0, 1));
     ASSERT_EQ(h.size(), 2u);
     // In its own space the sphere has radius 1 and the search `accuracy` 0.001 along a ray
     // whose depths are world depths (twice the local ones).
@@ -80,7 +60,7 @@ TEST(Isosurface, AllIntersectionsFindsTheWayOutInTheTransformedSphere) {
     EXPECT_GE(h[1].t, 8.0);
     EXPECT_LT(h[1].t, 8.001);
     // A ray missing the surface but crossing the container finds nothing.
-    EXPECT_TRUE(hits(p, glm::dvec3(2.5, 0, -5), glm::dvec3(0, 0, 1)).empty());
+    EXPECT_TRUE(testing::sorted_hits(p, glm::dvec3(2.5, 0, -5), glm::dvec3(0, 0, 1)).empty());
     EXPECT_FALSE(inside_shape(p.accel.shape(0), glm::dvec3(0, 0, 3.2)));
     EXPECT_TRUE(inside_shape(p.accel.shape(0), glm::dvec3(0, 0, 2.8)));
 }
@@ -91,16 +71,16 @@ TEST(Isosurface, AClosedContainerShowsWhereItCutsTheInside) {
     const Parsed open = build("isosurface { " + body + " open }");
     // From the side below y = 0.5 the ray enters the box inside the function: the box's
     // side is the surface, with its own normal.
-    auto h = hits(closed, glm::dvec3(-5, 0, 0), glm::dvec3(1, 0, 0));
+    auto h = testing::sorted_hits(closed, glm::dvec3(-5, 0, 0), glm::dvec3(1, 0, 0));
     ASSERT_EQ(h.size(), 1u);
     EXPECT_DOUBLE_EQ(h[0].t, 4.0);
     EXPECT_EQ(h[0].part, 1);  // POV-Ray's SIDE_X_0
     const glm::dvec3 n = shape_normal(closed.accel.shape(0), glm::dvec3(-1, 0, 0), h[0]);
     EXPECT_EQ(n, glm::dvec3(-1, 0, 0));
-    EXPECT_TRUE(hits(open, glm::dvec3(-5, 0, 0), glm::dvec3(1, 0, 0)).empty());
+    EXPECT_TRUE(testing::sorted_hits(open, glm::dvec3(-5, 0, 0), glm::dvec3(1, 0, 0)).empty());
     // From above both find the plane y = 0.5, with the gradient's normal.
     for (const Parsed* p : {&closed, &open}) {
-        h = hits(*p, glm::dvec3(0.2, 5, 0.1), glm::dvec3(0, -1, 0));
+        h = testing::sorted_hits(*p, glm::dvec3(0.2, 5, 0.1), glm::dvec3(0, -1, 0));
         ASSERT_EQ(h.size(), 1u);
         EXPECT_GT(h[0].t, 4.5);
         EXPECT_LE(h[0].t, 4.501);
@@ -130,12 +110,14 @@ TEST(Isosurface, APigmentFunctionGivesTheComponentAsked) {
         "#declare F = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] "
         "} } }\n";
     const glm::dvec3 q(0.5, 0, 0.2);
-    const Parsed red = build(f + "isosurface { function { y - F(x, y, z).red } "
-                                 "contained_by { box { <0, -1, -1>, <0.9, 2, 1> } } }");
+    const Parsed red = build(f +
+                             "isosurface { function { y - F(x, y, z).red } "
+                             "contained_by { box { <0, -1, -1>, <0.9, 2, 1> } } }");
     EXPECT_TRUE(inside_shape(red.accel.shape(0), q + glm::dvec3(0, 0.5 - 1e-6, 0)));
     EXPECT_FALSE(inside_shape(red.accel.shape(0), q + glm::dvec3(0, 0.5 + 1e-6, 0)));
-    const Parsed gray = build(f + "isosurface { function { y - F(x, y, z).gray } "
-                                  "contained_by { box { <0, -1, -1>, <0.9, 2, 1> } } }");
+    const Parsed gray = build(f +
+                              "isosurface { function { y - F(x, y, z).gray } "
+                              "contained_by { box { <0, -1, -1>, <0.9, 2, 1> } } }");
     const double g = 0.297 * 0.5 + 0.589 * 0.25;
     EXPECT_TRUE(inside_shape(gray.accel.shape(0), q + glm::dvec3(0, g - 1e-6, 0)));
     EXPECT_FALSE(inside_shape(gray.accel.shape(0), q + glm::dvec3(0, g + 1e-6, 0)));
@@ -177,9 +159,9 @@ TEST(Isosurface, BadInputIsReportedWhereItIs) {
 }
 
 TEST(Isosurface, ValuesPovRayReplacesAreReplacedWithAWarning) {
-    auto s = parse_scene_text(
-        "isosurface { function { x } accuracy 0 max_gradient -1 max_trace 12 }", "scene.pov",
-        ParseOptions{});
+    auto s =
+        parse_scene_text("isosurface { function { x } accuracy 0 max_gradient -1 max_trace 12 }",
+                         "scene.pov", ParseOptions{});
     ASSERT_TRUE(s.ok()) << s.message();
     const auto& iso = std::get<Isosurface>(s->primitives[0].shape);
     EXPECT_EQ(iso.accuracy, 0.001);
@@ -189,7 +171,7 @@ TEST(Isosurface, ValuesPovRayReplacesAreReplacedWithAWarning) {
 }
 
 TEST(Isosurface, LenientModeLeavesOutAnIsosurfaceItCannotEvaluate) {
-    ParseOptions lenient = with_includes();
+    ParseOptions lenient = testing::with_povray_includes();
     lenient.strict = false;
     auto s = parse_scene_text(
         "#include \"functions.inc\"\n"

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "parsed_scene.h"
 #include "scene/parser.h"
 #include "shapes_parity_test.h"
 #include "trace/scene_accel.h"
@@ -11,24 +12,9 @@
 namespace mirage {
 namespace {
 
-struct Parsed {
-    Scene scene;
-    SceneAccel accel;
-};
-
-Parsed build(const std::string& text) {
-    auto scene = parse_scene_text(text, "scene.pov", ParseOptions{});
-    EXPECT_TRUE(scene.ok()) << scene.message();
-    if (!scene.ok()) return {};
-    auto accel = SceneAccel::build(*scene);
-    EXPECT_TRUE(accel.ok()) << accel.message();
-    if (!accel.ok()) return {};
-    return Parsed{std::move(*scene), std::move(*accel)};
-}
-
-std::optional<SurfaceHit> shoot(const Parsed& p, glm::dvec3 o, glm::dvec3 d) {
-    return p.accel.closest_hit(o, glm::normalize(d), 1e-4, 2e10);
-}
+using testing::build;
+using testing::Parsed;
+using testing::shoot;
 
 TEST(Mesh, ATriangleIsHitInsideItsEdgesOnly) {
     const Parsed p = build("triangle { <0, 0, 0>, <2, 0, 0>, <0, 2, 0> pigment { rgb 1 } }\n");

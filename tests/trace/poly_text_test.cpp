@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parsed_scene.h"
 #include "scene/parser.h"
 #include "shapes_parity_test.h"
 #include "trace/scene_accel.h"
@@ -12,38 +13,17 @@
 namespace mirage {
 namespace {
 
-constexpr const char* kIncludes = "/usr/share/povray-3.7/include";
+using testing::Parsed;
 
-struct Parsed {
-    Scene scene;
-    SceneAccel accel;
-};
-
+// The scenes include POV-Ray's include files (fonts, functions.inc).
 Parsed build(const std::string& text) {
-    ParseOptions o;
-    o.library_paths = {kIncludes};
-    auto scene = parse_scene_text(text, "scene.pov", o);
-    EXPECT_TRUE(scene.ok()) << scene.message();
-    if (!scene.ok()) return {};
-    auto accel = SceneAccel::build(*scene);
-    EXPECT_TRUE(accel.ok()) << accel.message();
-    if (!accel.ok()) return {};
-    return Parsed{std::move(*scene), std::move(*accel)};
-}
-
-std::vector<double> all_hits(const Parsed& p, glm::dvec3 o, glm::dvec3 d) {
-    std::vector<ShapeHit> hits;
-    intersect_shape_all(p.accel.shape(0), o, glm::normalize(d), 1e-4, 1e6, hits);
-    std::vector<double> t;
-    for (const auto& h : hits) t.push_back(h.t);
-    std::sort(t.begin(), t.end());
-    return t;
+    return testing::build(text, testing::with_povray_includes());
 }
 
 TEST(Poly, AQuadraticPolyIsTheSphereItDescribes) {
     // x^2 + y^2 + z^2 - 0.25 = 0: poly { 2, ... } terms x2 xy xz x y2 yz y z2 z 1.
     const Parsed p = build("poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -0.25> pigment { rgb 1 } }\n");
-    const auto t = all_hits(p, {0, 0, -3}, {0, 0, 1});
+    const auto t = testing::hit_depths(p, {0, 0, -3}, {0, 0, 1});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 2.5, 1e-12);
     EXPECT_NEAR(t[1], 3.5, 1e-12);
@@ -57,7 +37,7 @@ TEST(Poly, AQuarticTorusHasTheTorusRoots) {
     const Parsed p = build(
         "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -2.18, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2, "
         "0, 1.82, 0, 0, 0, 0, 1, 0, -2.18, 0, 0.8281> sturm pigment { rgb 1 } }\n");
-    const auto t = all_hits(p, {-3, 0, 0}, {1, 0, 0});
+    const auto t = testing::hit_depths(p, {-3, 0, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 4u);
     EXPECT_NEAR(t[0], 3.0 - 1.3, 1e-7);
     EXPECT_NEAR(t[1], 3.0 - 0.7, 1e-7);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parsed_scene.h"
 #include "scene/parser.h"
 #include "shapes_parity_test.h"
 #include "trace/scene_accel.h"
@@ -12,38 +13,17 @@
 namespace mirage {
 namespace {
 
-struct Parsed {
-    Scene scene;
-    SceneAccel accel;
-};
-
-Parsed build(const std::string& text) {
-    auto scene = parse_scene_text(text, "scene.pov", ParseOptions{});
-    EXPECT_TRUE(scene.ok()) << scene.message();
-    if (!scene.ok()) return {};
-    auto accel = SceneAccel::build(*scene);
-    EXPECT_TRUE(accel.ok()) << accel.message();
-    if (!accel.ok()) return {};
-    return Parsed{std::move(*scene), std::move(*accel)};
-}
-
-std::vector<double> hits(const Parsed& p, glm::dvec3 o, glm::dvec3 d) {
-    std::vector<ShapeHit> h;
-    intersect_shape_all(p.accel.shape(0), o, glm::normalize(d), 1e-4, 1e6, h);
-    std::vector<double> t;
-    for (const auto& x : h) t.push_back(x.t);
-    std::sort(t.begin(), t.end());
-    return t;
-}
+using testing::build;
+using testing::Parsed;
 
 TEST(Prism, ALinearSquarePrismIsABox) {
     const Parsed p =
         build("prism { 0, 2, 5, <-1,-1>, <1,-1>, <1,1>, <-1,1>, <-1,-1> pigment { rgb 1 } }\n");
-    auto t = hits(p, {-5, 1, 0}, {1, 0, 0});
+    auto t = testing::hit_depths(p, {-5, 1, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 4.0, 1e-12);
     EXPECT_NEAR(t[1], 6.0, 1e-12);
-    t = hits(p, {0.5, 5, 0.5}, {0, -1, 0});  // through the caps
+    t = testing::hit_depths(p, {0.5, 5, 0.5}, {0, -1, 0});  // through the caps
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 3.0, 1e-12);
     EXPECT_NEAR(t[1], 5.0, 1e-12);
@@ -58,12 +38,12 @@ TEST(Prism, ALinearSquarePrismIsABox) {
 TEST(Prism, AnOpenPrismHasNoCapsAndAConicOneNarrowsToTheOrigin) {
     const Parsed open = build(
         "prism { 0, 2, 5, <-1,-1>, <1,-1>, <1,1>, <-1,1>, <-1,-1> open pigment { rgb 1 } }\n");
-    EXPECT_TRUE(hits(open, {0.5, 5, 0.5}, {0, -1, 0}).empty());
+    EXPECT_TRUE(testing::hit_depths(open, {0.5, 5, 0.5}, {0, -1, 0}).empty());
     // A conic sweep from y = 0 to 1: at height h the square is h wide on each side.
     const Parsed conic = build(
         "prism { conic_sweep 0, 1, 5, <-1,-1>, <1,-1>, <1,1>, <-1,1>, <-1,-1> pigment { rgb 1 } "
         "}\n");
-    auto t = hits(conic, {-5, 0.5, 0}, {1, 0, 0});
+    auto t = testing::hit_depths(conic, {-5, 0.5, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 4.5, 1e-12);
     EXPECT_NEAR(t[1], 5.5, 1e-12);
@@ -74,7 +54,7 @@ TEST(Lathe, ALinearLatheIsACone) {
     // 0.3 at y = 1 (r = 0.5) meets the cone at x = -0.4 and 0.4.
     const Parsed p =
         build("lathe { linear_spline 4, <0,0>, <1,0>, <0,2>, <0,0> pigment { rgb 1 } }\n");
-    auto t = hits(p, {-5, 1, 0.3}, {1, 0, 0});
+    auto t = testing::hit_depths(p, {-5, 1, 0.3}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 4.6, 1e-9);
     EXPECT_NEAR(t[1], 5.4, 1e-9);
@@ -90,11 +70,11 @@ TEST(Lathe, ALinearLatheIsACone) {
 TEST(Sor, ACylindricalProfileIsACylinder) {
     // r = 0.5 from y = 0 to 1 (control points below and above set the slopes to zero).
     const Parsed p = build("sor { 4, <0.5,-1>, <0.5,0>, <0.5,1>, <0.5,2> pigment { rgb 1 } }\n");
-    auto t = hits(p, {-5, 0.5, 0}, {1, 0, 0});
+    auto t = testing::hit_depths(p, {-5, 0.5, 0}, {1, 0, 0});
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 4.5, 1e-9);
     EXPECT_NEAR(t[1], 5.5, 1e-9);
-    t = hits(p, {0.2, 5, 0}, {0, -1, 0});  // the caps
+    t = testing::hit_depths(p, {0.2, 5, 0}, {0, -1, 0});  // the caps
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 4.0, 1e-9);
     EXPECT_NEAR(t[1], 5.0, 1e-9);
