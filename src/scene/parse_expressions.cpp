@@ -127,8 +127,7 @@ bool SceneParser::starts_float(const Token& t) const {
         case TokenKind::Identifier: {
             if (is_keyword(t)) return is_float_function(t.text());
             auto sym = t.symbol ? t.symbol : lookup(t.text());
-            if (sym &&
-                sym->value.holds<std::shared_ptr<const FunctionCode>>()) {
+            if (sym && sym->value.holds<std::shared_ptr<const FunctionCode>>()) {
                 return true;  // a call of a user function
             }
             return identifier_numeric_size(sym) == 1;
@@ -568,18 +567,7 @@ Numeric SceneParser::parse_function(const Token& name) {
         if (f == "strlen") return scalar(static_cast<double>(s.size()));
         if (f == "val") return scalar(std::atof(s.c_str()));
         if (f == "asc") return scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
-        std::vector<std::string> dirs{
-            std::filesystem::path(frames_.back().file->path).parent_path().generic_string()};
-        for (const auto& lib : options_.library_paths) dirs.push_back(lib);
-        std::error_code ec;
-        if (std::filesystem::path(s).is_absolute()) {
-            return scalar(std::filesystem::is_regular_file(s, ec) ? 1.0 : 0.0);
-        }
-        for (const auto& d : dirs) {
-            auto p = d.empty() ? std::filesystem::path(s) : std::filesystem::path(d) / s;
-            if (std::filesystem::is_regular_file(p, ec)) return scalar(1.0);
-        }
-        return scalar(0.0);
+        return scalar(find_scene_file(s).empty() ? 0.0 : 1.0);
     }
     if (f == "strcmp") {
         expect_punct("(", "after 'strcmp'");

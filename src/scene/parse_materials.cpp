@@ -712,18 +712,7 @@ void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw, d
         }
     }
     // Found beside the scene, then on the library paths (POV-Ray's Locate_File).
-    std::vector<std::string> dirs{std::filesystem::path(name_at.file->path).parent_path().string()};
-    for (const std::string& lib : options_.library_paths) dirs.push_back(lib);
-    std::string found;
-    for (const std::string& d : dirs) {
-        const std::filesystem::path candidate =
-            d.empty() ? std::filesystem::path(name) : std::filesystem::path(d) / name;
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(candidate, ec)) {
-            found = candidate.string();
-            break;
-        }
-    }
+    const std::string found = find_scene_file(name);
     if (found.empty()) fail(name_at, "cannot find image file '" + name + "'");
     auto image = read_image_rgba(found);
     if (!image) fail(name_at, image.message());
@@ -821,8 +810,7 @@ void SceneParser::parse_image_map(Pattern& p, PatternUse use, const Token& kw, d
 
 std::vector<ColourMapEntry> SceneParser::parse_colour_map(const Token& kw) {
     expect_open_brace(kw);
-    if (const Value* v = peek_identifier_value(0);
-        v && v->holds<ColourMapValue>()) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<ColourMapValue>()) {
         auto entries = identifier_as<ColourMapValue>(next(), "a color_map").entries;
         expect_close_brace(kw);
         return entries;
@@ -882,8 +870,7 @@ std::vector<ColourMapEntry> SceneParser::parse_colour_map(const Token& kw) {
 
 std::vector<PigmentMapEntry> SceneParser::parse_pigment_map(const Token& kw) {
     expect_open_brace(kw);
-    if (const Value* v = peek_identifier_value(0);
-        v && v->holds<MaterialValue>()) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a pigment_map");
         if (m.kind != MaterialValue::Kind::PigmentMap)
             fail(kw, "expected a pigment_map identifier");
@@ -912,8 +899,7 @@ std::vector<PigmentMapEntry> SceneParser::parse_pigment_map(const Token& kw) {
 
 std::vector<NormalMapEntry> SceneParser::parse_normal_map(const Token& kw) {
     expect_open_brace(kw);
-    if (const Value* v = peek_identifier_value(0);
-        v && v->holds<MaterialValue>()) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a normal_map");
         if (m.kind != MaterialValue::Kind::NormalMap) fail(kw, "expected a normal_map identifier");
         expect_close_brace(kw);
@@ -941,8 +927,7 @@ std::vector<NormalMapEntry> SceneParser::parse_normal_map(const Token& kw) {
 
 std::vector<TextureMapEntry> SceneParser::parse_texture_map(const Token& kw) {
     expect_open_brace(kw);
-    if (const Value* v = peek_identifier_value(0);
-        v && v->holds<MaterialValue>()) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a texture_map");
         if (m.kind != MaterialValue::Kind::TextureMap)
             fail(kw, "expected a texture_map identifier");
@@ -970,8 +955,7 @@ std::vector<TextureMapEntry> SceneParser::parse_texture_map(const Token& kw) {
 
 std::vector<SlopeMapEntry> SceneParser::parse_slope_map(const Token& kw) {
     expect_open_brace(kw);
-    if (const Value* v = peek_identifier_value(0);
-        v && v->holds<MaterialValue>()) {
+    if (const Value* v = peek_identifier_value(0); v && v->holds<MaterialValue>()) {
         auto m = identifier_as<MaterialValue>(next(), "a slope_map");
         if (m.kind != MaterialValue::Kind::SlopeMap) fail(kw, "expected a slope_map identifier");
         expect_close_brace(kw);

@@ -856,19 +856,7 @@ HeightField SceneParser::parse_height_field(const Token& kw) {
             // the image library here expands palettes to colour.
             fail(type_token, "unsupported height_field image type '" + type + "'");
         }
-        std::vector<std::string> dirs{
-            std::filesystem::path(name_at.file->path).parent_path().string()};
-        for (const std::string& lib : options_.library_paths) dirs.push_back(lib);
-        std::string found;
-        for (const std::string& d : dirs) {
-            const std::filesystem::path candidate =
-                d.empty() ? std::filesystem::path(name) : std::filesystem::path(d) / name;
-            std::error_code ec;
-            if (std::filesystem::is_regular_file(candidate, ec)) {
-                found = candidate.string();
-                break;
-            }
-        }
+        const std::string found = find_scene_file(name);
         if (found.empty()) fail(name_at, "cannot find height field image file '" + name + "'");
         auto image = read_height_image(found);
         if (!image) fail(name_at, image.message());

@@ -406,9 +406,10 @@ class SceneParser {
     ObjectNode parse_mesh(const Token& keyword);
     Shape parse_text(const Token& keyword);
     Shape parse_isosurface(const Token& keyword);
-    /// A file the scene names (a font, an image), looked up as POV-Ray does: as given, in the
-    /// including file's directory, then the library paths, each also with `extension` added.
-    std::string find_scene_file(const std::string& name, const std::string& extension) const;
+    /// A file the scene names (a font, an image, a height field, file_exists' argument), looked
+    /// up as POV-Ray does: in the including file's directory, then the library paths (an
+    /// absolute name as given), each also with `extension` added when there is one; "" if none.
+    std::string find_scene_file(const std::string& name, const std::string& extension = "") const;
     std::map<std::string, std::shared_ptr<TrueTypeFont>> fonts_;
     std::optional<Texture> parse_mesh_triangle_texture();
     void parse_object_statement(const Token& keyword, ObjectNode& out);
