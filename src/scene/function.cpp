@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "scene/scene.h"
+
 namespace mirage {
 namespace {
 
@@ -175,8 +177,8 @@ double internal_value(int n, const double* p, const FunctionEnv* env) {
         case 76:
         case 78:
             if (!env || !env->noise) return 0.0;
-            return env->noise(X, Y, Z, n == 76 ? env->noise_generator
-                                               : (static_cast<int>(P[0]) & 0x03));
+            return env->noise(X, Y, Z,
+                              n == 76 ? env->noise_generator : (static_cast<int>(P[0]) & 0x03));
         case 17:
             return std::sqrt(X * X * P[0] * P[0] + Y * Y * P[1] * P[1] + Z * Z * P[2] * P[2]);
         case 45:
@@ -343,8 +345,7 @@ double eval(const FunctionCode& f, int i, double* args, int count, int depth,
             if (n.callee->pigment) {
                 double c[5] = {};
                 if (env && env->pigment) env->pigment(*n.callee->pigment, a[0], a[1], a[2], c);
-                // .gray: POV-Ray's GREY_SCALE weights.
-                return n.index == 5 ? 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]
+                return n.index == 5 ? greyscale(glm::dvec3(c[0], c[1], c[2]))
                                     : c[std::clamp(n.index, 0, 4)];
             }
             return call(*n.callee, a, k, depth + 1, env);

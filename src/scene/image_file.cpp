@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "scene/scene.h"
+
 namespace mirage {
 
 Result<RgbaImage> read_image_rgba(const std::string& path) {
@@ -55,14 +57,12 @@ Result<RgbaImage> read_image_rgba(const std::string& path) {
 namespace mirage {
 namespace {
 
-constexpr double kRedToGrey = 0.297, kGreenToGrey = 0.589, kBlueToGrey = 0.114;  // colour.h
-
 // image_height_at's three kinds of pixel, from values as POV-Ray's image classes hold them.
 std::uint16_t grey_height(float grey) { return static_cast<std::uint16_t>(grey * 65535.0f); }
 std::uint16_t colour_height(float r, float g, float b, bool deep) {
     if (deep) {
-        return static_cast<std::uint16_t>(
-            static_cast<float>(kRedToGrey * r + kGreenToGrey * g + kBlueToGrey * b) * 65535.0f);
+        return static_cast<std::uint16_t>(static_cast<float>(greyscale(glm::dvec3(r, g, b))) *
+                                          65535.0f);
     }
     return static_cast<std::uint16_t>((r * 256.0 + g) * 255.0);
 }

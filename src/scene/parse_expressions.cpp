@@ -315,7 +315,7 @@ Numeric SceneParser::apply_period(const Numeric& value, const Token& dot) {
         {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
     if (c.is_word("gray")) {
         Numeric n = promote(value, 3);
-        return Numeric::scalar(0.297 * n.v[0] + 0.589 * n.v[1] + 0.114 * n.v[2]);
+        return Numeric::scalar(greyscale(glm::dvec3(n.v[0], n.v[1], n.v[2])));
     }
     for (const auto& [name, index] : kComponents) {
         if (c.is_word(name)) {

@@ -23,6 +23,11 @@ struct Colour {
     double transmit = 0.0;
 };
 
+/// POV-Ray's greyscale of a colour (GREY_SCALE in base/colour.h: 0.297, 0.589, 0.114).
+inline double greyscale(const glm::dvec3& rgb) {
+    return 0.297 * rgb.x + 0.589 * rgb.y + 0.114 * rgb.z;
+}
+
 /// An affine map from an object's (or a pattern's) own space to world space.
 struct Transform {
     glm::dmat4 matrix{1.0};

@@ -55,8 +55,6 @@ PigmentColour colour_map_lookup(const std::vector<ColourMapEntry>& map, double v
 
 }  // namespace
 
-double greyscale(const glm::dvec3& rgb) { return 0.297 * rgb.x + 0.589 * rgb.y + 0.114 * rgb.z; }
-
 double pattern_value(const Pigment& pigment, const glm::dvec3& p) {
     return evaluate_pattern(pigment, p, default_pattern_context());
 }

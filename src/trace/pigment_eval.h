@@ -22,9 +22,6 @@ struct PigmentColour {
     double opacity() const { return 1.0 - filter - transmit; }
 };
 
-/// POV-Ray's greyscale weights (base/types.h).
-double greyscale(const glm::dvec3& rgb);
-
 /// The pattern value in [0, 1] of a pigment at a point of the pattern's own space (after the
 /// warp chain), as POV-Ray's Evaluate_TPat.
 double pattern_value(const Pigment& pigment, const glm::dvec3& pattern_point);
