@@ -10,19 +10,38 @@
 #include "scene/scene.h"
 
 namespace mirage {
+namespace {
 
-Result<RgbaImage> read_image_rgba(const std::string& path) {
+// A file's pixels as floats, every channel, with the file's own description.
+struct FloatPixels {
+    OIIO::ImageSpec spec;
+    std::vector<float> data;  // width * height * spec.nchannels, top row first
+};
+
+Result<FloatPixels> read_float_pixels(const std::string& path) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) return make_error(path + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
+    FloatPixels f{in->spec(), {}};
+    const OIIO::ImageSpec& spec = f.spec;
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
         return make_error(path + ": not a 2D image with pixels");
     }
-    const int channels = spec.nchannels;
-    std::vector<float> data(static_cast<std::size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) {
+    f.data.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, f.data.data())) {
         return make_error(path + ": cannot read pixels: " + in->geterror());
     }
+    in->close();
+    return f;
+}
+
+}  // namespace
+
+Result<RgbaImage> read_image_rgba(const std::string& path) {
+    auto pixels = read_float_pixels(path);
+    if (!pixels) return make_error(pixels.message());
+    const OIIO::ImageSpec& spec = pixels->spec;
+    const std::vector<float>& data = pixels->data;
+    const int channels = spec.nchannels;
     RgbaImage image;
     image.width = spec.width;
     image.height = spec.height;
@@ -39,7 +58,6 @@ Result<RgbaImage> read_image_rgba(const std::string& path) {
     } else if (colour_space.rfind("GammaCorrected", 0) == 0) {
         image.file_gamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
     }
-    in->close();
     image.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * 4);
     for (std::size_t p = 0, n = static_cast<std::size_t>(spec.width) * spec.height; p < n; ++p) {
         const int colour_channels = channels - (alpha >= 0 ? 1 : 0);
@@ -52,9 +70,6 @@ Result<RgbaImage> read_image_rgba(const std::string& path) {
     return image;
 }
 
-}  // namespace mirage
-
-namespace mirage {
 namespace {
 
 // image_height_at's three kinds of pixel, from values as POV-Ray's image classes hold them.
@@ -156,17 +171,11 @@ Result<HeightImage> read_height_image(const std::string& path) {
     const std::size_t n = std::fread(signature, 1, 8, probe);
     std::fclose(probe);
     if (n == 8 && png_sig_cmp(signature, 0, 8) == 0) return read_png_heights(path);
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return make_error(path + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
-        return make_error(path + ": not a 2D image with pixels");
-    }
+    auto pixels = read_float_pixels(path);
+    if (!pixels) return make_error(pixels.message());
+    const OIIO::ImageSpec& spec = pixels->spec;
+    const std::vector<float>& data = pixels->data;
     const int channels = spec.nchannels;
-    std::vector<float> data(static_cast<std::size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) {
-        return make_error(path + ": cannot read pixels: " + in->geterror());
-    }
     const bool deep = spec.format.size() > 1;
     const int colour_channels =
         channels - (spec.alpha_channel >= 0 || channels == 2 || channels == 4 ? 1 : 0);
