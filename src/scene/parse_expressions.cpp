@@ -308,27 +308,35 @@ Numeric SceneParser::parse_num_factor() {
     return value;
 }
 
+int SceneParser::member_index(const Token& member) {
+    // POV-Ray's member names (fncode.cpp's compile_member, the same for vectors and colours).
+    static const std::pair<const char*, int> kMembers[] = {
+        {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},        {"v", 1},
+        {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}, {"gray", 5}};
+    for (const auto& [name, index] : kMembers) {
+        if (member.is_word(name)) return index;
+    }
+    return -1;
+}
+
 Numeric SceneParser::apply_period(const Numeric& value, const Token& dot) {
     Token c = next();
-    static const std::pair<const char*, int> kComponents[] = {
-        {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},       {"v", 1},
-        {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
-    if (c.is_word("gray")) {
+    const int index = member_index(c);
+    if (index == 5) {
         Numeric n = promote(value, 3);
         return Numeric::scalar(greyscale(glm::dvec3(n.v[0], n.v[1], n.v[2])));
     }
-    for (const auto& [name, index] : kComponents) {
-        if (c.is_word(name)) {
-            if (index >= value.size) {
-                fail(c, "cannot take '." + c.text() + "' of a " + numeric_type_name(value.size));
-            }
-            return Numeric::scalar(value.v[index]);
-        }
+    if (index < 0) {
+        fail(c,
+             "expected x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.', "
+             "got " +
+                 describe(c));
     }
-    fail(c,
-         "expected x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.', got " +
-             describe(c));
+    if (index >= value.size) {
+        fail(c, "cannot take '." + c.text() + "' of a " + numeric_type_name(value.size));
+    }
     (void)dot;
+    return Numeric::scalar(value.v[index]);
 }
 
 Numeric SceneParser::parse_factor_body() {

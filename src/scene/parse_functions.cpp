@@ -286,17 +286,11 @@ int SceneParser::parse_function_primary(FunctionCode& f) {
         }
         if ((*callee)->pigment) {
             // A colour: one of its components (fnsyntax.cpp's member access).
-            expect_punct(".", "after the pigment function '" + name + "' (a colour: .red, "
-                              ".green, .blue, .filter, .transmit or .gray)");
+            expect_punct(".", "after the pigment function '" + name +
+                                  "' (a colour: .red, "
+                                  ".green, .blue, .filter, .transmit or .gray)");
             Token c = next();
-            static const std::pair<const char*, int> kMembers[] = {
-                {"red", 0},    {"green", 1},    {"blue", 2}, {"filter", 3},
-                {"transmit", 4}, {"gray", 5},   {"x", 0},    {"y", 1},
-                {"z", 2},      {"u", 0},        {"v", 1},    {"t", 4}};
-            n.index = -1;
-            for (const auto& [member, index] : kMembers) {
-                if (c.is_word(member)) n.index = index;
-            }
+            n.index = member_index(c);
             if (n.index < 0) {
                 fail(c, "expected red, green, blue, filter, transmit or gray after '.', got " +
                             describe(c));

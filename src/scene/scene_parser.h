@@ -361,6 +361,9 @@ class SceneParser {
     int parse_function_primary(FunctionCode& f);
     Numeric parse_identifier_value(const Token& t);
     Numeric apply_period(const Numeric& value, const Token& dot);
+    /// The component a member name after '.' takes, as POV-Ray numbers them: x, y, z, t (u, v;
+    /// red, green, blue, filter, transmit) 0 to 4, gray 5; -1 for any other token.
+    static int member_index(const Token& member);
     double parse_float();
     double parse_float_param();
     glm::dvec3 parse_vector();

@@ -133,6 +133,21 @@ TEST(Isosurface, APigmentFunctionGivesTheComponentAsked) {
               "                                       ^");
 }
 
+TEST(Isosurface, APigmentFunctionsMemberTIsItsFilter) {
+    // POV-Ray's compile_member: .t is the fourth component, the filter (0.4 at x = 0.5 here;
+    // the transmit is 0).
+    const std::string f =
+        "#declare F = function { pigment { gradient x color_map { [0 rgbft 0] "
+        "[1 rgbft <1, 0.5, 0, 0.8, 0>] } } }\n";
+    const glm::dvec3 q(0.5, 0, 0.2);
+    for (const char* member : {"t", "filter"}) {
+        const Parsed p = build(f + "isosurface { function { y - F(x, y, z)." + member +
+                               " } contained_by { box { <0, -1, -1>, <0.9, 2, 1> } } }");
+        EXPECT_TRUE(inside_shape(p.accel.shape(0), q + glm::dvec3(0, 0.4 - 1e-6, 0))) << member;
+        EXPECT_FALSE(inside_shape(p.accel.shape(0), q + glm::dvec3(0, 0.4 + 1e-6, 0))) << member;
+    }
+}
+
 TEST(Isosurface, BadInputIsReportedWhereItIs) {
     EXPECT_EQ(parse_error("isosurface {\n  sphere { 0, 1 } }"),
               "scene.pov:2:3: expected 'function' to begin the isosurface, got 'sphere'\n"
