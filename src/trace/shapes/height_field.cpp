@@ -19,7 +19,6 @@ namespace {
 
 constexpr double kOffset = 0.001;      // HFIELD_OFFSET
 constexpr double kTolerance = 1.0e-6;  // HFIELD_TOLERANCE
-constexpr double kBoxTolerance = 1.0e-6;
 constexpr int kLower = 1, kUpper = 2;
 
 glm::dvec3 transform_point(const glm::dmat4& m, const glm::dvec3& p) {
@@ -59,8 +58,10 @@ class HeightFieldShape final : public ComplexShape {
         // The local ray is not normalised, so its depths are the world ray's.
         const glm::dvec3 P = transform_point(world_to_local_, origin);
         const glm::dvec3 D = glm::dmat3(world_to_local_) * direction;
+        // hfield.cpp: Box::Intersect on the bounding box in the shape's space.
         double depth1, depth2;
-        if (!box_intersect(P, D, depth1, depth2)) return;
+        int side1, side2;
+        if (!box_roots(corner1_, corner2_, P, D, 0.0, depth1, side1, depth2, side2)) return;
         if (depth1 < kTolerance) {
             depth1 = kTolerance;
             if (depth1 > depth2) return;
@@ -165,26 +166,6 @@ class HeightFieldShape final : public ComplexShape {
   private:
     std::size_t index(int x, int z) const { return static_cast<std::size_t>(z) * width_ + x; }
     double height(int x, int z) const { return heights_[index(x, z)]; }
-
-    // Box::Intersect on the bounding box in the shape's space.
-    bool box_intersect(const glm::dvec3& P, const glm::dvec3& D, double& depth1,
-                       double& depth2) const {
-        double tmin = -kPovBoundHuge, tmax = kPovBoundHuge;
-        for (int a = 0; a < 3; ++a) {
-            if (std::abs(D[a]) < kPovEpsilon) {
-                if (P[a] < corner1_[a] || P[a] > corner2_[a]) return false;
-                continue;
-            }
-            double t1 = (corner1_[a] - P[a]) / D[a], t2 = (corner2_[a] - P[a]) / D[a];
-            if (t1 > t2) std::swap(t1, t2);
-            tmin = std::max(tmin, t1);
-            tmax = std::min(tmax, t2);
-            if (tmin > tmax || tmax < kBoxTolerance) return false;
-        }
-        depth1 = tmin;
-        depth2 = tmax;
-        return true;
-    }
 
     // intersect_pixel: the cell's two triangles.
     void intersect_cell(int x, int z, const glm::dvec3& P, const glm::dvec3& D, double mindist,
