@@ -230,4 +230,13 @@ std::string ExactPath::class_name() const {
     return std::string(path_fate_name(quadratic()->fate()));
 }
 
+std::vector<QuadraticSegment> ExactPath::release_storage() {
+    if (auto* q = std::get_if<QuadraticPath>(&path_)) return q->release_storage();
+    return {};
+}
+
+void ExactPath::adopt_storage(std::vector<QuadraticSegment>&& storage) {
+    if (auto* q = std::get_if<QuadraticPath>(&path_)) q->adopt_storage(std::move(storage));
+}
+
 }  // namespace mirage

@@ -91,6 +91,11 @@ class ExactPath {
     const ExactRay* exponential() const { return std::get_if<ExactRay>(&path_); }
     const QuadraticPath* quadratic() const { return std::get_if<QuadraticPath>(&path_); }
 
+    /// The storage of a general path's segments, handed from one path to the next so that a
+    /// tracer does not allocate it for every ray (empty for an exponential path).
+    std::vector<QuadraticSegment> release_storage();
+    void adopt_storage(std::vector<QuadraticSegment>&& storage);
+
   private:
     explicit ExactPath(ExactRay ray) : path_(std::move(ray)) {}
     explicit ExactPath(QuadraticPath path) : path_(std::move(path)) {}

@@ -368,8 +368,9 @@ Result<QuadraticPath> QuadraticPath::make(const QuadraticProfile& profile, doubl
         r.cur_.done = true;
         return r;
     }
-    const RunEnd ahead =
-        run_end(profile, y0, piece_for(profile, y0, r.sg_), r.sg_, r.Q0_, false, level);
+    const int start_piece = piece_for(profile, y0, r.sg_);
+    r.hint_a_ = r.hint_b_ = std::clamp(start_piece, 0, m - 1);
+    const RunEnd ahead = run_end(profile, y0, start_piece, r.sg_, r.Q0_, false, level);
     if (ahead.kind == SweepEnd::Vertex) {
         const PieceGeometry g = geometry(profile, ahead.piece);
         const double a_v = 0.5 * (g.b + 2.0 * g.c * (ahead.y - g.ylo)) * r.inv_beta_sq_;
@@ -436,7 +437,7 @@ Result<QuadraticPath> QuadraticPath::make(const QuadraticProfile& profile, doubl
         s.end_slope = slope_at_end(ahead, s.dir);
         if (y0 >= profile.top() && r.sg_ > 0) s.end_slope = r.slope0_;
         r.end_piece_ = ahead.piece;
-        r.cur_.j = piece_for(profile, y0, r.sg_);
+        r.cur_.j = start_piece;
         r.cur_.y = y0;
         r.cur_.Q = r.Q0_;
         r.cur_.slope = r.slope0_;
@@ -564,8 +565,59 @@ void QuadraticPath::cross_pieces(double t_stop) const {
     int j = c.j;
     double y = c.y, t = c.t, slope = c.slope, Qb = c.Q;
     if (s.segments.empty()) s.segments.reserve(64);
+    const bool spans = p.has_spans();
+    const double beta_sq = beta_ * beta_;
+    // A span, entered at y_in with the path's slope there (np_in: d(n^2)/dy there): its
+    // segment, and the cursor moved to its far end (n^2 - n0^2 there: e_out).
+    auto cross_span = [&](double y_in, double np_in, double cq, double root_c, double y_out,
+                          double e_out) {
+        const double a_here = 0.5 * np_in * inv_beta_sq_;
+        const double kappa = cq * inv_beta_sq_;
+        const double lambda = root_c * inv_beta_;
+        Qb = e_out - level;
+        const double s_b = dir * std::sqrt(std::max(0.0, Qb)) * inv_beta_;
+        QuadraticSegment& seg = s.segments.emplace_back();
+        seg.piece = j;
+        seg.kappa = kappa;
+        seg.lambda = lambda;
+        seg.t0 = t;
+        seg.ta = t;
+        seg.ya = y_in;
+        seg.sa = slope;
+        seg.aa = a_here;
+        seg.y1 = y_out;
+        t += crossing_time(y_out - y_in, slope, s_b, a_here, kappa, lambda);
+        seg.t1 = t;
+        y = y_out;
+        slope = s_b;
+    };
     while (t < t_stop && j >= 0 && j < m && j != stop_piece) {
         const double ylo = knots[j], yhi = knots[j + 1];
+        if (spans) {
+            // The coarsest span from this knot on that this ray may cross: not holding the
+            // end's piece, nor the start while its run distance is still to be found.
+            int id = dir > 0 ? p.span_up(j) : p.span_down(j + 1);
+            while (id >= 0) {
+                const CoarseSpan& sp = p.spans()[id];
+                if (beta_sq <= sp.max_beta_sq && (stop_piece < sp.lo || stop_piece >= sp.hi) &&
+                    (t1_known_ || y0_ < knots[sp.lo] || y0_ > knots[sp.hi]))
+                    break;
+                id = dir > 0 ? sp.finer_same_lo : sp.finer_same_hi;
+            }
+            if (id >= 0) {
+                const CoarseSpan& sp = p.spans()[id];
+                span_slack_ = std::max(span_slack_, sp.slope_slack);
+                if (dir > 0) {
+                    cross_span(knots[sp.lo], sp.b, sp.c, sp.root_c, knots[sp.hi], p.e(sp.hi));
+                    j = sp.hi;
+                } else {
+                    cross_span(knots[sp.hi], sp.end_slope, sp.c, sp.root_c, knots[sp.lo],
+                               p.e(sp.lo));
+                    j = sp.lo - 1;
+                }
+                continue;
+            }
+        }
         if (!t1_known_ && y0_ >= ylo && y0_ <= yhi) break;
         const double b = p.b(j), cq = p.c(j);
         const double Np = b + 2.0 * cq * (y - ylo);
@@ -719,7 +771,9 @@ double QuadraticPath::curvature_at_height(double y) const {
 }
 
 double QuadraticPath::curvature_bound(double ya, double yb) const {
-    return 0.5 * profile_->max_abs_slope(ya, yb, hint_a_, hint_b_) * inv_beta_sq_;
+    // Heights between two computed points of the path: every span it crosses there has been
+    // crossed, and span_slack_ covers them.
+    return 0.5 * (profile_->max_abs_slope(ya, yb, hint_a_, hint_b_) + span_slack_) * inv_beta_sq_;
 }
 
 int QuadraticPath::turning_point_count() const {
@@ -779,11 +833,28 @@ double QuadraticPath::asymptote_departure(double dz) const {
     double lo, hi;
     p.excess_range(y, p.top(), lo, hi);
     const double q_top = p.e(p.piece_count()) - level;
-    const double q_lo = lo - level, q_hi = hi - level;
+    double q_lo = lo - level, q_hi = hi - level;
     if (!(q_lo > 0.0)) return kInf;
+    if (p.has_spans()) {  // where the ray crosses spans instead of pieces
+        q_lo *= 1.0 - QuadraticProfile::kSpanShareOfQ;
+        q_hi *= 1.0 + QuadraticProfile::kSpanShareOfQ;
+    }
     const double worst = std::max(std::fabs(1.0 - std::sqrt(q_top / q_lo)),
                                   std::fabs(1.0 - std::sqrt(q_top / q_hi)));
     return (p.top() - y) * worst;
+}
+
+std::vector<QuadraticSegment> QuadraticPath::release_storage() {
+    std::vector<QuadraticSegment> out = std::move(sweep_.segments);
+    out.clear();
+    sweep_.segments.clear();
+    return out;
+}
+
+void QuadraticPath::adopt_storage(std::vector<QuadraticSegment>&& storage) {
+    if (!sweep_.segments.empty() || storage.capacity() <= sweep_.segments.capacity()) return;
+    storage.clear();
+    sweep_.segments = std::move(storage);
 }
 
 }  // namespace mirage

@@ -125,6 +125,11 @@ class QuadraticPath {
     /// Distance to the first turning point (0 when none ahead).
     double first_turn_dz() const;
 
+    /// The segments' storage, emptied (the path is left without it: to be discarded), and a
+    /// fresh path taking such storage over before any query (its capacity reused).
+    std::vector<QuadraticSegment> release_storage();
+    void adopt_storage(std::vector<QuadraticSegment>&& storage);
+
   private:
     const QuadraticProfile* profile_ = nullptr;
     double y0_ = 0.0, i_ = 0.0, cos_i_ = 0.0, sin_i_ = 1.0, slope0_ = 0.0;
@@ -155,6 +160,7 @@ class QuadraticPath {
     mutable bool t1_known_ = true;
     mutable int hint_a_ = -1, hint_b_ = -1;  // pieces of the last curvature bound's heights
     mutable size_t seg_hint_ = 0;            // the segment of the last height query
+    mutable double span_slack_ = 0.0;  // the largest slope_slack of the spans crossed so far
 
     const QuadraticSegment& segment_for(double t) const;
 

@@ -122,6 +122,62 @@ void QuadraticProfile::build_tables() {
     piece_max_ = sparse_table(std::move(maxs), true);
 }
 
+Result<QuadraticProfile> QuadraticProfile::rescaled(double unit) const {
+    std::vector<double> knots(y_.size()), slopes(b_.size()), curvatures(c_.size());
+    for (size_t j = 0; j < knots.size(); ++j) knots[j] = y_[j] / unit;
+    for (size_t j = 0; j < b_.size(); ++j) {
+        slopes[j] = b_[j] * unit;  // d(n^2)/dy per unit: per metre times metres per unit
+        curvatures[j] = c_[j] * unit * unit;
+    }
+    auto p = make(std::move(knots), std::move(slopes), std::move(curvatures), n0_sq_,
+                  earth_radius_ / unit);
+    if (!p) return p.error();
+    p->tolerance_n_ = tolerance_n_;
+    if (!spans_.empty()) {
+        p->spans_ = spans_;
+        for (CoarseSpan& sp : p->spans_) {
+            sp.b *= unit;
+            sp.c *= unit * unit;
+            sp.root_c *= unit;
+            sp.end_slope *= unit;
+            sp.slope_slack *= unit;
+        }
+        p->span_up_ = span_up_;
+        p->span_down_ = span_down_;
+    }
+    return p;
+}
+
+int QuadraticProfile::piece_from(double y, int hint) const {
+    const int m = piece_count();
+    if (!(y >= 0.0)) return -1;
+    if (y >= y_[m]) return m;
+    // Bracket y between knots lo and hi (y_[lo] <= y < y_[hi]) by steps doubling from the hint.
+    int lo = hint, hi = hint + 1;
+    if (y >= y_[hint]) {
+        for (int step = 1; y >= y_[hi]; step *= 2) {
+            lo = hi;
+            hi = std::min(m, hi + step);
+        }
+    } else {
+        hi = hint;
+        lo = hint - 1;
+        for (int step = 1; y < y_[lo]; step *= 2) {
+            hi = lo;
+            lo = std::max(0, lo - step);
+        }
+    }
+    while (hi - lo > 1) {
+        const int mid = lo + (hi - lo) / 2;
+        if (y >= y_[mid]) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
+}
+
 int QuadraticProfile::piece_at(double y) const {
     if (y < 0.0) return -1;
     if (y >= y_.back()) return piece_count();
@@ -253,6 +309,7 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
     std::vector<double> knots{0.0}, slopes, curvatures;
+    std::vector<int> edge_knots{0};  // the knots at the ends of the smooth stretches
     double worst = 0.0, worst_y = 0.0;
     auto n_of = [&](double e) { return std::sqrt(f.n0_sq + e); };
     // The largest error of the interval's two quadratics at the checked heights, in n.
@@ -338,10 +395,95 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
             sa = b == B ? sa : sb;
             h = hb * std::clamp(ratio, 0.5, 4.0);
         }
+        edge_knots.push_back(static_cast<int>(knots.size()) - 1);
     }
     auto model = QuadraticProfile::make(std::move(knots), std::move(slopes), std::move(curvatures),
                                         f.n0_sq, f.earth_radius);
     if (!model) return model.error();
+    model->tolerance_n_ = settings.tolerance_n;
+    if (settings.coarse_spans) {
+        QuadraticProfile& q = *model;
+        const int m = q.piece_count();
+        // Spans do not cross a breakpoint where the profile's slope jumps (a corner).
+        std::vector<char> edge(m + 1, 0);
+        for (int k : edge_knots) {
+            if (k == 0 || k == m) continue;
+            const double y = q.y_[k];
+            const double left = f.excess_slope(y, -1), right = f.excess_slope(y, +1);
+            if (!(std::fabs(left - right) <= 1e-9 * std::max(std::fabs(left), std::fabs(right))))
+                edge[k] = 1;
+        }
+        const double eps = settings.tolerance_n;
+        const double bound = M_PI * std::sqrt(eps);  // the fine model's bound on directions
+        q.span_up_.assign(m + 1, -1);
+        q.span_down_.assign(m + 1, -1);
+        // The span over the fine knots lo..hi, or none when it is no use to any ray.
+        auto make_span = [&](int lo, int hi, CoarseSpan& sp) {
+            const double a = q.y_[lo], h = q.y_[hi] - a;
+            const double fa = q.e_[lo], fb = q.e_[hi], fm = f.excess(a + 0.5 * h);
+            if (!std::isfinite(fm)) return false;
+            sp.lo = lo;
+            sp.hi = hi;
+            sp.c = 2.0 * (fb - 2.0 * fm + fa) / (h * h);
+            sp.b = (fb - fa) / h - sp.c * h;
+            sp.root_c = std::sqrt(std::fabs(sp.c));
+            sp.end_slope = sp.b + 2.0 * sp.c * h;
+            double err = 0.0;
+            constexpr int kChecks = 24;
+            for (int k = 1; k < kChecks; ++k) {
+                const double u = h * k / kChecks;
+                const double fit = fa + (sp.b + sp.c * u) * u;
+                const double truth = f.excess(a + u);
+                if (!std::isfinite(truth)) return false;
+                err = std::max(err, std::fabs(fit - truth) / (n_of(fit) + n_of(truth)));
+            }
+            sp.error_n = err / 0.9;
+            double lo_sq, hi_sq;
+            q.n_sq_range(a, a + h, lo_sq, hi_sq);
+            const double D = 1.01 * (eps + sp.error_n);
+            const double direction =
+                lo_sq - 4.02 * eps - hi_sq * (3.0 * D + D * D / (bound * bound));
+            const double share =
+                lo_sq - 2.02 * (eps + sp.error_n) / QuadraticProfile::kSpanShareOfQ;
+            sp.max_beta_sq = std::min(direction, share);
+            return sp.max_beta_sq > 0.0;
+        };
+        // Spans of 1, 2, 4, 8, ... fine intervals from every node (the fine intervals' ends),
+        // so that a ray can step over as many as its direction allows wherever it is.
+        std::vector<int> nodes;
+        for (int k = 0; k <= m; k += 2) nodes.push_back(k);
+        const int intervals = static_cast<int>(nodes.size()) - 1;
+        std::vector<int> edges_before(nodes.size(), 0);  // edges among nodes[1..i]
+        for (size_t i = 1; i < nodes.size(); ++i)
+            edges_before[i] = edges_before[i - 1] + (i + 1 < nodes.size() && edge[nodes[i]]);
+        for (int len = 1; len <= intervals; len *= 2) {
+            bool any = false;
+            for (int i = 0; i + len <= intervals; ++i) {
+                // No corner strictly inside.
+                if (edges_before[i + len - 1] - edges_before[i] > 0) continue;
+                CoarseSpan sp;
+                if (!make_span(nodes[i], nodes[i + len], sp)) continue;
+                any = true;
+                const int id = static_cast<int>(q.spans_.size());
+                sp.finer_same_lo = q.span_up_[sp.lo];
+                sp.finer_same_hi = q.span_down_[sp.hi];
+                q.span_up_[sp.lo] = id;
+                q.span_down_[sp.hi] = id;
+                // How far its slope departs from the pieces' over the pieces it covers (both
+                // linear there: at the pieces' ends).
+                for (int j = sp.lo; j < sp.hi; ++j) {
+                    for (int end = 0; end < 2; ++end) {
+                        const double u = q.y_[j + end] - q.y_[j];
+                        const double piece = q.b_[j] + 2.0 * q.c_[j] * u;
+                        const double span = sp.b + 2.0 * sp.c * (q.y_[j + end] - q.y_[sp.lo]);
+                        sp.slope_slack = std::max(sp.slope_slack, std::fabs(span - piece));
+                    }
+                }
+                q.spans_.push_back(sp);
+            }
+            if (!any) break;
+        }
+    }
     if (report) {
         report->pieces = model->piece_count();
         report->max_error_n = worst;

@@ -12,11 +12,36 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "util/result.h"
 
 namespace mirage {
+
+struct ProfileFunction;
+struct FitSettings;
+struct FitReport;
+
+/// A coarser piece of a fitted model: one quadratic over several of the fine intervals at once,
+/// through the profile at its ends and its middle.  Its ends are knots of the fine model, where
+/// both take the same value, so a ray may cross the span in place of the fine pieces and its
+/// model stays continuous (with a corner of its slope there; a path's curvature bounds add the
+/// slope_slack of the spans it crosses).
+/// A ray does so only where its direction is steep enough for the span's larger error to change
+/// it by no more than the fine model's own bound (max_beta_sq, see fit_quadratic_profile).
+struct CoarseSpan {
+    int lo = 0, hi = 0;      // the fine model's knots at its ends
+    double b = 0.0;          // d(n^2)/dy at its lower end
+    double c = 0.0;          // half the second derivative of n^2
+    double root_c = 0.0;     // sqrt(|c|)
+    double end_slope = 0.0;  // d(n^2)/dy at its upper end
+    double slope_slack = 0.0;  // the largest |d(n^2)/dy| of the span less the fine pieces' below it
+    double error_n = 0.0;    // |n_span - n| at most
+    double max_beta_sq = -std::numeric_limits<double>::infinity();  // rays with beta^2 <= this
+    int finer_same_lo = -1;  // the next finer span starting at the same knot (-1: the fine pieces)
+    int finer_same_hi = -1;  // the next finer span ending at the same knot
+};
 
 class QuadraticProfile {
   public:
@@ -45,7 +70,8 @@ class QuadraticProfile {
     /// The piece holding height y: j with knot(j) <= y < knot(j+1); -1 below 0, piece_count()
     /// at or above the top.
     int piece_at(double y) const;
-    /// piece_at(y), trying `hint` and its neighbours first.
+    /// piece_at(y), searched from `hint` outwards (galloping, then halving): O(log) of the
+    /// distance from it.
     int piece_at(double y, int hint) const {
         const int m = piece_count();
         if (hint >= 0 && hint < m) {
@@ -55,6 +81,7 @@ class QuadraticProfile {
             } else if (hint > 0 && y >= y_[hint - 1]) {
                 return hint - 1;
             }
+            return piece_from(y, hint);
         }
         return piece_at(y);
     }
@@ -66,7 +93,7 @@ class QuadraticProfile {
     /// d(n^2)/dy at y (the right-hand value at a corner).
     double slope(double y) const;
     /// The largest |d(n^2)/dy| over the heights [ya, yb] (in either order): it bounds a ray's
-    /// curvature there, |y''| = |d(n^2)/dy| / (2 beta^2).
+    /// curvature there, |y''| = |d(n^2)/dy| / (2 beta^2), where the ray crosses the pieces.
     double max_abs_slope(double ya, double yb) const;
     /// The same, with the pieces of ya and yb looked for first where `hint_a` and `hint_b` say
     /// (and updated): consecutive queries of a path are mostly in the same pieces.
@@ -86,16 +113,39 @@ class QuadraticProfile {
     /// Whether n^2 is the same at every height.
     bool homogeneous() const { return homogeneous_; }
 
+    /// The fit's bound on |n_fit - n| (0 when the model was not fitted to a function).
+    double tolerance_n() const { return tolerance_n_; }
+    /// The coarser spans (fit_quadratic_profile with FitSettings::coarse_spans), and the coarsest
+    /// one starting (span_up) or ending (span_down) at knot k, -1 when none.
+    const std::vector<CoarseSpan>& spans() const { return spans_; }
+    bool has_spans() const { return !spans_.empty(); }
+    int span_up(int k) const { return span_up_[k]; }
+    int span_down(int k) const { return span_down_[k]; }
+    /// Where a ray crosses a span, its n^2 - beta^2 is within this share of the fine model's.
+    static constexpr double kSpanShareOfQ = 0.25;
+
+    /// The same model with heights in units of `unit` metres (slopes and curvatures rescaled,
+    /// the spans with them).
+    Result<QuadraticProfile> rescaled(double unit) const;
+
   private:
+    friend Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
+                                                          const FitSettings& settings,
+                                                          FitReport* report);
+
     std::vector<double> y_, e_, b_, c_, inc_, end_slope_, root_abs_c_;
     double n0_sq_ = 1.0;
     double earth_radius_ = 0.0;
     bool homogeneous_ = true;
+    double tolerance_n_ = 0.0;
+    std::vector<CoarseSpan> spans_;
+    std::vector<int> span_up_, span_down_;
     // Sparse tables (level k covers 2^k entries): the largest |slope| at each knot (either
     // side), and each piece's smallest and largest n^2 - n0^2.
     std::vector<std::vector<double>> knot_slope_max_, piece_min_, piece_max_;
 
     double piece_value(int j, double u) const { return e_[j] + (b_[j] + c_[j] * u) * u; }
+    int piece_from(double y, int hint) const;
     void build_tables();
 };
 
@@ -113,6 +163,7 @@ struct FitSettings {
     double tolerance_n = 1e-10;  // largest |n_fit - n| over [0, top]
     double min_interval = 1e-6;  // m: a profile that needs finer intervals is refused
     int max_pieces = 1 << 20;    // refused beyond
+    bool coarse_spans = false;   // also fit the coarser spans steep rays may cross instead
 };
 
 /// What the fit achieved.
@@ -126,6 +177,19 @@ struct FitReport {
 /// interpolation with a midpoint knot on intervals marched up from the ground, each checked at
 /// 23 heights and kept when every error is within 0.9 of the tolerance (the margin covers the
 /// errors between the checked heights; the tests check the bound densely).
+///
+/// With coarse_spans, spans of 1, 2, 4, 8, ... fine intervals start at every fine interval's end
+/// (never across a corner of the profile), each the quadratic through the profile at its ends
+/// and its middle, its error measured at 23 heights as the fine fit's (error_n: the largest
+/// checked error over 0.9).  The rays that may cross a span: the
+/// fine model keeps a ray's direction within B = pi sqrt(eps) of the true one (eps the
+/// tolerance).  At a height in a span, n cos e = beta with beta from the fine model at the start
+/// gives |cos e - cos e_true| <= D = 1.01 (eps + error_n), and |e - e_true| <= D / sqrt(sin^2
+/// e_true - 3 D); with sin^2 e_true >= (n^2_min - beta^2 - 4.02 eps) / n^2_max over the span, a
+/// ray with beta^2 <= n^2_min - 4.02 eps - n^2_max (3 D + D^2 / B^2) stays within B there.  A
+/// span also needs n^2 - beta^2 >= 40.4 (eps + error_n) over it, so that crossing it changes
+/// n^2 - beta^2 by at most kSpanShareOfQ (5 %): no ray turns in a span, and the bounds on a
+/// path's straight continuation (asymptote_departure) widen by that share.
 Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
                                                const FitSettings& settings,
                                                FitReport* report = nullptr);

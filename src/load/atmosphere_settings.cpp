@@ -473,22 +473,6 @@ double fit_tolerance_for(double tolerance_rad) {
     return std::clamp(eps, kMinFitTolerance, kMaxFitTolerance);
 }
 
-namespace {
-
-// A model with heights in metres rescaled to units of unit_m metres.
-Result<QuadraticProfile> in_scene_units(const QuadraticProfile& m, double unit_m) {
-    std::vector<double> knots(m.knots().size()), slopes(m.piece_count()),
-        curvatures(m.piece_count());
-    for (size_t j = 0; j < knots.size(); ++j) knots[j] = m.knots()[j] / unit_m;
-    for (int j = 0; j < m.piece_count(); ++j) {
-        slopes[j] = m.b(j) * unit_m;  // d(n^2)/dy per unit: per metre times metres per unit
-        curvatures[j] = m.c(j) * unit_m * unit_m;
-    }
-    return QuadraticProfile::make(std::move(knots), std::move(slopes), std::move(curvatures),
-                                  m.n0_sq(), m.earth_radius() / unit_m);
-}
-
-}  // namespace
 
 Result<Atmosphere> scene_atmosphere(const AtmosphereSettings& s, double tolerance_rad,
                                     int* pieces) {
@@ -496,12 +480,13 @@ Result<Atmosphere> scene_atmosphere(const AtmosphereSettings& s, double toleranc
     if (!s.air) return Atmosphere::exponential(profile_in_scene_units(s));
     FitSettings fs;
     fs.tolerance_n = fit_tolerance_for(tolerance_rad);
+    fs.coarse_spans = true;
     FitReport report;
     auto fitted = fit_air(*s.air, fs, &report);
     if (!fitted) return fitted.error();
     if (pieces) *pieces = report.pieces;
     if (s.unit_m == 1.0) return Atmosphere::quadratic(*fitted);
-    auto scaled = in_scene_units(**fitted, s.unit_m);
+    auto scaled = (*fitted)->rescaled(s.unit_m);
     if (!scaled) return scaled.error();
     return Atmosphere::quadratic(std::make_shared<const QuadraticProfile>(std::move(*scaled)));
 }

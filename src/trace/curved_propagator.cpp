@@ -324,8 +324,11 @@ bool general_path(const CurvedSettings& settings, const SceneAccel* accel, const
     const double sin_i = hl / std::hypot(hl, direction.y);
     if (general_bends_at_most(atm, y0, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad))
         return false;
+    std::vector<QuadraticSegment> storage;
+    if (cp.general) storage = cp.general->release_storage();
     auto path = ExactPath::make(atm, y0, std::atan2(hl, direction.y));
     MIRAGE_CHECK(path.ok());
+    path->adopt_storage(std::move(storage));
     cp.general.emplace(std::move(*path));
     cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
     cp.earth_radius = atm.earth_radius();
