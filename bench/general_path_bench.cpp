@@ -32,24 +32,28 @@ const Fan kDesert{1.5, -0.41, 0.41, 60.0};
 
 double elevation(const Fan& f, int j, int n) { return f.from + (f.to - f.from) * (j + 0.5) / n; }
 
-std::shared_ptr<const QuadraticProfile> fitted(const AirSpec& spec, double tolerance_n) {
+std::shared_ptr<const QuadraticProfile> fitted(const AirSpec& spec, double tolerance_n,
+                                               bool spans) {
     FitSettings fs;
     fs.tolerance_n = tolerance_n;
+    fs.coarse_spans = spans;
     return *fit_air(spec, fs);
 }
 
-Atmosphere exponential_fitted(const char* preset, double tolerance_n = FitSettings{}.tolerance_n) {
+Atmosphere exponential_fitted(const char* preset, double tolerance_n = FitSettings{}.tolerance_n,
+                              bool spans = false) {
     AirSpec spec;
     spec.source = AirSpec::Source::Exponential;
     spec.exponential = *preset_profile(preset);
-    return Atmosphere::quadratic(fitted(spec, tolerance_n));
+    return Atmosphere::quadratic(fitted(spec, tolerance_n, spans));
 }
 
-Atmosphere hot_road_temperatures(double tolerance_n = FitSettings{}.tolerance_n) {
+Atmosphere hot_road_temperatures(double tolerance_n = FitSettings{}.tolerance_n,
+                                 bool spans = false) {
     AirSpec spec;
     spec.column.ground_temperature_k = 300.0;
     spec.column.layers.push_back({20.0, 0.3});
-    return Atmosphere::quadratic(fitted(spec, tolerance_n));
+    return Atmosphere::quadratic(fitted(spec, tolerance_n, spans));
 }
 
 constexpr int kFanRays = 240;
@@ -109,6 +113,11 @@ Atmosphere road_fitted() { return exponential_fitted("hot-road"); }
 Atmosphere road_fitted_fine() { return exponential_fitted("hot-road", 1e-12); }
 Atmosphere road_temperatures() { return hot_road_temperatures(); }
 Atmosphere road_temperatures_fine() { return hot_road_temperatures(1e-12); }
+Atmosphere road_fitted_spans() { return exponential_fitted("hot-road", 1e-10, true); }
+Atmosphere road_temperatures_spans() { return hot_road_temperatures(1e-10, true); }
+Atmosphere road_fitted_fine_spans() { return exponential_fitted("hot-road", 1e-12, true); }
+Atmosphere road_temperatures_fine_spans() { return hot_road_temperatures(1e-12, true); }
+Atmosphere desert_fitted_spans() { return exponential_fitted("paper", 1e-10, true); }
 Atmosphere desert_exponential() { return Atmosphere::exponential(*preset_profile("paper")); }
 Atmosphere desert_fitted() { return exponential_fitted("paper"); }
 
@@ -133,8 +142,27 @@ BENCHMARK_CAPTURE(BM_General, road_fitted_fine_sampled, road_fitted_fine, kRoad,
 BENCHMARK_CAPTURE(BM_General, road_temperatures_fine_sampled, road_temperatures_fine, kRoad, true)
     ->Arg(18);
 
+// The same with the coarse spans a steep ray crosses in place of the fine pieces (what
+// mirage trace fits).
+BENCHMARK_CAPTURE(BM_General, road_fitted_spans_sampled, road_fitted_spans, kRoad, true)
+    ->Arg(100)
+    ->Arg(18)
+    ->Arg(3);
+BENCHMARK_CAPTURE(BM_General, road_temperatures_spans_sampled, road_temperatures_spans, kRoad, true)
+    ->Arg(100)
+    ->Arg(18)
+    ->Arg(3);
+BENCHMARK_CAPTURE(BM_General, road_fitted_fine_spans_sampled, road_fitted_fine_spans, kRoad, true)
+    ->Arg(18);
+BENCHMARK_CAPTURE(BM_General, road_temperatures_fine_spans_sampled, road_temperatures_fine_spans,
+                  kRoad, true)
+    ->Arg(18);
+
 BENCHMARK_CAPTURE(BM_ClosedForm, desert_sampled, "paper", kDesert, true)->Arg(1700)->Arg(340);
 BENCHMARK_CAPTURE(BM_General, desert_fitted_sampled, desert_fitted, kDesert, true)
+    ->Arg(1700)
+    ->Arg(340);
+BENCHMARK_CAPTURE(BM_General, desert_fitted_spans_sampled, desert_fitted_spans, kDesert, true)
     ->Arg(1700)
     ->Arg(340);
 BENCHMARK_CAPTURE(BM_General, desert_closed_form_via_interface, desert_exponential, kDesert, true)

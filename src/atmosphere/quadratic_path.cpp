@@ -607,6 +607,7 @@ void QuadraticPath::cross_pieces(double t_stop) const {
             if (id >= 0) {
                 const CoarseSpan& sp = p.spans()[id];
                 span_slack_ = std::max(span_slack_, sp.slope_slack);
+                ++spans_crossed_;
                 if (dir > 0) {
                     cross_span(knots[sp.lo], sp.b, sp.c, sp.root_c, knots[sp.hi], p.e(sp.hi));
                     j = sp.hi;

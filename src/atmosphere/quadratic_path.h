@@ -125,6 +125,9 @@ class QuadraticPath {
     /// Distance to the first turning point (0 when none ahead).
     double first_turn_dz() const;
 
+    /// How many coarse spans the path has crossed so far (in place of fine pieces).
+    int spans_crossed() const { return spans_crossed_; }
+
     /// The segments' storage, emptied (the path is left without it: to be discarded), and a
     /// fresh path taking such storage over before any query (its capacity reused).
     std::vector<QuadraticSegment> release_storage();
@@ -161,6 +164,7 @@ class QuadraticPath {
     mutable int hint_a_ = -1, hint_b_ = -1;  // pieces of the last curvature bound's heights
     mutable size_t seg_hint_ = 0;            // the segment of the last height query
     mutable double span_slack_ = 0.0;  // the largest slope_slack of the spans crossed so far
+    mutable int spans_crossed_ = 0;
 
     const QuadraticSegment& segment_for(double t) const;
 

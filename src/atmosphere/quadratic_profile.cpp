@@ -414,7 +414,8 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
                 edge[k] = 1;
         }
         const double eps = settings.tolerance_n;
-        const double bound = M_PI * std::sqrt(eps);  // the fine model's bound on directions
+        // The fine model's bound on directions, the share of it a span may use.
+        const double bound = settings.span_allowance * M_PI * std::sqrt(eps);
         q.span_up_.assign(m + 1, -1);
         q.span_down_.assign(m + 1, -1);
         // The span over the fine knots lo..hi, or none when it is no use to any ray.

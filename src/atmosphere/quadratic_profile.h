@@ -164,6 +164,9 @@ struct FitSettings {
     double min_interval = 1e-6;  // m: a profile that needs finer intervals is refused
     int max_pieces = 1 << 20;    // refused beyond
     bool coarse_spans = false;   // also fit the coarser spans steep rays may cross instead
+    // The share of the fine model's bound on directions, pi sqrt(tolerance_n), that crossing a
+    // span may cost a ray (1: the bound is kept; larger values trade it for fewer crossings).
+    double span_allowance = 1.0;
 };
 
 /// What the fit achieved.

@@ -15,9 +15,13 @@
 
 namespace mirage::testing {
 
-inline std::shared_ptr<const QuadraticProfile> fit_or_die(const AirSpec& spec, double tol = 1e-12) {
+inline std::shared_ptr<const QuadraticProfile> fit_or_die(const AirSpec& spec, double tol = 1e-12,
+                                                          bool spans = false,
+                                                          double span_allowance = 1.0) {
     FitSettings fs;
     fs.tolerance_n = tol;
+    fs.coarse_spans = spans;
+    fs.span_allowance = span_allowance;
     auto q = fit_air(spec, fs);
     EXPECT_TRUE(q.ok()) << (q.ok() ? "" : q.message());
     return q.ok() ? *q : nullptr;

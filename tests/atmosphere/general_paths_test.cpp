@@ -25,9 +25,13 @@ struct Comparison {
     std::map<std::string, double> largest;
     std::map<std::string, int> fates;
     int rows = 0, ducted_after_six_turns = 0;
+    int rows_with_spans = 0;  // rays that crossed a coarse span somewhere
 };
 
-Comparison compare_with_reference(double fit_tolerance, double bound_tolerance) {
+// `spans`: the models fitted with their coarse spans (FitSettings::coarse_spans), a span allowed
+// `span_allowance` of the fine model's bound on directions.
+Comparison compare_with_reference(double fit_tolerance, double bound_tolerance, bool spans = false,
+                                  double span_allowance = 1.0, double turn_margin = 4.0) {
     Comparison out;
     const auto profiles = testing::load_general_profiles();
     auto table = read_csv_file(std::string(MIRAGE_REFERENCE_DIR) + "/general_paths.csv");
@@ -47,7 +51,8 @@ Comparison compare_with_reference(double fit_tolerance, double bound_tolerance) 
         const auto& pj = profiles.at(name);
         const bool exact = pj.at("kind") == "n_sounding" && !pj.contains("earth_radius_m");
         if (!fits.count(name))
-            fits[name] = testing::fit_or_die(testing::spec_from_json(pj), fit_tolerance);
+            fits[name] = testing::fit_or_die(testing::spec_from_json(pj), fit_tolerance, spans,
+                                             span_allowance);
         const auto& q = fits[name];
         if (!q) {
             out.failures.push_back(name + ": not fitted");
@@ -77,7 +82,8 @@ Comparison compare_with_reference(double fit_tolerance, double bound_tolerance) 
             const double err = std::fabs(got - want);
             double& share = out.largest[what];
             share = std::max(share, err / first_order);
-            if (!(err <= kFloor + kMargin * first_order)) {
+            const bool turn = what == "distances to turning points" || what == "half periods";
+            if (!(err <= kFloor + (turn ? turn_margin : kMargin) * first_order)) {
                 std::ostringstream m;
                 m.precision(17);
                 m << id << " " << what << ": " << got << " against " << want << " (bound "
@@ -108,6 +114,7 @@ Comparison compare_with_reference(double fit_tolerance, double bound_tolerance) 
             check("slopes", path->slope_at(d), num(r, "dydz_d" + n), root);
             if (fate == "ducted" && k == 4) ++out.ducted_after_six_turns;
         }
+        if (path->quadratic() && path->quadratic()->spans_crossed() > 0) ++out.rows_with_spans;
     }
     return out;
 }
@@ -152,6 +159,30 @@ TEST(GeneralPaths, ACoarserModelFailsTheFineModelsBounds) {
                 coarse.failures.size());
     const Comparison own = compare_with_reference(1e-10, 1e-10);
     for (const auto& f : own.failures) ADD_FAILURE() << f;
+}
+
+// Coarse spans (FitSettings::coarse_spans) change a ray's model only where its direction is
+// steep enough to keep the fine model's bound on directions at every height, pi sqrt(eps): the
+// rays that cross them keep the fine model's first-order bounds on heights, slopes, turning
+// heights and ground hits (with its margin of 4), the same fates and turning points.  Distances
+// along the path to a turning point are not held to the fine model's sqrt(eps) / |y''|: each
+// span on the way changes dz/dy = 1 / tan e by up to pi sqrt(eps) / sin^2 e, and the spans
+// toward a turning point, where sin^2 e grows with the height above it, add up to about
+// (pi / 2) ln(the ratio of their heights above it) times that bound; they are held to 12 times
+// it (3 times the margin).  The check can fail: spans allowed 1000 times the bound fail many.
+TEST(GeneralPaths, CoarseSpansKeepTheFineModelsBounds) {
+    const Comparison spans = compare_with_reference(1e-10, 1e-10, true, 1.0, 12.0);
+    for (const auto& f : spans.failures) ADD_FAILURE() << f;
+    EXPECT_GE(spans.rows, 180);
+    EXPECT_GE(spans.rows_with_spans, spans.rows / 4);
+    std::printf("fitted to 1e-10 with coarse spans: %d of %d rays crossed spans; largest error / "
+                "first-order bound:\n",
+                spans.rows_with_spans, spans.rows);
+    for (const auto& [what, share] : spans.largest)
+        std::printf("  %-28s %.2g\n", what.c_str(), share);
+    const Comparison loose = compare_with_reference(1e-10, 1e-10, true, 1000.0, 12.0);
+    EXPECT_GE(loose.failures.size(), 10u);
+    std::printf("spans allowed 1000 times the bound: %zu failed checks\n", loose.failures.size());
 }
 
 }  // namespace
