@@ -296,13 +296,30 @@ namespace {
 // turning (above the start rising, below it descending); false when it can turn.
 bool general_bends_at_most(const Atmosphere& atm, double y0, double sin_i, bool rising,
                            double limit) {
-    double lo, hi;
-    if (rising) {
-        atm.n_range(y0, kInf, lo, hi);
-    } else {
-        atm.n_range(0.0, y0, lo, hi);
+    // The index's range and its value at the start, the same for every ray from one eye: kept
+    // per thread with the model (held, so that no other model can take its address).
+    struct Start {
+        std::optional<Atmosphere> atm;
+        double y0 = -1.0;
+        bool rising = false;
+        double lo = 0.0, hi = 0.0, n = 0.0;
+    };
+    thread_local Start last;
+    const QuadraticProfile* model = atm.quadratic_profile();
+    if (!model || !last.atm || last.atm->quadratic_profile() != model || last.y0 != y0 ||
+        last.rising != rising) {
+        last.atm = atm;
+        last.y0 = y0;
+        last.rising = rising;
+        if (rising) {
+            atm.n_range(y0, kInf, last.lo, last.hi);
+        } else {
+            atm.n_range(0.0, y0, last.lo, last.hi);
+        }
+        last.n = atm.n(y0);
     }
-    const double beta = atm.n(y0) * sin_i;
+    const double lo = last.lo, hi = last.hi;
+    const double beta = last.n * sin_i;
     const double s_max = beta / lo;
     if (!(s_max < 1.0)) return false;
     return std::asin(s_max) - std::asin(beta / hi) <= limit;
