@@ -567,10 +567,11 @@ void QuadraticPath::cross_pieces(double t_stop) const {
     if (s.segments.empty()) s.segments.reserve(64);
     const bool spans = p.has_spans();
     const double beta_sq = beta_ * beta_;
-    // A span, entered at y_in with the path's slope there (np_in: d(n^2)/dy there): its
-    // segment, and the cursor moved to its far end (n^2 - n0^2 there: e_out).
-    auto cross_span = [&](double y_in, double np_in, double cq, double root_c, double y_out,
-                          double e_out) {
+    // A piece or a span (n^2 = ... + cq u^2), entered at y_in with the path's slope there
+    // (np_in: d(n^2)/dy there): its segment, and the cursor moved to its far end y_out
+    // (n^2 - n0^2 there: e_out).
+    auto cross = [&](double y_in, double np_in, double cq, double root_c, double y_out,
+                     double e_out) {
         const double a_here = 0.5 * np_in * inv_beta_sq_;
         const double kappa = cq * inv_beta_sq_;
         const double lambda = root_c * inv_beta_;
@@ -609,40 +610,18 @@ void QuadraticPath::cross_pieces(double t_stop) const {
                 span_slack_ = std::max(span_slack_, sp.slope_slack);
                 ++spans_crossed_;
                 if (dir > 0) {
-                    cross_span(knots[sp.lo], sp.b, sp.c, sp.root_c, knots[sp.hi], p.e(sp.hi));
+                    cross(knots[sp.lo], sp.b, sp.c, sp.root_c, knots[sp.hi], p.e(sp.hi));
                     j = sp.hi;
                 } else {
-                    cross_span(knots[sp.hi], sp.end_slope, sp.c, sp.root_c, knots[sp.lo],
-                               p.e(sp.lo));
+                    cross(knots[sp.hi], sp.end_slope, sp.c, sp.root_c, knots[sp.lo], p.e(sp.lo));
                     j = sp.lo - 1;
                 }
                 continue;
             }
         }
         if (!t1_known_ && y0_ >= ylo && y0_ <= yhi) break;
-        const double b = p.b(j), cq = p.c(j);
-        const double Np = b + 2.0 * cq * (y - ylo);
-        const double a_here = 0.5 * Np * inv_beta_sq_;
-        const double kappa = cq * inv_beta_sq_;
-        const double lambda = p.root_abs_c(j) * inv_beta_;
-        const double yb = dir > 0 ? yhi : ylo;
-        const double db = yb - y;
-        Qb = p.e(dir > 0 ? j + 1 : j) - level;
-        const double s_b = dir * std::sqrt(std::max(0.0, Qb)) * inv_beta_;
-        QuadraticSegment& seg = s.segments.emplace_back();
-        seg.piece = j;
-        seg.kappa = kappa;
-        seg.lambda = lambda;
-        seg.t0 = t;
-        seg.ta = t;
-        seg.ya = y;
-        seg.sa = slope;
-        seg.aa = a_here;
-        seg.y1 = yb;
-        t += crossing_time(db, slope, s_b, a_here, kappa, lambda);
-        seg.t1 = t;
-        y = yb;
-        slope = s_b;
+        const double np_in = p.b(j) + 2.0 * p.c(j) * (y - ylo);
+        cross(y, np_in, p.c(j), p.root_abs_c(j), dir > 0 ? yhi : ylo, p.e(dir > 0 ? j + 1 : j));
         j += dir;
     }
     if (j == c.j) return;

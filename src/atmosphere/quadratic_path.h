@@ -163,7 +163,7 @@ class QuadraticPath {
     mutable bool t1_known_ = true;
     mutable int hint_a_ = -1, hint_b_ = -1;  // pieces of the last curvature bound's heights
     mutable size_t seg_hint_ = 0;            // the segment of the last height query
-    mutable double span_slack_ = 0.0;  // the largest slope_slack of the spans crossed so far
+    mutable double span_slack_ = 0.0;        // the largest slope_slack of the spans crossed so far
     mutable int spans_crossed_ = 0;
 
     const QuadraticSegment& segment_for(double t) const;

@@ -31,13 +31,13 @@ struct FitReport;
 /// A ray does so only where its direction is steep enough for the span's larger error to change
 /// it by no more than the fine model's own bound (max_beta_sq, see fit_quadratic_profile).
 struct CoarseSpan {
-    int lo = 0, hi = 0;      // the fine model's knots at its ends
-    double b = 0.0;          // d(n^2)/dy at its lower end
-    double c = 0.0;          // half the second derivative of n^2
-    double root_c = 0.0;     // sqrt(|c|)
-    double end_slope = 0.0;  // d(n^2)/dy at its upper end
+    int lo = 0, hi = 0;        // the fine model's knots at its ends
+    double b = 0.0;            // d(n^2)/dy at its lower end
+    double c = 0.0;            // half the second derivative of n^2
+    double root_c = 0.0;       // sqrt(|c|)
+    double end_slope = 0.0;    // d(n^2)/dy at its upper end
     double slope_slack = 0.0;  // the largest |d(n^2)/dy| of the span less the fine pieces' below it
-    double error_n = 0.0;    // |n_span - n| at most
+    double error_n = 0.0;      // |n_span - n| at most
     double max_beta_sq = -std::numeric_limits<double>::infinity();  // rays with beta^2 <= this
     int finer_same_lo = -1;  // the next finer span starting at the same knot (-1: the fine pieces)
     int finer_same_hi = -1;  // the next finer span ending at the same knot

@@ -473,7 +473,6 @@ double fit_tolerance_for(double tolerance_rad) {
     return std::clamp(eps, kMinFitTolerance, kMaxFitTolerance);
 }
 
-
 Result<Atmosphere> scene_atmosphere(const AtmosphereSettings& s, double tolerance_rad,
                                     int* pieces) {
     if (pieces) *pieces = 0;

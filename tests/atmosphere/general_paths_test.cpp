@@ -175,9 +175,10 @@ TEST(GeneralPaths, CoarseSpansKeepTheFineModelsBounds) {
     for (const auto& f : spans.failures) ADD_FAILURE() << f;
     EXPECT_GE(spans.rows, 180);
     EXPECT_GE(spans.rows_with_spans, spans.rows / 4);
-    std::printf("fitted to 1e-10 with coarse spans: %d of %d rays crossed spans; largest error / "
-                "first-order bound:\n",
-                spans.rows_with_spans, spans.rows);
+    std::printf(
+        "fitted to 1e-10 with coarse spans: %d of %d rays crossed spans; largest error / "
+        "first-order bound:\n",
+        spans.rows_with_spans, spans.rows);
     for (const auto& [what, share] : spans.largest)
         std::printf("  %-28s %.2g\n", what.c_str(), share);
     const Comparison loose = compare_with_reference(1e-10, 1e-10, true, 1000.0, 12.0);
