@@ -126,10 +126,13 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
     const double min_thickness = ctx.gaps ? 3.0 * ctx.gap : 1.5e-4 * ctx.steepest_sine;
     int count = uniform ? st.layer_count : (st.layer_count > 0 ? st.layer_count : 64);
     for (int attempt = 0; attempt < 12; ++attempt) {
-        std::vector<double> h = uniform ? equal_height_boundaries(top, count)
-                                        : equal_index_boundaries(air, top, count, min_thickness);
+        std::vector<double> h =
+            uniform ? equal_height_boundaries(top, count)
+                    : equal_turning_boundaries(air, top, ctx.eye_y, count, min_thickness);
         move_off_camera(h, ctx.eye_y);
         d.stack = merge_invisible_boundaries(air_layers_for_eye(air, h, ctx.eye_y), ctx.eye_y);
+        // No pixel's ray nearly level in a layer it enters (POV-Ray renders the pixel centres).
+        d.stack = keep_layers_off_skimming_rays(air, d.stack, ctx.eye_y, rays.elevation);
         d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
         if (uniform || d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
         count = fewer_steps_for_trace_level(d, count, "index steps");
