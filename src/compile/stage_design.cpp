@@ -4,6 +4,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "atmosphere/exact_ray.h"
 #include "compile/stages.h"
@@ -93,6 +95,34 @@ void move_off_camera(std::vector<double>& heights, double eye_y) {
         if (std::fabs(h - eye_y) < 1e-9 * std::max(1.0, eye_y)) h += 1e-6 * std::max(1.0, eye_y);
 }
 
+// When the layer under the camera's is one float ulp below it (2^-24, the smallest index step
+// POV-Ray's single-precision ior holds there), the rays from level to sqrt(2^-24 x 2) below it
+// all turn at the camera layer's floor, wherever their exact paths turn: say which rows
+// (those of the image's centre column).  docs/atmospheres.md, "Rays that skim a layer".
+std::optional<std::string> turning_under_the_float_step(const CompileContext& ctx,
+                                                        const LayerStack& stack,
+                                                        const CameraRays& rays) {
+    const int k_cam = stack.layer_at(ctx.eye_y);
+    if (k_cam == 0 || rays.width < 1) return std::nullopt;
+    const float c = pov_relative_ior(stack, k_cam, k_cam - 1);
+    if (c != std::nextafter(1.0f, 0.0f)) return std::nullopt;
+    const double below_rad = std::acos(static_cast<double>(c));
+    int first = -1, last = -1;
+    for (int row = 0; row < rays.height; ++row) {
+        const double e = rays.elevation[static_cast<size_t>(row) * rays.width + rays.width / 2];
+        if (e <= 0.0 && -e < below_rad) {
+            if (first < 0) first = row;
+            last = row;
+        }
+    }
+    if (first < 0) return std::nullopt;
+    return "the turning of the rays from level to " + sig(1e3 * below_rad, 3) +
+           " mrad below it (rows " + std::to_string(first) + " to " + std::to_string(last) +
+           "): they all turn at the camera layer's floor, y = " + sig(stack.heights[k_cam - 1], 4) +
+           ", as POV-Ray's single-precision ior holds no smaller index step under the camera "
+           "layer's than 2^-24";
+}
+
 // Layers for real air, from n(y) alone (layers/air_bands.h): equal heights (Mirage_Layers
 // "uniform" with a count) or, by default, equal steps of the index; the designs fitted to the
 // camera's rays need the exponential closed forms and are refused.
@@ -141,6 +171,7 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
     d.left_out.push_back("layers above y = " + sig(top, 4) +
                          ": no camera ray reaches higher inside the scene, or the index no "
                          "longer changes");
+    if (auto l = turning_under_the_float_step(ctx, d.stack, rays)) d.left_out.push_back(*l);
     return d;
 }
 
