@@ -124,8 +124,9 @@ std::optional<std::string> turning_under_the_float_step(const CompileContext& ct
 }
 
 // Layers for real air, from n(y) alone (layers/air_bands.h): equal heights (Mirage_Layers
-// "uniform" with a count) or, by default, equal steps of the index; the designs fitted to the
-// camera's rays need the exponential closed forms and are refused.
+// "uniform" with a count) or, by default, equal steps of the index (below the eye's index, of
+// the elevation of the eye's rays that turn there), the layers kept off skimming pixel rays;
+// the designs fitted to the camera's rays need the exponential closed forms and are refused.
 Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& rays) {
     const AtmosphereSettings& st = ctx.settings;
     const Atmosphere& air = *ctx.air;
