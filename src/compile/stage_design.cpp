@@ -4,6 +4,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "atmosphere/exact_ray.h"
 #include "compile/stages.h"
@@ -93,9 +95,38 @@ void move_off_camera(std::vector<double>& heights, double eye_y) {
         if (std::fabs(h - eye_y) < 1e-9 * std::max(1.0, eye_y)) h += 1e-6 * std::max(1.0, eye_y);
 }
 
+// When the layer under the camera's is one float ulp below it (2^-24, the smallest index step
+// POV-Ray's single-precision ior holds there), the rays from level to sqrt(2^-24 x 2) below it
+// all turn at the camera layer's floor, wherever their exact paths turn: say which rows
+// (those of the image's centre column).  docs/atmospheres.md, "Rays that skim a layer".
+std::optional<std::string> turning_under_the_float_step(const CompileContext& ctx,
+                                                        const LayerStack& stack,
+                                                        const CameraRays& rays) {
+    const int k_cam = stack.layer_at(ctx.eye_y);
+    if (k_cam == 0 || rays.width < 1) return std::nullopt;
+    const float c = pov_relative_ior(stack, k_cam, k_cam - 1);
+    if (c != std::nextafter(1.0f, 0.0f)) return std::nullopt;
+    const double below_rad = std::acos(static_cast<double>(c));
+    int first = -1, last = -1;
+    for (int row = 0; row < rays.height; ++row) {
+        const double e = rays.elevation[static_cast<size_t>(row) * rays.width + rays.width / 2];
+        if (e <= 0.0 && -e < below_rad) {
+            if (first < 0) first = row;
+            last = row;
+        }
+    }
+    if (first < 0) return std::nullopt;
+    return "the turning of the rays from level to " + sig(1e3 * below_rad, 3) +
+           " mrad below it (rows " + std::to_string(first) + " to " + std::to_string(last) +
+           "): they all turn at the camera layer's floor, y = " + sig(stack.heights[k_cam - 1], 4) +
+           ", as POV-Ray's single-precision ior holds no smaller index step under the camera "
+           "layer's than 2^-24";
+}
+
 // Layers for real air, from n(y) alone (layers/air_bands.h): equal heights (Mirage_Layers
-// "uniform" with a count) or, by default, equal steps of the index; the designs fitted to the
-// camera's rays need the exponential closed forms and are refused.
+// "uniform" with a count) or, by default, equal steps of the index (below the eye's index, of
+// the elevation of the eye's rays that turn there), the layers kept off skimming pixel rays;
+// the designs fitted to the camera's rays need the exponential closed forms and are refused.
 Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& rays) {
     const AtmosphereSettings& st = ctx.settings;
     const Atmosphere& air = *ctx.air;
@@ -126,10 +157,13 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
     const double min_thickness = ctx.gaps ? 3.0 * ctx.gap : 1.5e-4 * ctx.steepest_sine;
     int count = uniform ? st.layer_count : (st.layer_count > 0 ? st.layer_count : 64);
     for (int attempt = 0; attempt < 12; ++attempt) {
-        std::vector<double> h = uniform ? equal_height_boundaries(top, count)
-                                        : equal_index_boundaries(air, top, count, min_thickness);
+        std::vector<double> h =
+            uniform ? equal_height_boundaries(top, count)
+                    : equal_turning_boundaries(air, top, ctx.eye_y, count, min_thickness);
         move_off_camera(h, ctx.eye_y);
         d.stack = merge_invisible_boundaries(air_layers_for_eye(air, h, ctx.eye_y), ctx.eye_y);
+        // No pixel's ray nearly level in a layer it enters (POV-Ray renders the pixel centres).
+        d.stack = keep_layers_off_skimming_rays(air, d.stack, ctx.eye_y, rays.elevation);
         d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
         if (uniform || d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
         count = fewer_steps_for_trace_level(d, count, "index steps");
@@ -138,6 +172,7 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
     d.left_out.push_back("layers above y = " + sig(top, 4) +
                          ": no camera ray reaches higher inside the scene, or the index no "
                          "longer changes");
+    if (auto l = turning_under_the_float_step(ctx, d.stack, rays)) d.left_out.push_back(*l);
     return d;
 }
 

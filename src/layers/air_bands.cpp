@@ -11,6 +11,8 @@ namespace mirage {
 
 namespace {
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 // The mean of n^2 - n0^2 over [a, b]: composite Simpson over 16 panels (the fitted model is
 // piecewise quadratic; this is exact within a piece and close across knots).
 double mean_excess(const Atmosphere& air, double n0_sq, double a, double b) {
@@ -59,6 +61,60 @@ LayerStack air_layers_for_eye(const Atmosphere& air, const std::vector<double>& 
     return s;
 }
 
+LayerStack keep_layers_off_skimming_rays(const Atmosphere& air, const LayerStack& stack,
+                                         double eye_y, const std::vector<double>& elevations) {
+    LayerStack s = stack;
+    const int k_cam = s.layer_at(eye_y);
+    const double n_cam = s.index(k_cam);
+    std::vector<double> cosines(elevations.size());
+    for (size_t i = 0; i < elevations.size(); ++i) cosines[i] = std::cos(elevations[i]);
+    std::sort(cosines.begin(), cosines.end());
+    const int n = s.boundaries();
+    for (int k = 0; k < n; ++k) {
+        if (k == k_cam) continue;
+        // n over the layer's heights, over the camera layer's index.
+        const double a = air.n(k == 0 ? 0.0 : s.heights[k - 1]) / n_cam;
+        const double b = air.n(s.heights[k]) / n_cam;
+        const double wanted = 0.25 * std::fabs(b - a);
+        if (!(wanted > 0.0)) continue;
+        // How far ior c is above the cos e of the nearest ray that enters a layer of ior c,
+        // in units of `wanted`; +inf when no ray enters.
+        auto clearance = [&](float c) {
+            const double cd = static_cast<double>(c);
+            auto it = std::upper_bound(cosines.begin(), cosines.end(), cd);
+            if (it == cosines.begin()) return kInfinity;
+            return (cd - *std::prev(it)) / wanted;
+        };
+        const float c0 = pov_relative_ior(s, k_cam, k);
+        if (!(c0 < 1.0f) || clearance(c0) >= 1.0) continue;
+        // The floats between n at the layer's floor and at its top; its neighbours' floats are
+        // left to them (equal iors would merge the boundary away).
+        const float lo = std::min(static_cast<float>(std::min(a, b)), c0);
+        const float hi = std::min(std::max(static_cast<float>(std::max(a, b)), c0), 1.0f);
+        const float below = k > 0 ? pov_relative_ior(s, k_cam, k - 1) : -1.0f;
+        const float above = pov_relative_ior(s, k_cam, k + 1);
+        float best = c0;
+        double best_clear = clearance(c0), best_dist = 0.0;
+        int tried = 0;
+        for (float c = lo; c < hi && tried < 4096; c = std::nextafter(c, 2.0f), ++tried) {
+            if (c == below || c == above || c == c0) continue;
+            const double clear = std::min(clearance(c), 1.0);
+            const double dist = std::fabs(static_cast<double>(c) - static_cast<double>(c0));
+            if (clear > best_clear || (clear == best_clear && dist < best_dist)) {
+                best = c;
+                best_clear = clear;
+                best_dist = dist;
+            }
+        }
+        if (best != c0) {
+            const double index = static_cast<double>(best) * n_cam;
+            s.excess[k] = index * index - s.profile.eta0 * s.profile.eta0;
+            MIRAGE_CHECK(pov_relative_ior(s, k_cam, k) == best);
+        }
+    }
+    return s;
+}
+
 double air_peak_below(const Atmosphere& air, double y0, double elevation, double scene_dz,
                       double ceiling) {
     auto path = ExactPath::make(air, y0, M_PI / 2 - elevation);
@@ -82,8 +138,13 @@ std::vector<double> equal_height_boundaries(double top, int count) {
     return h;
 }
 
-std::vector<double> equal_index_boundaries(const Atmosphere& air, double top, int count,
-                                           double min_thickness) {
+namespace {
+
+// Boundaries where n crosses the levels of `level_at` (ascending in k, level_at(0) and
+// level_at(count) the extremes of n over [0, top]): k = 1 .. count - 1, every crossing.
+template <class Levels>
+std::vector<double> boundaries_at_levels(const Atmosphere& air, double top, int count,
+                                         double min_thickness, const Levels& level_at) {
     MIRAGE_CHECK(count >= 1 && top > 0.0);
     // The profile on a grid fine enough for every knot of the model below the top: each
     // piece of the model is one quadratic, so between grid points n is monotonic unless a
@@ -108,16 +169,17 @@ std::vector<double> equal_index_boundaries(const Atmosphere& air, double top, in
     const double hi = *std::max_element(ns.begin(), ns.end());
     std::vector<double> out;
     if (!(hi > lo)) return out;
-    const double step = (hi - lo) / count;
+    std::vector<double> levels;
+    for (int k = 1; k < count; ++k) levels.push_back(level_at(lo, hi, k));
     for (size_t i = 0; i + 1 < ys.size(); ++i) {
         const double na = ns[i], nb = ns[i + 1];
-        // Levels strictly between the two samples' indices (a level hit exactly at a sample
-        // belongs to the interval it starts).
+        // Levels above the lower of the two samples' indices and up to the higher (a level hit
+        // exactly at a sample belongs to the interval it starts).
         const double a = std::min(na, nb), b = std::max(na, nb);
-        const int k0 = static_cast<int>(std::floor((a - lo) / step)) + 1;
         std::vector<double> here;
-        for (int k = std::max(k0, 1); k < count && lo + k * step <= b; ++k) {
-            const double level = lo + k * step;
+        for (auto it = std::upper_bound(levels.begin(), levels.end(), a);
+             it != levels.end() && *it <= b; ++it) {
+            const double level = *it;
             if (level == na && i > 0) continue;
             // Bisection for n(y) = level on [ys[i], ys[i+1]].
             double ya = ys[i], yb = ys[i + 1];
@@ -136,6 +198,31 @@ std::vector<double> equal_index_boundaries(const Atmosphere& air, double top, in
             if (y - (out.empty() ? 0.0 : out.back()) >= min_thickness && y < top) out.push_back(y);
     }
     return out;
+}
+
+}  // namespace
+
+std::vector<double> equal_index_boundaries(const Atmosphere& air, double top, int count,
+                                           double min_thickness) {
+    return boundaries_at_levels(
+        air, top, count, min_thickness,
+        [count](double lo, double hi, int k) { return lo + k * ((hi - lo) / count); });
+}
+
+std::vector<double> equal_turning_boundaries(const Atmosphere& air, double top, double eye_y,
+                                             int count, double min_thickness) {
+    // The levels of equal_index_boundaries at and above n at the eye; below it as many steps
+    // (and one more) of sqrt(n_eye - n), from n_eye down to the lowest n.
+    const double n_eye = air.n(eye_y);
+    return boundaries_at_levels(
+        air, top, count, min_thickness, [n_eye, count](double lo, double hi, int k) {
+            const double step = (hi - lo) / count;
+            if (!(n_eye > lo)) return lo + k * step;
+            const int below = std::min(count, static_cast<int>(std::ceil((n_eye - lo) / step)));
+            if (k >= below) return lo + k * step;
+            const double s = std::sqrt(n_eye - lo) * (below - k) / below;
+            return n_eye - s * s;
+        });
 }
 
 }  // namespace mirage

@@ -36,6 +36,21 @@ LayerStack air_layers(const Atmosphere& air, const std::vector<double>& heights)
 LayerStack air_layers_for_eye(const Atmosphere& air, const std::vector<double>& heights,
                               double eye_y);
 
+/// The stack with the index of every layer but the camera's (and the top half-space) moved,
+/// within the range n takes over the layer's heights, so that no camera ray skims it.  A band
+/// ray from the eye at elevation e keeps n_eye cos(e); in a layer of ior c (over the camera's)
+/// just above cos(e) it is nearly level, at sqrt(2 (c - cos e)), and runs the layer's
+/// thickness h over that, along the layer and without limit as the two meet, where an exact
+/// ray turning within those heights runs at most about 2 h sqrt(2 dn) / dn (dn the layer's
+/// range of n over n_eye): a mirage's ground far off, the verge beside a van, drawn along whole
+/// rows of the image.  The bound holds when c - cos(e) >= dn / 4, which each layer's ior is
+/// moved to keep for every ray of `elevations` (rad, > 0 up: the pixel centres POV-Ray renders)
+/// that enters it: the float ior nearest the layer's own that does, else the one that comes
+/// closest.  `eye_y` is in the camera's layer, which holds n at the eye (air_layers_for_eye).
+/// docs/atmospheres.md, "Rays that skim a layer".
+LayerStack keep_layers_off_skimming_rays(const Atmosphere& air, const LayerStack& stack,
+                                         double eye_y, const std::vector<double>& elevations);
+
 /// The highest point of the exact path from height y0 at `elevation` (rad) over the
 /// horizontal distance [0, scene_dz] (to the ground, if it meets it first), counted only as
 /// far as the path is at or below `ceiling` afterwards: a path that rises above the ceiling
@@ -54,5 +69,16 @@ std::vector<double> equal_height_boundaries(double top, int count);
 /// change over [0, top].
 std::vector<double> equal_index_boundaries(const Atmosphere& air, double top, int count,
                                            double min_thickness);
+
+/// The same, with the levels below n_e, the index at the eye (`eye_y`), at equal steps of
+/// sqrt(n_e - n) instead: as many steps from n_e down to the lowest n as equal index steps
+/// take there (rounded up), those at and above n_e as equal_index_boundaries places them.  A
+/// ray from the eye turns only where n < n_e, at elevation e where n_e - n = n_e e^2 / 2, so
+/// below the eye these are equal steps of the elevation of the rays that turn at each
+/// boundary.  Equal index steps are sqrt(2 dn) of elevation apart next to the eye's index,
+/// several pixels, where the weak gradient at the eye makes them thick and the near-level rays
+/// turn hundreds of metres out inside them (docs/atmospheres.md, "Rays that skim a layer").
+std::vector<double> equal_turning_boundaries(const Atmosphere& air, double top, double eye_y,
+                                             int count, double min_thickness);
 
 }  // namespace mirage
