@@ -429,16 +429,27 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
             sp.b = (fb - fa) / h - sp.c * h;
             sp.root_c = std::sqrt(std::fabs(sp.c));
             sp.end_slope = sp.b + 2.0 * sp.c * h;
+            // Its error: at 23 heights evenly apart, and at every knot of the fine model inside
+            // it and halfway between them (where the profile's curvature may change: a
+            // breakpoint where only the slope is continuous).
             double err = 0.0;
-            constexpr int kChecks = 24;
-            for (int k = 1; k < kChecks; ++k) {
-                const double u = h * k / kChecks;
+            bool finite = true;
+            auto check = [&](double y) {
+                const double u = y - a;
                 const double fit = fa + (sp.b + sp.c * u) * u;
-                const double truth = f.excess(a + u);
-                if (!std::isfinite(truth)) return false;
+                const double truth = f.excess(y);
+                if (!std::isfinite(truth)) finite = false;
                 err = std::max(err, std::fabs(fit - truth) / (n_of(fit) + n_of(truth)));
+            };
+            constexpr int kChecks = 24;
+            for (int k = 1; k < kChecks; ++k) check(a + h * k / kChecks);
+            for (int j = lo; j < hi; ++j) {
+                if (j > lo) check(q.y_[j]);
+                check(0.5 * (q.y_[j] + q.y_[j + 1]));
             }
-            sp.error_n = err / 0.9;
+            if (!finite) return false;
+            // Within 0.9 of the bound, as the fine fit's intervals; never below the rounding of n.
+            sp.error_n = std::max(err / 0.9, 8.0 * std::numeric_limits<double>::epsilon());
             double lo_sq, hi_sq;
             q.n_sq_range(a, a + h, lo_sq, hi_sq);
             const double D = 1.01 * (eps + sp.error_n);

@@ -7,6 +7,7 @@
 
 #include "air_fixtures.h"
 #include "atmosphere/exact_path.h"
+#include "atmosphere/quadratic_path.h"
 
 namespace mirage {
 namespace {
@@ -163,6 +164,89 @@ TEST(QuadraticProfile, FitKeepsItsBoundOnTheIndexAndOnRayDirections) {
             EXPECT_GT(worst_angle, 0.0) << form.name;
         }
     }
+}
+
+// The coarse spans (FitSettings::coarse_spans): each keeps its stated error against the true
+// profile (checked at 200 heights a span), and a ray it admits (beta^2 <= max_beta_sq, beta from
+// the fine model at the start) has, at every height of the span, a direction within the fine
+// model's bound pi sqrt(eps) of the true ray's.  The rays are taken at the edge of admission, so
+// the check can fail: spans allowed 30 times the bound (FitSettings::span_allowance) admit rays
+// that break it.
+TEST(QuadraticProfile, SpansKeepTheirErrorAndTheirRaysTheFineBound) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const auto& form : forms()) {
+        const double tol = 1e-10;
+        auto model = make_air_model(form.spec);
+        ASSERT_TRUE(model.ok());
+        const ProfileFunction f =
+            form.spec.earth_radius_m > 0.0
+                ? flatten(model->physical, form.spec.earth_radius_m, form.spec.earth_extension_m)
+                : model->physical;
+        auto n_true = [&](double y) { return std::sqrt(f.n0_sq + f.excess(std::min(y, f.top))); };
+        // The largest direction error of admitted rays at the edge of admission, over every span.
+        auto worst_admitted = [&](const QuadraticProfile& q, bool check_error) {
+            double worst = 0.0;
+            for (const CoarseSpan& sp : q.spans()) {
+                const double a = q.knot(sp.lo), h = q.knot(sp.hi) - a;
+                auto n_span = [&](double y) {
+                    const double u = y - a;
+                    return std::sqrt(q.n0_sq() + q.e(sp.lo) + (sp.b + sp.c * u) * u);
+                };
+                if (check_error) {
+                    for (int k = 0; k <= 200; ++k) {
+                        const double y = a + h * k / 200.0;
+                        EXPECT_LE(std::fabs(n_span(y) - n_true(y)), sp.error_n)
+                            << form.name << " span " << sp.lo << "-" << sp.hi << " at " << y;
+                    }
+                }
+                for (int k = 0; k < 20; ++k) {
+                    const double y0 = q.top() * 0.2 * unit(rng) * unit(rng);
+                    const double beta = std::sqrt(sp.max_beta_sq * (1.0 - 1e-9 * unit(rng)));
+                    const double sin_i = beta / q.n(y0);
+                    if (!(sin_i < 1.0)) continue;
+                    const double y = a + h * unit(rng);
+                    const double cf = beta / n_span(y), ct = n_true(y0) * sin_i / n_true(y);
+                    if (!(cf < 1.0 && ct < 1.0)) continue;
+                    worst = std::max(worst, std::fabs(std::acos(cf) - std::acos(ct)));
+                }
+            }
+            return worst;
+        };
+        auto q = testing::fit_or_die(form.spec, tol, true);
+        ASSERT_TRUE(q);
+        ASSERT_TRUE(q->has_spans()) << form.name;
+        const double worst = worst_admitted(*q, true);
+        EXPECT_LE(worst, M_PI * std::sqrt(tol)) << form.name;
+        EXPECT_GT(worst, 0.0) << form.name;
+        auto loose = testing::fit_or_die(form.spec, tol, true, 30.0);
+        ASSERT_TRUE(loose);
+        EXPECT_GT(worst_admitted(*loose, false), M_PI * std::sqrt(tol)) << form.name;
+    }
+}
+
+// A model in other units (scene units of 1 cm) carries its spans with it: the same rays, the
+// same spans crossed, heights the same to rounding.
+TEST(QuadraticProfile, RescaledModelKeepsItsSpans) {
+    auto q = testing::fit_or_die(testing::hot_road_spec(), 1e-10, true);
+    ASSERT_TRUE(q && q->has_spans());
+    auto cm = q->rescaled(0.01);
+    ASSERT_TRUE(cm.ok()) << cm.message();
+    ASSERT_EQ(cm->spans().size(), q->spans().size());
+    int crossed = 0;
+    for (double elev : {-0.006, -0.003, -0.001, 0.0005, 0.002, 0.006, 0.02}) {
+        auto m = QuadraticPath::make(*q, 1.5, M_PI / 2 - elev);
+        auto c = QuadraticPath::make(*cm, 150.0, M_PI / 2 - elev);
+        ASSERT_TRUE(m.ok() && c.ok());
+        EXPECT_EQ(m->fate(), c->fate()) << elev;
+        for (double dz : {50.0, 200.0, 600.0, 1500.0}) {
+            const double ym = m->height_at(dz), yc = c->height_at(100.0 * dz) / 100.0;
+            EXPECT_NEAR(ym, yc, 1e-9 * (1.0 + std::fabs(ym))) << elev << " at " << dz;
+        }
+        EXPECT_EQ(m->spans_crossed(), c->spans_crossed()) << elev;
+        crossed += m->spans_crossed();
+    }
+    EXPECT_GT(crossed, 0);
 }
 
 TEST(QuadraticProfile, FitRefusesWhatItCannotFollow) {
