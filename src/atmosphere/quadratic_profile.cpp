@@ -132,7 +132,6 @@ Result<QuadraticProfile> QuadraticProfile::rescaled(double unit) const {
     auto p = make(std::move(knots), std::move(slopes), std::move(curvatures), n0_sq_,
                   earth_radius_ / unit);
     if (!p) return p.error();
-    p->tolerance_n_ = tolerance_n_;
     if (!spans_.empty()) {
         p->spans_ = spans_;
         for (CoarseSpan& sp : p->spans_) {
@@ -400,7 +399,6 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
     auto model = QuadraticProfile::make(std::move(knots), std::move(slopes), std::move(curvatures),
                                         f.n0_sq, f.earth_radius);
     if (!model) return model.error();
-    model->tolerance_n_ = settings.tolerance_n;
     if (settings.coarse_spans) {
         QuadraticProfile& q = *model;
         const int m = q.piece_count();

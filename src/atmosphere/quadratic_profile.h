@@ -113,8 +113,6 @@ class QuadraticProfile {
     /// Whether n^2 is the same at every height.
     bool homogeneous() const { return homogeneous_; }
 
-    /// The fit's bound on |n_fit - n| (0 when the model was not fitted to a function).
-    double tolerance_n() const { return tolerance_n_; }
     /// The coarser spans (fit_quadratic_profile with FitSettings::coarse_spans), and the coarsest
     /// one starting (span_up) or ending (span_down) at knot k, -1 when none.
     const std::vector<CoarseSpan>& spans() const { return spans_; }
@@ -137,7 +135,6 @@ class QuadraticProfile {
     double n0_sq_ = 1.0;
     double earth_radius_ = 0.0;
     bool homogeneous_ = true;
-    double tolerance_n_ = 0.0;
     std::vector<CoarseSpan> spans_;
     std::vector<int> span_up_, span_down_;
     // Sparse tables (level k covers 2^k entries): the largest |slope| at each knot (either
@@ -183,16 +180,17 @@ struct FitReport {
 ///
 /// With coarse_spans, spans of 1, 2, 4, 8, ... fine intervals start at every fine interval's end
 /// (never across a corner of the profile), each the quadratic through the profile at its ends
-/// and its middle, its error measured at 23 heights as the fine fit's (error_n: the largest
-/// checked error over 0.9).  The rays that may cross a span: the
-/// fine model keeps a ray's direction within B = pi sqrt(eps) of the true one (eps the
-/// tolerance).  At a height in a span, n cos e = beta with beta from the fine model at the start
-/// gives |cos e - cos e_true| <= D = 1.01 (eps + error_n), and |e - e_true| <= D / sqrt(sin^2
-/// e_true - 3 D); with sin^2 e_true >= (n^2_min - beta^2 - 4.02 eps) / n^2_max over the span, a
-/// ray with beta^2 <= n^2_min - 4.02 eps - n^2_max (3 D + D^2 / B^2) stays within B there.  A
-/// span also needs n^2 - beta^2 >= 40.4 (eps + error_n) over it, so that crossing it changes
-/// n^2 - beta^2 by at most kSpanShareOfQ (5 %): no ray turns in a span, and the bounds on a
-/// path's straight continuation (asymptote_departure) widen by that share.
+/// and its middle, its error checked at 23 heights and at every fine knot inside it and halfway
+/// between them (error_n: the largest checked error over 0.9, at least 8 ulps).  The rays that
+/// may cross a span: the fine model keeps a ray's direction within B = pi sqrt(eps) of the true
+/// one (eps the tolerance).  At a height in a span, n cos e = beta with beta from the fine model at
+/// the start gives |cos e - cos e_true| <= D = 1.01 (eps + error_n), and |e - e_true| <= D /
+/// sqrt(sin^2 e_true - 3 D); with sin^2 e_true >= (n^2_min - beta^2 - 4.02 eps) / n^2_max over the
+/// span, a ray with beta^2 <= n^2_min - 4.02 eps - n^2_max (3 D + D^2 / B^2) stays within B there.
+/// A span also needs n^2 - beta^2 >= 2.02 (eps + error_n) / kSpanShareOfQ (8.08 (eps + error_n))
+/// over it, so that crossing it changes n^2 - beta^2 by at most kSpanShareOfQ (a quarter): no
+/// ray turns in a span, and the bounds on a path's straight continuation (asymptote_departure)
+/// widen by that share.
 Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
                                                const FitSettings& settings,
                                                FitReport* report = nullptr);
