@@ -389,6 +389,52 @@ class ExactNearSampler {
     bool stopped_ = false;
 };
 
+// Whether a path that rises from its start and turns nowhere before `end` meets nothing, all
+// the way, and (cut at `end`) nothing lies beyond the cut either, where the tracer would go on
+// straight.  Its slope depends on its height only, so over the heights it crosses (from the
+// start to the end's height; escaping, to the profile's top, above which it is straight) it
+// lies in the wedge from its start between the smallest and largest slope there; everything
+// within the allowance of it lies within tol_rad sqrt(1 + s^2) per unit of dz more.  Such a
+// path is kept as its start and its end direction, not to be tested: the end a path the sampler
+// stops has, and the sky is seen in the same direction.
+bool wedge_is_clear(const ExactPath& path, const SampleSettings& st,
+                    const PathObstacles& obstacles, bool escapes, double end) {
+    const QuadraticPath* q = path.quadratic();
+    if (!q || !(std::cos(path.i_rad()) > 0.0) || !(end > 0.0)) return false;
+    const double y0 = path.y0();
+    const double top = q->profile().top();
+    const double y_hi = escapes ? std::max(y0, top) : path.height_at(end);
+    if (!(y_hi >= y0)) return false;
+    double s_lo, s_hi;
+    q->abs_slope_bounds(y0, y_hi, s_lo, s_hi);
+    if (!std::isfinite(s_hi)) return false;
+    const double spread = st.tolerance_rad * std::sqrt(1.0 + s_hi * s_hi) + 1e-9 * (1.0 + s_hi);
+    const double margin =
+        st.tolerance_m + st.tolerance_rad * st.start_distance + 1e-9 * (1.0 + std::fabs(y0));
+    PathRegion wedge;
+    wedge.dz_lo = 0.0;
+    wedge.dz_hi = escapes ? kInf : end;
+    const PathLine below{0.0, y0 - margin, s_lo - spread};
+    wedge.lower = {below, below};
+    wedge.lower_count = 1;
+    const PathLine above{0.0, y0 + margin, s_hi + spread};
+    if (escapes) {
+        wedge.upper = {above, above};
+        wedge.upper_count = 1;
+    } else {
+        wedge.upper = {above, PathLine{0.0, y_hi + margin, spread}};
+    }
+    if (obstacles.may_meet(wedge)) return false;
+    if (escapes) return true;
+    PathRegion beyond;
+    beyond.dz_lo = end;
+    beyond.dz_hi = kInf;
+    beyond.lower = {PathLine{end, -kInf, 0.0}, PathLine{end, -kInf, 0.0}};
+    beyond.upper = {PathLine{end, kInf, 0.0}, PathLine{end, kInf, 0.0}};
+    beyond.lower_count = beyond.upper_count = 1;
+    return !obstacles.may_meet(beyond);
+}
+
 }  // namespace
 
 void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
@@ -434,8 +480,12 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
         out.turns = true;
         out.dz_turn = starts[1];
     }
+    // A path rising from its start that turns nowhere before the end, met by nothing near it:
+    // kept as its start and its end direction (wedge_is_clear).
+    const bool whole_clear = obstacles && !ground && starts.size() == 1 &&
+                             wedge_is_clear(path, st, *obstacles, escapes, end);
     double a = 0.0, ya = y0;
-    for (size_t k = 1; k <= starts.size(); ++k) {
+    for (size_t k = 1; !whole_clear && k <= starts.size(); ++k) {
         const bool last = k == starts.size();
         const double b = last ? end : starts[k];
         // The far end's height waits until a test needs it (escaping paths).
@@ -454,14 +504,17 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
         if (path.height_at(max_dz) >= path.quadratic()->profile().top()) {
             at = std::min(at, path.quadratic()->dz_straight());
         }
-        out.end = sampler.stopped() ? PathEnd::Straight : PathEnd::Cut;
+        const bool stopped = whole_clear || sampler.stopped();
+        out.end = stopped ? PathEnd::Straight : PathEnd::Cut;
         out.end_slope = path.slope_at(at);
         out.end_slope_dz = at;
-        out.end_clear = sampler.stopped();
+        out.end_clear = stopped;
     } else {
+        // Cut at the end (where the last point is, when sampled).
         out.end = PathEnd::Cut;
-        out.end_slope = path.slope_at(out.points.back().x);
-        out.end_slope_dz = out.points.back().x;
+        out.end_slope = path.slope_at(end);
+        out.end_slope_dz = end;
+        out.end_clear = whole_clear;
     }
 }
 

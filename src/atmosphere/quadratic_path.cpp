@@ -824,6 +824,21 @@ double QuadraticPath::asymptote_departure(double dz) const {
     return (p.top() - y) * worst;
 }
 
+void QuadraticPath::abs_slope_bounds(double ya, double yb, double& lo, double& hi) const {
+    // |dy/dz| = sqrt(n^2 - beta^2) / beta, with n^2 - beta^2 = e - level (as
+    // asymptote_departure).
+    const double level = e0_ - Q0_;
+    double e_lo, e_hi;
+    profile_->excess_range(ya, yb, e_lo, e_hi);
+    double q_lo = e_lo - level, q_hi = e_hi - level;
+    if (profile_->has_spans()) {
+        q_lo *= 1.0 - QuadraticProfile::kSpanShareOfQ;
+        q_hi *= 1.0 + QuadraticProfile::kSpanShareOfQ;
+    }
+    lo = std::sqrt(std::max(0.0, q_lo)) * inv_beta_;
+    hi = std::sqrt(std::max(0.0, q_hi)) * inv_beta_;
+}
+
 std::vector<QuadraticSegment> QuadraticPath::release_storage() {
     std::vector<QuadraticSegment> out = std::move(sweep_.segments);
     out.clear();

@@ -119,6 +119,10 @@ class QuadraticPath {
     /// by int_y^top |1 - s_inf / s| dy' at most, bounded from the range of n^2 over [y, top].
     double asymptote_departure(double dz) const;
 
+    /// Bounds lo <= |dy/dz| <= hi wherever the path is at a height in [ya, yb] (ya <= yb): from
+    /// the range of n^2 - beta^2 there, widened where the ray may cross spans.
+    void abs_slope_bounds(double ya, double yb, double& lo, double& hi) const;
+
     /// The path's monotone run, completed: from the first turning point (or from the start when
     /// there is none ahead) to the next turning point, the ground or the top.
     const Sweep& sweep() const;

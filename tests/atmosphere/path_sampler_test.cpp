@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "air_fixtures.h"
+#include "rectangles.h"
 
 namespace mirage {
 namespace {
@@ -169,6 +171,163 @@ TEST(PathSampler, NeedsAboutAsManySamplesAsTheClosedFormSampler) {
     }
     EXPECT_LT(ours, 1.25 * theirs);
     EXPECT_GT(ours, 0.75 * theirs);
+}
+
+// The exact path, widened by the allowance, stays clear of every rectangle over [lo, hi].
+bool stretch_is_clear(const ExactPath& path, const SampleSettings& st,
+                      const testing::Rectangles& obstacles, double lo, double hi) {
+    const int n = 400;
+    for (int j = 0; j <= n; ++j) {
+        const double dz = lo + (hi - lo) * j / n;
+        if (path.hits_ground() && dz > path.dz_ground()) break;
+        const double y = path.height_at(dz);
+        const double a = allowed_error(path, st, dz, y);
+        for (const auto& r : obstacles.rects()) {
+            if (dz >= r.dz_lo && dz <= r.dz_hi && y + a >= r.y_lo && y - a <= r.y_hi) return false;
+        }
+    }
+    return true;
+}
+
+// The general engine's near sampler among random rectangles, with the coarse spans the tracer
+// fits: every segment not marked clear is one of the segments sampled without obstacles (so it
+// keeps the tolerance), every clear stretch of the exact path, widened by the allowance, meets
+// no rectangle, and where the path passes through a rectangle it is sampled to the tolerance.
+// A path kept as its start alone (a rising path with nothing near it all the way, nor beyond
+// the cut) ends in the direction the full sampling ends in, and truly meets nothing.
+TEST(PathSamplerNear, CoarseOnlyWhereNothingLiesNearAndTheSameSegmentsElsewhere) {
+    using testing::Rectangles;
+    struct Case {
+        const char* name;
+        Atmosphere atmosphere;
+        double y0_lo, y0_hi, elev_lo, elev_hi, reach;
+    };
+    using namespace testing;
+    const std::vector<Case> cases = {
+        {"hot road temperatures, spans",
+         Atmosphere::quadratic(fit_or_die(hot_road_spec(), 1e-10, true)), 0.05, 3.0, 1e-5, 0.1,
+         1000},
+        {"road duct, spans", Atmosphere::quadratic(fit_or_die(road_duct_spec(), 1e-10, true)),
+         0.05, 4.0, 1e-5, 0.05, 3000},
+        {"young smooth, curved, spans",
+         Atmosphere::quadratic(fit_or_die(young_spec(0.85), 1e-10, true)), 5.0, 120.0, 1e-5, 0.02,
+         60000},
+        {"paper fitted, spans",
+         Atmosphere::quadratic(fit_or_die(exponential_spec("paper"), 1e-10, true)), 0.05, 5.0,
+         1e-5, 0.2, 200},
+    };
+    std::mt19937_64 rng(20261202);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int clear_segments = 0, fine_segments = 0, rays = 0, inside = 0, whole = 0, whole_cut = 0;
+    int fewer = 0;
+    for (const auto& c : cases) {
+        for (int trial = 0; trial < 80; ++trial) {
+            const double y0 = c.y0_lo * std::pow(c.y0_hi / c.y0_lo, unit(rng));
+            const double mag = c.elev_lo * std::pow(c.elev_hi / c.elev_lo, unit(rng));
+            const double elev = unit(rng) < 0.5 ? -mag : mag;
+            auto path = ExactPath::make(c.atmosphere, y0, M_PI / 2 - elev);
+            ASSERT_TRUE(path.ok()) << path.message();
+            SampleSettings st;
+            st.tolerance_rad = std::pow(10.0, -3.0 - 2.0 * unit(rng));
+            if (trial % 2) st.start_distance = 5.0 * unit(rng);
+            st.max_dz = c.reach * (0.05 + unit(rng));
+            SampledPath full;
+            sample_exact_path_near(*path, st, nullptr, full);
+            // Rectangles about the path's own heights, somewhere along its sampled part, or
+            // (every fourth ray) far above or below it.
+            const double reach = std::max(full.points.back().x, 1.0);
+            std::vector<Rectangles::Rect> rects;
+            const int count = 1 + trial % 3;
+            for (int k = 0; k < count; ++k) {
+                const double dz = reach * unit(rng);
+                const double w = reach * 0.05 * unit(rng) + 1e-3;
+                const double y_path = path->height_at(dz);
+                const double h = 0.1 * y0 * unit(rng) + 1e-3;
+                double y = y_path + (unit(rng) - 0.5) * 0.5 * y0;
+                if (trial % 4 == 3) y = unit(rng) < 0.5 ? -10.0 * y0 - 1.0 : 1e6;
+                rects.push_back({dz, dz + w, y, y + h});
+            }
+            if (trial % 8 == 7 && full.end == PathEnd::Cut) {
+                // Something beyond the cut, on the straight line the tracer goes on along.
+                const double x = 1.5 * st.max_dz;
+                const double y = full.points.back().y + full.end_slope * (x - st.max_dz);
+                rects.push_back({x, x + 1.0, y - 1.0, y + 1.0});
+            }
+            const bool ground = trial % 5 == 0;
+            const Rectangles obstacles(rects, ground);
+            SampledPath near;
+            sample_exact_path_near(*path, st, &obstacles, near);
+            char what[300];
+            std::snprintf(what, sizeof what, "%s y0=%.17g elev=%.17g tol_rad=%.17g max_dz=%.17g "
+                          "class=%s", c.name, y0, elev, st.tolerance_rad, st.max_dz,
+                          path->class_name().c_str());
+            ASSERT_EQ(near.points.front(), full.points.front()) << what;
+            EXPECT_EQ(near.turns, full.turns) << what;
+            EXPECT_EQ(near.end_slope, full.end_slope) << what;
+            EXPECT_EQ(near.end_slope_dz, full.end_slope_dz) << what;
+            if (near.end_clear) {
+                EXPECT_NE(near.end, PathEnd::Ground) << what;
+                // Nothing near the path from its last point on, nor (cut) beyond the cut.
+                const double from = near.points.back().x;
+                const double to = near.end == PathEnd::Cut ? st.max_dz : 4.0 * reach;
+                EXPECT_TRUE(stretch_is_clear(*path, st, obstacles, from, to)) << what;
+                if (near.end == PathEnd::Cut) {
+                    for (const auto& r : rects) EXPECT_LT(r.dz_hi, st.max_dz) << what;
+                }
+                if (near.points.size() == 1) {
+                    ++whole;
+                    if (near.end == PathEnd::Cut) ++whole_cut;
+                }
+            } else {
+                EXPECT_EQ(near.end, full.end) << what;
+                EXPECT_EQ(near.points.back(), full.points.back()) << what;
+            }
+            ASSERT_EQ(near.clear_length.size() + 1, near.points.size()) << what;
+            for (std::size_t k = 1; k < near.points.size(); ++k) {
+                const glm::dvec2 a = near.points[k - 1], b = near.points[k];
+                if (near.clear_length[k - 1] > 0.0) {
+                    ++clear_segments;
+                    EXPECT_TRUE(stretch_is_clear(*path, st, obstacles, a.x, b.x))
+                        << what << ": segment " << k << " from dz " << a.x << " to " << b.x;
+                    continue;
+                }
+                ++fine_segments;
+                const auto at = std::find(full.points.begin(), full.points.end(), a);
+                ASSERT_NE(at, full.points.end()) << what << ": point " << k - 1;
+                ASSERT_NE(at + 1, full.points.end()) << what;
+                EXPECT_EQ(*(at + 1), b) << what << ": segment " << k;
+            }
+            // Where the path crosses a rectangle, a fine segment covers it.
+            for (const auto& r : rects) {
+                for (int j = 0; j <= 50; ++j) {
+                    const double dz = r.dz_lo + (r.dz_hi - r.dz_lo) * j / 50;
+                    if (path->hits_ground() && dz > path->dz_ground()) continue;
+                    if (dz > near.points.back().x) continue;
+                    const double y = path->height_at(dz);
+                    if (y < r.y_lo || y > r.y_hi) continue;
+                    std::size_t k = 1;
+                    while (k + 1 < near.points.size() && near.points[k].x < dz) ++k;
+                    ASSERT_GT(near.points.size(), 1u) << what;
+                    EXPECT_EQ(near.clear_length[k - 1], 0.0) << what << " at dz " << dz;
+                    ++inside;
+                }
+            }
+            if (near.points.size() < full.points.size()) ++fewer;
+            ++rays;
+        }
+    }
+    std::printf("%d rays: %d clear segments, %d fine; fewer points for %d; %d points in boxes; "
+                "%d kept as their start (%d of them cut)\n",
+                rays, clear_segments, fine_segments, fewer, inside, whole, whole_cut);
+    EXPECT_EQ(rays, 320);
+    // The obstacles leave work out, and not everything; whole paths are found clear, among
+    // them paths cut at the end of the reach.
+    EXPECT_GT(clear_segments, 100);
+    EXPECT_GT(fine_segments, 200);
+    EXPECT_GT(inside, 100);
+    EXPECT_GT(fewer, rays / 4);
+    EXPECT_GT(whole, 20);
+    EXPECT_GT(whole_cut, 5);
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <limits>
 #include <random>
 
+#include "rectangles.h"
+
 namespace mirage {
 namespace {
 
@@ -157,30 +159,7 @@ TEST(Sampler, StraightAtmosphereGivesOneSegment) {
     EXPECT_NEAR(path.points[1].x, 1.5 / std::tan(0.1), 1e-12);
 }
 
-// The scene as a ray's vertical plane sees it: rectangles (boxes' cuts), counting questions.
-class Rectangles final : public PathObstacles {
-  public:
-    struct Rect {
-        double dz_lo, dz_hi, y_lo, y_hi;
-    };
-    explicit Rectangles(std::vector<Rect> rects, bool ground = false)
-        : rects_(std::move(rects)), ground_(ground) {}
-    bool may_meet(const PathRegion& region) const override {
-        ++asked_;
-        for (const Rect& r : rects_) {
-            if (region_meets_rectangle(region, r.dz_lo, r.dz_hi, r.y_lo, r.y_hi)) return true;
-        }
-        return false;
-    }
-    bool ground() const override { return ground_; }
-    const std::vector<Rect>& rects() const { return rects_; }
-    int asked() const { return asked_; }
-
-  private:
-    std::vector<Rect> rects_;
-    bool ground_;
-    mutable int asked_ = 0;
-};
+using testing::Rectangles;
 
 TEST(SamplerNear, WithoutObstaclesTheToleranceBoundsTheErrorEverywhere) {
     std::mt19937_64 rng(20261201);
