@@ -26,6 +26,12 @@ void print_headlines(const CompareResult& r) {
                   << " s, adaptive layers " << sig(e.b.seconds, 3) << " s (x" << sig(e.speedup(), 3)
                   << ")\n";
     }
+    if (h.tracer_vs_steps) {
+        const EqualError& e = *h.tracer_vs_steps;
+        std::cout << "at RMSE " << sig(e.error, 3) << ": POV-Ray with index steps "
+                  << sig(e.a.seconds, 3) << " s, the tracer " << sig(e.b.seconds, 3) << " s (x"
+                  << sig(e.speedup(), 3) << ")\n";
+    }
     if (h.tracer_vs_adaptive) {
         const EqualError& e = *h.tracer_vs_adaptive;
         std::cout << "at RMSE " << sig(e.error, 3) << ": POV-Ray with adaptive layers "
@@ -44,8 +50,9 @@ void setup_compare_command(CLI::App& app) {
     CompareOptions& c = o->compare;
     auto* sub = app.add_subcommand(
         "compare",
-        "Error against run time: uniform and adaptive layers rendered by POV-Ray and the "
-        "tracer's polylines, each against a finely traced reference");
+        "Error against run time: uniform and adaptive layers (for real air, index steps) "
+        "rendered by POV-Ray and the tracer's polylines, each against a finely traced "
+        "reference");
     sub->add_option("scene", c.scene, "the .pov scene")->required();
     sub->add_option("-W,--width", c.width, "image width, pixels")->capture_default_str();
     sub->add_option("-H,--height", c.height, "image height, pixels")->capture_default_str();
@@ -57,6 +64,11 @@ void setup_compare_command(CLI::App& app) {
     sub->add_option("--counts", c.counts,
                     "uniform layer counts, comma-separated (default 8,16,32,... doubling until "
                     "POV-Ray's trace-level budget is exceeded)")
+        ->delimiter(',')
+        ->allow_extra_args(false);
+    sub->add_option("--steps", c.steps,
+                    "index steps of real air's layers, comma-separated (default 8,16,... 256 "
+                    "doubling while within POV-Ray's trace-level budget)")
         ->delimiter(',')
         ->allow_extra_args(false);
     sub->add_option("--tolerances", c.tolerances,

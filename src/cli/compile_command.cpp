@@ -37,9 +37,11 @@ void setup_compile_command(CLI::App& app) {
     auto* tol = sub->add_option("--tolerance", o->tolerance,
                                 "largest path error, pixels (default: Mirage_Tolerance, else 0.5)");
     auto* layers = sub->add_option("--layers", o->layers,
-                                   "adaptive (default) or uniform (Berger's equal layers)")
-                       ->check(CLI::IsMember({"adaptive", "uniform"}));
-    auto* count = sub->add_option("--count", o->count, "number of uniform layers");
+                                   "adaptive (default), uniform (Berger's equal layers) or "
+                                   "index-steps (equal steps of the index: real air's design)")
+                       ->check(CLI::IsMember({"adaptive", "uniform", "index-steps"}));
+    auto* count = sub->add_option("--count", o->count,
+                                  "number of uniform layers, or of index steps");
     sub->add_option("-L,--library-path", o->compile.library_paths,
                     "extra include directory (searched first)");
     sub->add_flag("--antialias", o->compile.antialias, "antialias the render (+A0.3)");
@@ -59,7 +61,10 @@ void setup_compile_command(CLI::App& app) {
     sub->callback([o, tol, layers, count] {
         CompileOptions c = o->compile;
         if (*tol) c.tolerance_px = o->tolerance;
-        if (*layers) c.layers = o->layers == "uniform" ? LayerMode::Uniform : LayerMode::Adaptive;
+        if (*layers)
+            c.layers = o->layers == "uniform"       ? LayerMode::Uniform
+                       : o->layers == "index-steps" ? LayerMode::IndexSteps
+                                                    : LayerMode::Adaptive;
         if (*count) c.layer_count = o->count;
         auto report = compile_scene(c);
         if (!report) {

@@ -35,6 +35,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMaxCount = kMaxLayerCount;  // the largest uniform layer count a sweep tries
+constexpr int kMaxSteps = 256;   // the largest count of index steps the default sweep tries
 constexpr int kFirstCount = 8;             // the default doubling starts here
 
 std::string list_text(const std::vector<double>& values) {
@@ -97,6 +98,7 @@ struct Sweep {
     std::vector<SheetTile> tiles;
     std::string povray_version;
     std::set<std::string> compile_warnings;  // noted once each
+    bool redesigned = false;  // the last design compiled was refitted with fewer layers or steps
 
     void say(const std::string& line) const {
         if (opt.progress) opt.progress(line);
@@ -176,8 +178,10 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     row.model = model;
     row.setting = setting;
     const std::string id = row_id(model, setting_text(row));
-    const std::string label =
-        (model == CompareModel::UniformBands ? "uniform " : "adaptive ") + setting_label(row);
+    const std::string label = (model == CompareModel::UniformBands    ? "uniform "
+                               : model == CompareModel::AdaptiveBands ? "adaptive "
+                                                                      : "index-step-bands ") +
+                              setting_label(row);
     const fs::path dir = sw.work / id;
     const fs::path image = sw.out / "renders" / (id + ".png");
     if (auto s = sw.guard(image); !s) return s.error();
@@ -195,6 +199,9 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     if (model == CompareModel::UniformBands) {
         c.layers = LayerMode::Uniform;
         c.layer_count = static_cast<int>(std::lround(setting));
+    } else if (model == CompareModel::IndexStepBands) {
+        c.layers = LayerMode::IndexSteps;
+        c.layer_count = static_cast<int>(std::lround(setting));
     } else {
         c.layers = LayerMode::Adaptive;
         c.tolerance_px = setting;
@@ -210,8 +217,11 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     }
     // What compile had to give up (a refit within a tighter trace-level budget) explains an
     // error that does not fall with the tolerance.
-    for (const auto& w : rep->warnings)
+    sw.redesigned = false;
+    for (const auto& w : rep->warnings) {
+        if (w.find("redesigned with") != std::string::npos) sw.redesigned = true;
         if (sw.compile_warnings.insert(w).second) sw.note(label + ": mirage compile: " + w);
+    }
 
     auto run = render_compiled(sw, rep->ini_path, dir, sw.staged(image).string());
     if (!run) return run.error();
@@ -243,11 +253,11 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     sw.tiles.push_back(
         {std::move(*codes),
          model_name(model) + " " + setting_label(row) +
-             (model == CompareModel::AdaptiveBands ? ", " + std::to_string(row.layers) + " layers"
-                                                   : "") +
+             (model != CompareModel::UniformBands ? ", " + std::to_string(row.layers) + " layers"
+                                                  : "") +
              "\nPOV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3)});
     sw.say(label + ": " +
-           (model == CompareModel::AdaptiveBands ? std::to_string(row.layers) + " layers, " : "") +
+           (model != CompareModel::UniformBands ? std::to_string(row.layers) + " layers, " : "") +
            "POV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3));
     return BandOutcome::Rendered;
 }
@@ -392,6 +402,8 @@ std::string model_name(CompareModel model) {
             return "uniform-bands";
         case CompareModel::AdaptiveBands:
             return "adaptive-bands";
+        case CompareModel::IndexStepBands:
+            return "index-step-bands";
         case CompareModel::Polyline:
             return "polyline";
         case CompareModel::Scanline:
@@ -431,6 +443,8 @@ Status validate_compare_options(const CompareOptions& o) {
         return s;
     for (int n : o.counts)
         if (auto s = check_layer_count(n, "--counts"); !s) return s;
+    for (int n : o.steps)
+        if (auto s = check_layer_count(n, "--steps"); !s) return s;
     const std::pair<const char*, const std::vector<double>*> lists[] = {
         {"--tolerances", &o.tolerances}, {"--trace-tolerances", &o.trace_tolerances}};
     for (const auto& [flag, values] : lists)
@@ -458,6 +472,7 @@ std::string compare_command_line(const CompareOptions& o) {
     s << " --reference-tolerance " << shortest(o.reference_tolerance_px);
     if (!o.counts.empty()) s << " --counts " << list_text(o.counts);
     if (!o.tolerances.empty()) s << " --tolerances " << list_text(o.tolerances);
+    if (!o.steps.empty()) s << " --steps " << list_text(o.steps);
     if (!o.trace_tolerances.empty()) s << " --trace-tolerances " << list_text(o.trace_tolerances);
     if (o.scanline) s << " --scanline-paths";
     s << " --threshold " << shortest(o.threshold);
@@ -472,8 +487,10 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     sw.opt = options;
     CompareOptions& opt = sw.opt;
     // From coarse to fine, each setting once.
-    std::sort(opt.counts.begin(), opt.counts.end());
-    opt.counts.erase(std::unique(opt.counts.begin(), opt.counts.end()), opt.counts.end());
+    for (auto* list : {&opt.counts, &opt.steps}) {
+        std::sort(list->begin(), list->end());
+        list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
     for (auto* list : {&opt.tolerances, &opt.trace_tolerances}) {
         std::sort(list->begin(), list->end(), std::greater<>());
         list->erase(std::unique(list->begin(), list->end()), list->end());
@@ -574,6 +591,35 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     if (!stopped && opt.counts.empty())
         sw.note("uniform-bands: stopped at " + std::to_string(kMaxCount) +
                 " layers, the sweep's largest count, still within the trace-level budget");
+
+    // Real air's own design: equal steps of the index, doubling (or as listed) until a design
+    // exceeds the trace-level budget.  (mirage compile refits a design over the budget with
+    // fewer steps, and says so: the sweep stops there, at the first such warning.)
+    if (loaded->settings.air) {
+        std::vector<int> steps = opt.steps;
+        if (steps.empty())
+            for (int n = kFirstCount; n <= kMaxSteps; n *= 2) steps.push_back(n);
+        for (int n : steps) {
+            CompileReport over;
+            auto outcome = run_band(sw, CompareModel::IndexStepBands, n, &over);
+            if (!outcome) return outcome.error();
+            if (*outcome == BandOutcome::OverBudget) {
+                sw.note("index-step-bands: stopped at " + std::to_string(n) +
+                        " steps: a camera ray with its reflections needs trace level " +
+                        std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
+                        std::to_string(kPovrayMaxTraceLevel) + " (not rendered)");
+                break;
+            }
+            if (opt.steps.empty() && *outcome == BandOutcome::Rendered && sw.redesigned) {
+                sw.note("index-step-bands: stopped at " + std::to_string(n) +
+                        " steps, where mirage compile had to use fewer (above)");
+                break;
+            }
+        }
+    } else if (!opt.steps.empty()) {
+        sw.note("index-step-bands: not run: index steps are the design for real air, and this "
+                "scene's atmosphere is " + r.atmosphere);
+    }
 
     for (double tol : opt.tolerances) {
         CompileReport over;

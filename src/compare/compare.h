@@ -1,5 +1,6 @@
 // `mirage compare`: error against run time for one scene, for the band models POV-Ray
-// renders (Berger's equal layers, and layers placed where the scene's rays turn) and for the
+// renders (Berger's equal layers, layers placed where the scene's rays turn, and for real air
+// layers at equal steps of the index) and for the
 // continuous model (the built-in tracer along polylines within a tolerance).  Every image is
 // measured against a reference traced along per-ray paths at a much finer tolerance, after
 // both are quantized to the 8-bit codes POV-Ray writes.
@@ -17,11 +18,13 @@ namespace mirage {
 enum class CompareModel {
     UniformBands,   // Berger, Trout & Levit's equal layers, rendered by POV-Ray
     AdaptiveBands,  // layers fitted to the scene's rays, rendered by POV-Ray
+    IndexStepBands, // real air's layers at equal steps of the index, rendered by POV-Ray
     Polyline,       // the tracer along every ray's own path
     Scanline,       // the tracer along one path per image row (Khote & Howard)
 };
 
-/// "uniform-bands", "adaptive-bands", "polyline", "scanline": the `model` column.
+/// "uniform-bands", "adaptive-bands", "index-step-bands", "polyline", "scanline": the `model`
+/// column.
 std::string model_name(CompareModel model);
 
 /// POV-Ray's ceiling on max_trace_level: a design whose camera rays need more renders black
@@ -36,6 +39,8 @@ struct CompareOptions {
     std::vector<int> counts;  // uniform layer counts; empty: 8, 16, 32, ... doubling until
                               // a count exceeds the trace-level budget (at most 4096)
     std::vector<double> tolerances = {4, 2, 1, 0.5, 0.25, 0.1};        // adaptive layers, px
+    std::vector<int> steps;  // index steps (real air only); empty: 8, 16, ... 256 doubling
+                             // while a design stays within the trace-level budget
     std::vector<double> trace_tolerances = {4, 2, 1, 0.5, 0.25, 0.1};  // polylines, px
     bool scanline = false;    // also the per-scanline tracer at trace_tolerances
     double threshold = 0.05;  // a pixel is "over" when a channel differs by more (code / 255)
@@ -49,7 +54,7 @@ struct CompareOptions {
 /// One rendered setting of one model, measured against the reference.
 struct CompareRow {
     CompareModel model = CompareModel::Polyline;
-    double setting = 0.0;  // layer count (uniform) or tolerance in pixels
+    double setting = 0.0;  // layer count (uniform), index steps, or tolerance in pixels
     int layers = -1;       // boundaries of a band design; -1 for the tracer
     double seconds = 0.0;  // wall clock: the POV-Ray process, or the tracer call (parse, trace,
                            // PNG)

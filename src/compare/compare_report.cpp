@@ -12,10 +12,17 @@ namespace mirage {
 namespace {
 
 const CompareModel kModels[] = {CompareModel::UniformBands, CompareModel::AdaptiveBands,
-                                CompareModel::Polyline, CompareModel::Scanline};
+                                CompareModel::IndexStepBands, CompareModel::Polyline,
+                                CompareModel::Scanline};
 
 bool is_band(CompareModel m) {
-    return m == CompareModel::UniformBands || m == CompareModel::AdaptiveBands;
+    return m == CompareModel::UniformBands || m == CompareModel::AdaptiveBands ||
+           m == CompareModel::IndexStepBands;
+}
+
+// Settings that are counts (finer: larger), not tolerances (finer: smaller).
+bool counted(CompareModel m) {
+    return m == CompareModel::UniformBands || m == CompareModel::IndexStepBands;
 }
 
 std::string csv_number(double v, int digits) {
@@ -86,13 +93,13 @@ std::string povray_overhead(const std::vector<CompareRow>& rows) {
 }  // namespace
 
 std::string setting_text(const CompareRow& row) {
-    if (row.model == CompareModel::UniformBands)
-        return std::to_string(static_cast<int>(std::lround(row.setting)));
+    if (counted(row.model)) return std::to_string(static_cast<int>(std::lround(row.setting)));
     return shortest(row.setting);
 }
 
 std::string setting_label(const CompareRow& row) {
     if (row.model == CompareModel::UniformBands) return setting_text(row) + " layers";
+    if (row.model == CompareModel::IndexStepBands) return setting_text(row) + " steps";
     return setting_text(row) + " px";
 }
 
@@ -109,11 +116,14 @@ std::vector<TradeoffPoint> model_front(const std::vector<CompareRow>& rows, Comp
 Headlines compute_headlines(const std::vector<CompareRow>& rows, TimeBasis basis) {
     const auto uniform = model_front(rows, CompareModel::UniformBands, basis);
     const auto adaptive = model_front(rows, CompareModel::AdaptiveBands, basis);
+    const auto steps = model_front(rows, CompareModel::IndexStepBands, basis);
     const auto polyline = model_front(rows, CompareModel::Polyline, basis);
     Headlines h;
     h.adaptive_vs_uniform = compare_at_equal_error(uniform, adaptive);
     h.tracer_vs_adaptive = compare_at_equal_error(adaptive, polyline);
     h.tracer_vs_uniform = compare_at_equal_error(uniform, polyline);
+    h.steps_vs_uniform = compare_at_equal_error(uniform, steps);
+    h.tracer_vs_steps = compare_at_equal_error(steps, polyline);
     return h;
 }
 
@@ -125,8 +135,7 @@ std::vector<std::string> error_rises(const std::vector<CompareRow>& rows) {
         for (const auto& r : rows)
             if (r.model == m) ordered.push_back(&r);
         std::stable_sort(ordered.begin(), ordered.end(), [m](const auto* x, const auto* y) {
-            return m == CompareModel::UniformBands ? x->setting < y->setting
-                                                   : x->setting > y->setting;
+            return counted(m) ? x->setting < y->setting : x->setting > y->setting;
         });
         for (size_t i = 1; i < ordered.size(); ++i)
             if (ordered[i]->rmse > ordered[i - 1]->rmse)
@@ -199,12 +208,14 @@ std::string gnuplot_script(const CompareResult& result) {
     const std::map<CompareModel, std::pair<std::string, std::string>> style = {
         {CompareModel::UniformBands, {"#d62728", "7"}},   // red, filled circles
         {CompareModel::AdaptiveBands, {"#1f77b4", "5"}},  // blue, filled squares
+        {CompareModel::IndexStepBands, {"#ff7f0e", "13"}}, // orange, filled diamonds
         {CompareModel::Polyline, {"#2ca02c", "9"}},       // green, filled triangles
         {CompareModel::Scanline, {"#9467bd", "11"}},      // purple, filled triangles down
     };
     const std::map<CompareModel, std::string> titles = {
         {CompareModel::UniformBands, "uniform-bands (POV-Ray, N equal layers)"},
         {CompareModel::AdaptiveBands, "adaptive-bands (POV-Ray, tolerance px)"},
+        {CompareModel::IndexStepBands, "index-step-bands (POV-Ray, N equal index steps)"},
         {CompareModel::Polyline, "polyline (tracer, tolerance px)"},
         {CompareModel::Scanline, "scanline (tracer, per-row paths, px)"},
     };
@@ -295,6 +306,21 @@ std::string summary_markdown(const CompareResult& r) {
            << tracer_threads << " threads: " << describe_ratio(e, "the tracer is") << ".\n";
         render_line(hr.tracer_vs_adaptive, "the tracer");
     }
+    if (h.steps_vs_uniform) {
+        const EqualError& e = *h.steps_vs_uniform;
+        md << "- **Index steps against uniform layers:** at RMSE " << rmse_text(e.error)
+           << ", uniform layers take " << describe_time(e.a) << " and equal index steps "
+           << describe_time(e.b) << ": " << describe_ratio(e, "index steps are") << ".\n";
+        render_line(hr.steps_vs_uniform, "index steps");
+    }
+    if (h.tracer_vs_steps) {
+        const EqualError& e = *h.tracer_vs_steps;
+        md << "- **The tracer against POV-Ray with index steps:** at RMSE " << rmse_text(e.error)
+           << ", POV-Ray takes " << describe_time(e.a) << " on " << povray_threads
+           << " threads and the tracer " << describe_time(e.b) << " on " << tracer_threads
+           << " threads: " << describe_ratio(e, "the tracer is") << ".\n";
+        render_line(hr.tracer_vs_steps, "the tracer");
+    }
     if (h.tracer_vs_uniform) {
         const EqualError& e = *h.tracer_vs_uniform;
         md << "- **The tracer against POV-Ray with uniform layers:** at RMSE " << rmse_text(e.error)
@@ -343,7 +369,9 @@ std::string summary_markdown(const CompareResult& r) {
        << povray_overhead(r.rows)
        << "- The uniform counts double until a design's camera rays, with their reflections, "
           "need more than POV-Ray's "
-       << kPovrayMaxTraceLevel << " trace levels.\n";
+       << kPovrayMaxTraceLevel
+       << " trace levels; for real air the counts of index steps double the same way, up to "
+          "256, and stop where `mirage compile` has to use fewer.\n";
     md << "\n## Machine\n\n"
        << "- " << r.machine.cores << " cores (nproc), "
        << (r.machine.cpu.empty() ? "CPU unknown" : r.machine.cpu) << "; load average "

@@ -32,6 +32,8 @@ struct Headlines {
     std::optional<EqualError> adaptive_vs_uniform;  // a: uniform, b: adaptive
     std::optional<EqualError> tracer_vs_adaptive;   // a: adaptive, b: polyline
     std::optional<EqualError> tracer_vs_uniform;    // a: uniform, b: polyline
+    std::optional<EqualError> steps_vs_uniform;     // a: uniform, b: index steps
+    std::optional<EqualError> tracer_vs_steps;      // a: index steps, b: polyline
 };
 Headlines compute_headlines(const std::vector<CompareRow>& rows, TimeBasis basis = TimeBasis::Wall);
 

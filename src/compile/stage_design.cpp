@@ -329,6 +329,13 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
         d.left_out.push_back("every layer: the scene declares no atmosphere");
         return d;
     }
+    if (st.layers == LayerMode::IndexSteps)
+        return make_error(ctx.scene.file + ": index steps (layers at equal steps of the index) " +
+                          "are the design for real air and for cameras whose rays start at " +
+                          "many points, and this scene's atmosphere is the exponential profile " +
+                          st.profile_label +
+                          ": leave Mirage_Layers out for layers fitted to the camera's rays, or "
+                          "ask for uniform layers (--layers uniform --count N)");
     d.mode = st.layers == LayerMode::Uniform ? "uniform" : "adaptive";
     if (st.layers == LayerMode::Uniform) {
         if (st.layer_count < 1)

@@ -430,9 +430,11 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
             s.layers = LayerMode::Adaptive;
         } else if (*mode == "uniform") {
             s.layers = LayerMode::Uniform;
+        } else if (*mode == "index-steps") {
+            s.layers = LayerMode::IndexSteps;
         } else {
             return make_error(r.at("Mirage_Layers") + "Mirage_Layers \"" + *mode +
-                              "\": expected \"adaptive\" or \"uniform\"");
+                              "\": expected \"adaptive\", \"uniform\" or \"index-steps\"");
         }
     }
     MIRAGE_TRY(count, r.number("Mirage_Layer_Count"));

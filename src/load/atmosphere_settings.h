@@ -15,7 +15,11 @@ namespace mirage {
 class Atmosphere;  // atmosphere/exact_path.h
 struct AirSpec;    // atmosphere/general_profile.h
 
-enum class LayerMode { Adaptive, Uniform };
+// Adaptive: fitted to the camera's rays (the exponential profiles; for real air and cameras
+// whose rays start at many points, index steps unless asked for by name).  Uniform: Berger's
+// equal heights.  IndexSteps: boundaries at equal steps of the index (real air's design, and
+// that of many-origin cameras), asked for by name.
+enum class LayerMode { Adaptive, Uniform, IndexSteps };
 
 // The ranges of the settings (docs/robustness.md).  A tolerance below a thousandth of a pixel
 // is finer than anything a render shows and costs ever more samples per path; Berger's

@@ -43,6 +43,11 @@ TEST(CompareCli, BadValuesAreRefusedWithTheirName) {
     EXPECT_EQ(
         counts.err,
         "mirage compare: --counts 0: the layer count must be a whole number from 1 to 4096\n");
+    auto steps = run_tool("compare " + kDesert + out + " --steps 64,5000");
+    EXPECT_EQ(steps.exit_code, 1);
+    EXPECT_EQ(
+        steps.err,
+        "mirage compare: --steps 5000: the layer count must be a whole number from 1 to 4096\n");
     auto tol = run_tool("compare " + kDesert + out + " --trace-tolerances 1,-2");
     EXPECT_EQ(tol.exit_code, 1);
     EXPECT_EQ(

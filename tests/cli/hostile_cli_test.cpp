@@ -230,6 +230,16 @@ TEST(HostileCli, ValuesThatWouldHangAreRefusedAtOnce) {
     EXPECT_EQ(r.err,
               "mirage compile: --count 1e+09: the layer count must be a whole number from 1 to "
               "4096\n");
+    // Index steps are real air's design: asked for on the desert's exponential profile, refused
+    // with what to do, nothing written.
+    r = run_tool("compile " + kDesert + " -o " + quoted(dir / "steps") +
+                 " --layers index-steps --count 16");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("desert.pov: index steps (layers at equal steps of the index) are the "
+                         "design for real air"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "steps"));
     const auto count = desert_with(dir, "count.pov", "#declare Mirage_Tolerance = 0.5;",
                                    "#declare Mirage_Layer_Count = 1e9;");
     r = run_tool("compile " + quoted(count) + " -o " + quoted(dir / "c"));

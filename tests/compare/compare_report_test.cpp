@@ -17,8 +17,8 @@ CompareRow row(CompareModel model, double setting, double seconds, double rmse) 
     r.rmse = rmse;
     r.psnr_db = -20.0 * std::log10(rmse);
     r.threads = 2;
-    if (model == CompareModel::UniformBands || model == CompareModel::AdaptiveBands) {
-        r.layers = model == CompareModel::UniformBands ? static_cast<int>(setting) : 40;
+    if (model != CompareModel::Polyline && model != CompareModel::Scanline) {
+        r.layers = model == CompareModel::AdaptiveBands ? 40 : static_cast<int>(setting);
         r.compile_seconds = 0.1;
         r.max_error_px = 12.5;
         r.p95_error_px = 2.0;
@@ -112,6 +112,58 @@ TEST(Summary, LeadsWithTheTableAndTheFiguresAtEqualError) {
         << md;
     EXPECT_NE(md.find("polyline: RMSE 0.006 at 0.1 px against 0.005 at 0.5 px"), std::string::npos);
     EXPECT_NE(md.find("```\nmirage compare scenes/desert.pov\n```"), std::string::npos);
+}
+
+// Real air's index steps: a counted setting ("64 steps", finer with more), a band model in the
+// CSV, its own curve, and its figures at equal error in the summary.
+CompareResult real_air_result() {
+    CompareResult r = result();
+    r.scene = "scenes/hot_road.pov";
+    r.name = "hot_road";
+    r.rows = {row(CompareModel::UniformBands, 8, 1.0, 0.16),
+              row(CompareModel::UniformBands, 64, 1.2, 0.07),
+              row(CompareModel::IndexStepBands, 8, 1.0, 0.08),
+              row(CompareModel::IndexStepBands, 16, 1.05, 0.09),
+              row(CompareModel::IndexStepBands, 64, 1.1, 0.04),
+              row(CompareModel::Polyline, 1, 0.01, 0.02)};
+    r.command = "mirage compare scenes/hot_road.pov";
+    return r;
+}
+
+TEST(IndexSteps, ACountedBandModelWithItsOwnCurveAndFiguresAtEqualError) {
+    const CompareResult r = real_air_result();
+    EXPECT_EQ(setting_label(r.rows[4]), "64 steps");
+    const std::string csv = results_csv(r);
+    EXPECT_NE(csv.find("\nindex-step-bands,64,64,1.1,0.55,0,2,0.1,0.04,27.959,0,12.5,2,3,100,,"
+                       "renders/index-step-bands-64.png\n"),
+              std::string::npos)
+        << csv;
+    // 16 steps worse than 8: a finer setting that got worse, in the count's order.
+    const auto rises = error_rises(r.rows);
+    ASSERT_EQ(rises.size(), 1u);
+    EXPECT_EQ(rises[0], "index-step-bands: RMSE 0.09 at 16 steps against 0.08 at 8 steps");
+    const Headlines h = compute_headlines(r.rows);
+    ASSERT_TRUE(h.steps_vs_uniform);
+    // Uniform layers reach 0.07 at best (1.2 s); index steps between 16 and 64 steps.
+    EXPECT_DOUBLE_EQ(h.steps_vs_uniform->error, 0.07);
+    EXPECT_DOUBLE_EQ(h.steps_vs_uniform->a.seconds, 1.2);
+    EXPECT_GT(h.steps_vs_uniform->b.seconds, 1.0);
+    EXPECT_LT(h.steps_vs_uniform->b.seconds, 1.1);
+    ASSERT_TRUE(h.tracer_vs_steps);
+    EXPECT_DOUBLE_EQ(h.tracer_vs_steps->error, 0.04);
+    const std::string gp = gnuplot_script(r);
+    EXPECT_NE(gp.find("$index_step_bands << EOD"), std::string::npos) << gp;
+    EXPECT_NE(gp.find("title \"index-step-bands"), std::string::npos) << gp;
+    const std::string md = summary_markdown(r);
+    EXPECT_NE(md.find("| index-step-bands | 64 steps | 64 | 1.1 | 0.04 |"), std::string::npos)
+        << md;
+    EXPECT_NE(md.find("**Index steps against uniform layers:** at RMSE 0.07, uniform layers take "
+                      "1.2 s (at 64 layers) and equal index steps "),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("**The tracer against POV-Ray with index steps:** at RMSE 0.04"),
+              std::string::npos)
+        << md;
 }
 
 }  // namespace

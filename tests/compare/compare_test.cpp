@@ -30,6 +30,7 @@ CompareOptions small_sweep(const fs::path& dir) {
     o.counts = {64, 8, 256};  // run from coarse to fine; 256 exceeds POV-Ray's budget
     o.tolerances = {1};
     o.trace_tolerances = {0.5, 4};
+    o.steps = {16};  // real air's design: not run for the desert's exponential profile
     return o;
 }
 
@@ -63,6 +64,11 @@ TEST(Compare, SweepsTheDesertAndWritesEveryOutput) {
     EXPECT_NE(r->notes[0].find("uniform-bands: stopped at 256 layers"), std::string::npos)
         << r->notes[0];
     EXPECT_FALSE(fs::exists(dir / "renders" / "uniform-bands-256.png"));
+    ASSERT_GE(r->notes.size(), 2u);
+    EXPECT_NE(r->notes[1].find("index-step-bands: not run: index steps are the design for real "
+                               "air, and this scene's atmosphere is paper"),
+              std::string::npos)
+        << r->notes[1];
 
     // More layers, or a finer tracer tolerance, does not make the picture worse.  Eight equal
     // layers slice the spheres' mirage (RMSE 0.084 here); 64 halve the error.
@@ -119,10 +125,59 @@ TEST(Compare, SweepsTheDesertAndWritesEveryOutput) {
     // Every file went through a temporary name: none is left.
     for (const auto& e : fs::recursive_directory_iterator(dir))
         EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
-    // One progress line per setting, and for the reference and the straight rays.
-    EXPECT_EQ(progress.size(), 1u + 1u + 5u + 1u) << ::testing::PrintToString(progress);
+    // One progress line per setting, for the reference and the straight rays, and per note.
+    EXPECT_EQ(progress.size(), 1u + 1u + 5u + 2u) << ::testing::PrintToString(progress);
     EXPECT_EQ(progress[2].rfind("uniform 8 layers: POV-Ray ", 0), 0u) << progress[2];
-    EXPECT_EQ(progress[5].rfind("adaptive 1 px: ", 0), 0u) << progress[5];
+    EXPECT_EQ(progress[5].rfind("index-step-bands: not run", 0), 0u) << progress[5];
+    EXPECT_EQ(progress[6].rfind("adaptive 1 px: ", 0), 0u) << progress[6];
+}
+
+// Real air's own design in the sweep: equal index steps rendered by POV-Ray beside the uniform
+// layers and the tracer.  The hot road's mirage needs the fine steps near the hot asphalt:
+// eight index steps beat eight equal layers, and 64 steps beat eight.
+TEST(Compare, RealAirSweepsItsIndexSteps) {
+    if (!testing::povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    const fs::path dir = testing::test_dir("compare", "real_air");
+    const fs::path scenes = fs::path(MIRAGE_SOURCE_DIR) / "scenes";
+    CompareOptions o;
+    o.scene = (scenes / "hot_road.pov").string();
+    o.width = 64;
+    o.height = 48;
+    o.out_dir = dir.string();
+    o.reference_tolerance_px = 0.1;
+    o.counts = {8};
+    o.steps = {64, 8};
+    o.tolerances = {};
+    o.trace_tolerances = {1};
+    auto r = run_comparison(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    ASSERT_EQ(r->rows.size(), 4u);
+    const CompareRow& uniform8 = r->rows[0];
+    const CompareRow& steps8 = r->rows[1];
+    const CompareRow& steps64 = r->rows[2];
+    EXPECT_EQ(uniform8.model, CompareModel::UniformBands);
+    EXPECT_EQ(steps8.model, CompareModel::IndexStepBands);
+    EXPECT_EQ(steps8.setting, 8);
+    EXPECT_EQ(steps64.model, CompareModel::IndexStepBands);
+    EXPECT_EQ(steps64.setting, 64);
+    EXPECT_EQ(r->rows[3].model, CompareModel::Polyline);
+    std::printf("hot road 64x48: uniform 8 RMSE %.4f, index steps 8 / 64: %.4f / %.4f (%d / %d "
+                "layers), tracer 1 px %.4f\n",
+                uniform8.rmse, steps8.rmse, steps64.rmse, steps8.layers, steps64.layers,
+                r->rows[3].rmse);
+    EXPECT_GT(steps8.layers, 1);
+    EXPECT_GT(steps64.layers, 4 * steps8.layers);
+    EXPECT_LE(steps64.max_trace_level, kPovrayMaxTraceLevel);
+    EXPECT_LT(steps8.rmse, 0.75 * uniform8.rmse);
+    EXPECT_LT(steps64.rmse, 0.9 * steps8.rmse);
+    EXPECT_TRUE(fs::exists(dir / "renders" / "index-step-bands-64.png"));
+    auto csv = read_csv_file(r->csv_path);
+    ASSERT_TRUE(csv.ok()) << csv.message();
+    EXPECT_EQ(csv->rows[2].fields[csv->column("model")], "index-step-bands");
+    auto summary = read_file(r->summary_path);
+    ASSERT_TRUE(summary.ok());
+    EXPECT_NE(summary->find("**Index steps against uniform layers:**"), std::string::npos);
+    EXPECT_NE(summary->find("--steps 64,8"), std::string::npos);
 }
 
 TEST(Compare, TheReferenceMustBeFinerThanEverySetting) {

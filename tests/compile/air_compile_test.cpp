@@ -13,6 +13,7 @@
 #include "../atmosphere/air_fixtures.h"
 #include "compile/compile.h"
 #include "layers/air_bands.h"
+#include "util/atomic_file.h"
 #include "test_temp.h"
 
 namespace mirage {
@@ -425,6 +426,33 @@ TEST(AirCompile, TheFitToTheCameraRaysIsRefusedForRealAir) {
     EXPECT_NE(r.message().find("adaptive layers"), std::string::npos) << r.message();
     EXPECT_NE(r.message().find("real air (sounding"), std::string::npos) << r.message();
     EXPECT_FALSE(fs::exists(o.out_dir + "/mirage_layers.inc"));
+}
+
+// Index steps asked for by name (Mirage_Layers "index-steps", --layers index-steps) are the
+// design real air gets by default: the same layers, byte for byte.
+TEST(AirCompile, IndexStepsAskedForByNameAreTheDefaultDesign) {
+    CompileOptions by_default = hot_road("steps_default");
+    by_default.layer_count = 16;
+    CompileOptions named = hot_road("steps_named");
+    named.layer_count = 16;
+    named.layers = LayerMode::IndexSteps;
+    auto a = compile_scene(by_default);
+    auto b = compile_scene(named);
+    ASSERT_TRUE(a.ok()) << a.message();
+    ASSERT_TRUE(b.ok()) << b.message();
+    EXPECT_EQ(b->mode, "index steps");
+    EXPECT_EQ(a->layers, b->layers);
+    EXPECT_EQ(a->p95_error_px, b->p95_error_px);
+    auto ta = read_file(a->csv_path), tb = read_file(b->csv_path);
+    ASSERT_TRUE(ta.ok() && tb.ok());
+    EXPECT_EQ(*ta, *tb);
+    // Fewer steps, fewer layers: the count is the one asked for.
+    CompileOptions fewer = hot_road("steps_fewer");
+    fewer.layer_count = 4;
+    fewer.layers = LayerMode::IndexSteps;
+    auto c = compile_scene(fewer);
+    ASSERT_TRUE(c.ok()) << c.message();
+    EXPECT_LT(c->layers, b->layers);
 }
 
 }  // namespace

@@ -242,5 +242,20 @@ TEST(CompileCli, JsonReportHasTheRequiredKeys) {
     EXPECT_NE(run.err.find("missing.pov"), std::string::npos) << run.err;
 }
 
+TEST(Compile, IndexStepsAreRefusedForTheExponentialProfileWithWhatToDo) {
+    const std::string dir = temp_dir("index_steps");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    CompileOptions o = options(scene, dir, 64, 48);
+    o.layers = LayerMode::IndexSteps;
+    o.layer_count = 32;
+    auto r = compile_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.message().find("small.pov: index steps"), std::string::npos) << r.message();
+    EXPECT_NE(r.message().find("exponential profile"), std::string::npos) << r.message();
+    EXPECT_NE(r.message().find("--layers uniform"), std::string::npos) << r.message();
+    EXPECT_FALSE(fs::exists(dir + "/out"));
+    EXPECT_EQ(*read_file(scene), kDesert);
+}
+
 }  // namespace
 }  // namespace mirage

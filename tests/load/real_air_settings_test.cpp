@@ -189,5 +189,20 @@ TEST_F(RealAirSettings, ABadSoundingIsRefusedWithItsFileLineAndColumn) {
                   "from files");
 }
 
+TEST_F(RealAirSettings, IndexStepsAreAskedForByNameAndAMisspellingListsTheDesigns) {
+    std::ofstream(dir_ / "air" / "road.csv") << "height_m,temperature_c\n0,45\n0.5,31\n10,28.5\n";
+    auto r = load("#declare Mirage_Sounding = \"air/road.csv\";\n"
+             "#declare Mirage_Layers = \"index-steps\";\n#declare Mirage_Layer_Count = 32;");
+    ASSERT_TRUE(r.ok()) << r.message();
+    EXPECT_EQ(r->settings.layers, LayerMode::IndexSteps);
+    EXPECT_EQ(r->settings.layer_count, 32);
+    const std::string e = error("#declare Mirage_Layers = \"index_steps\";");
+    EXPECT_NE(e.find("s.pov:1:"), std::string::npos) << e;
+    EXPECT_NE(e.find("Mirage_Layers \"index_steps\": expected \"adaptive\", \"uniform\" or "
+                     "\"index-steps\""),
+              std::string::npos)
+        << e;
+}
+
 }  // namespace
 }  // namespace mirage
