@@ -621,6 +621,14 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
                 "scene's atmosphere is " + r.atmosphere);
     }
 
+    // The fit to the camera's rays needs the exponential profiles' closed forms: for real air
+    // one note, not one refusal per tolerance.
+    if (loaded->settings.air && !opt.tolerances.empty()) {
+        sw.note("adaptive-bands: not run: the fit to the camera's rays needs the exponential "
+                "profiles' closed forms, and this scene's atmosphere is real air; its own "
+                "design is index-step-bands");
+        opt.tolerances.clear();
+    }
     for (double tol : opt.tolerances) {
         CompileReport over;
         auto outcome = run_band(sw, CompareModel::AdaptiveBands, tol, &over);
