@@ -254,6 +254,17 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Whether nothing the path can meet lies anywhere beyond the distance dz.
+bool nothing_beyond_dz(const PathObstacles& obstacles, double dz) {
+    PathRegion beyond;
+    beyond.dz_lo = dz;
+    beyond.dz_hi = kInf;
+    beyond.lower = {PathLine{dz, -kInf, 0.0}, PathLine{dz, -kInf, 0.0}};
+    beyond.upper = {PathLine{dz, kInf, 0.0}, PathLine{dz, kInf, 0.0}};
+    beyond.lower_count = beyond.upper_count = 1;
+    return !obstacles.may_meet(beyond);
+}
+
 class ExactNearSampler {
   public:
     ExactNearSampler(const ExactPath& path, const SampleSettings& st,
@@ -289,16 +300,7 @@ class ExactNearSampler {
         return chord_within(m, a.dz, b_dz, allowed_error(path_, st_, a.dz, a.y), st_);
     }
 
-    // Whether nothing the path can meet lies anywhere beyond the distance dz.
-    bool nothing_beyond(double dz) const {
-        PathRegion beyond;
-        beyond.dz_lo = dz;
-        beyond.dz_hi = kInf;
-        beyond.lower = {PathLine{dz, -kInf, 0.0}, PathLine{dz, -kInf, 0.0}};
-        beyond.upper = {PathLine{dz, kInf, 0.0}, PathLine{dz, kInf, 0.0}};
-        beyond.lower_count = beyond.upper_count = 1;
-        return !obstacles_->may_meet(beyond);
-    }
+    bool nothing_beyond(double dz) const { return nothing_beyond_dz(*obstacles_, dz); }
 
     // Whether nothing the path can meet lies near the stretch from a to b (within one monotone
     // run, so between the heights of its ends, and within m w^2 / 8 of its chord); then its
@@ -426,13 +428,7 @@ bool wedge_is_clear(const ExactPath& path, const SampleSettings& st,
     }
     if (obstacles.may_meet(wedge)) return false;
     if (escapes) return true;
-    PathRegion beyond;
-    beyond.dz_lo = end;
-    beyond.dz_hi = kInf;
-    beyond.lower = {PathLine{end, -kInf, 0.0}, PathLine{end, -kInf, 0.0}};
-    beyond.upper = {PathLine{end, kInf, 0.0}, PathLine{end, kInf, 0.0}};
-    beyond.lower_count = beyond.upper_count = 1;
-    return !obstacles.may_meet(beyond);
+    return nothing_beyond_dz(obstacles, end);
 }
 
 }  // namespace

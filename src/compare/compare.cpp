@@ -169,6 +169,16 @@ Result<CompiledRender> render_compiled(Sweep& sw, const std::string& ini, const 
     return r;
 }
 
+/// "uniform-bands: stopped at 256 layers: a camera ray ... (not rendered)": where a sweep of
+/// counts ends at POV-Ray's trace-level ceiling.
+std::string over_budget_note(const std::string& model, int n, const std::string& unit,
+                             const CompileReport& over) {
+    return model + ": stopped at " + std::to_string(n) + " " + unit +
+           ": a camera ray with its reflections needs trace level " +
+           std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
+           std::to_string(kPovrayMaxTraceLevel) + " (not rendered)";
+}
+
 /// Compiles one band design, renders it with POV-Ray and measures it.  A fatal error (POV-Ray
 /// cannot be started, the scene would be overwritten) is an error; a design that cannot be
 /// compiled or rendered is a note.
@@ -580,10 +590,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         auto outcome = run_band(sw, CompareModel::UniformBands, n, &over);
         if (!outcome) return outcome.error();
         if (*outcome == BandOutcome::OverBudget) {
-            sw.note("uniform-bands: stopped at " + std::to_string(n) +
-                    " layers: a camera ray with its reflections needs trace level " +
-                    std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
-                    std::to_string(kPovrayMaxTraceLevel) + " (not rendered)");
+            sw.note(over_budget_note("uniform-bands", n, "layers", over));
             stopped = true;
             break;
         }
@@ -604,10 +611,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
             auto outcome = run_band(sw, CompareModel::IndexStepBands, n, &over);
             if (!outcome) return outcome.error();
             if (*outcome == BandOutcome::OverBudget) {
-                sw.note("index-step-bands: stopped at " + std::to_string(n) +
-                        " steps: a camera ray with its reflections needs trace level " +
-                        std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
-                        std::to_string(kPovrayMaxTraceLevel) + " (not rendered)");
+                sw.note(over_budget_note("index-step-bands", n, "steps", over));
                 break;
             }
             if (opt.steps.empty() && *outcome == BandOutcome::Rendered && sw.redesigned) {
