@@ -809,32 +809,32 @@ double QuadraticPath::asymptote_departure(double dz) const {
     const double y = height_at(dz);
     if (y >= p.top()) return 0.0;
     // |1 - s_inf / s| = |1 - sqrt(Q_top / Q)| over Q = e - level on [y, top].
-    const double level = e0_ - Q0_;
-    double lo, hi;
-    p.excess_range(y, p.top(), lo, hi);
-    const double q_top = p.e(p.piece_count()) - level;
-    double q_lo = lo - level, q_hi = hi - level;
+    const double q_top = p.e(p.piece_count()) - (e0_ - Q0_);
+    double q_lo, q_hi;
+    q_range(y, p.top(), q_lo, q_hi);
     if (!(q_lo > 0.0)) return kInf;
-    if (p.has_spans()) {  // where the ray crosses spans instead of pieces
-        q_lo *= 1.0 - QuadraticProfile::kSpanShareOfQ;
-        q_hi *= 1.0 + QuadraticProfile::kSpanShareOfQ;
-    }
     const double worst = std::max(std::fabs(1.0 - std::sqrt(q_top / q_lo)),
                                   std::fabs(1.0 - std::sqrt(q_top / q_hi)));
     return (p.top() - y) * worst;
 }
 
-void QuadraticPath::abs_slope_bounds(double ya, double yb, double& lo, double& hi) const {
-    // |dy/dz| = sqrt(n^2 - beta^2) / beta, with n^2 - beta^2 = e - level (as
-    // asymptote_departure).
+void QuadraticPath::q_range(double ya, double yb, double& q_lo, double& q_hi) const {
+    // n^2 - beta^2 = e - level, e = n^2 - n0^2.
     const double level = e0_ - Q0_;
     double e_lo, e_hi;
     profile_->excess_range(ya, yb, e_lo, e_hi);
-    double q_lo = e_lo - level, q_hi = e_hi - level;
-    if (profile_->has_spans()) {
+    q_lo = e_lo - level;
+    q_hi = e_hi - level;
+    if (profile_->has_spans()) {  // where the ray crosses spans instead of pieces
         q_lo *= 1.0 - QuadraticProfile::kSpanShareOfQ;
         q_hi *= 1.0 + QuadraticProfile::kSpanShareOfQ;
     }
+}
+
+void QuadraticPath::abs_slope_bounds(double ya, double yb, double& lo, double& hi) const {
+    // |dy/dz| = sqrt(n^2 - beta^2) / beta.
+    double q_lo, q_hi;
+    q_range(ya, yb, q_lo, q_hi);
     lo = std::sqrt(std::max(0.0, q_lo)) * inv_beta_;
     hi = std::sqrt(std::max(0.0, q_hi)) * inv_beta_;
 }

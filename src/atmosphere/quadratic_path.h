@@ -180,6 +180,9 @@ class QuadraticPath {
     void ensure_time(double t) const;
     void ensure_t1() const;
     double run_time(double dz, int& sign) const;
+    /// The range of n^2 - beta^2 over the heights [ya, yb], widened where the ray may cross
+    /// spans (QuadraticProfile::kSpanShareOfQ).
+    void q_range(double ya, double yb, double& q_lo, double& q_hi) const;
 };
 
 /// Height and slope of a sweep at distance t from its origin (0 <= t <= length; beyond, the
