@@ -4,6 +4,8 @@
 #include <map>
 #include <tuple>
 
+#include "atmosphere/exact_path.h"
+#include "atmosphere/general_profile.h"
 #include "atmosphere/vanishing.h"
 #include "load/atmosphere_settings.h"
 #include "scene/camera.h"
@@ -72,29 +74,42 @@ Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int widt
     if (marked->empty()) return out;
     auto settings = read_atmosphere_settings(scene);
     if (!settings) return settings.error();
-    const Profile profile = profile_in_scene_units(*settings);
     const double unit = settings->unit_m;
+    const double pixel_rad = pixel_angle_rad(scene.camera, width, height);
+    // The scene's atmosphere as the tracer has it: the closed forms, or real air's fitted model
+    // (fitted for the scene's own path tolerance), in scene units.
+    auto atmosphere = scene_atmosphere(*settings, settings->tolerance_px * pixel_rad);
+    if (!atmosphere) return atmosphere.error();
+    const double R = atmosphere->earth_radius();
+    // What the distances depend on besides the heights: the profile's parameters, or every
+    // knot and value of the fitted model (the air may change from frame to frame).
+    std::vector<double> air_key;
+    if (const Profile* p = atmosphere->exponential_profile()) {
+        air_key = {p->eta0, p->eta1, p->alpha, static_cast<double>(p->kind)};
+    } else {
+        const QuadraticProfile& q = *atmosphere->quadratic_profile();
+        air_key = {q.n0_sq(), R};
+        for (int j = 0; j <= q.piece_count(); ++j) {
+            air_key.push_back(q.knot(j));
+            air_key.push_back(q.e(j));
+        }
+    }
     // Heights above the atmosphere's ground (Mirage_Ground_Height): the scene as parsed is not
-    // lowered here, so the eye and the spheres are.
+    // lowered here, so the eye and the spheres are.  On the curved Earth the heights are the
+    // flattened frame's and the distances along the sphere, as the tracer reads the scene.
     const double ground = settings->declared ? settings->ground_height : 0.0;
     glm::dvec3 eye = scene.camera.location;
-    eye.y -= ground;
-    const double pixel_rad = pixel_angle_rad(scene.camera, width, height);
+    eye.y = flattened_height(eye.y - ground, R);
     for (MarkedSphere m : *marked) {
-        m.centre.y -= ground;
+        m.centre.y = flattened_height(m.centre.y - ground, R);
         const std::string at = to_string(m.loc) + ": " + m.name + ": ";
-        const std::vector<double> key = {eye.y,
-                                         m.centre.y,
-                                         m.radius,
-                                         profile.eta0,
-                                         profile.eta1,
-                                         profile.alpha,
-                                         static_cast<double>(profile.kind)};
+        std::vector<double> key = {eye.y, m.centre.y, m.radius};
+        key.insert(key.end(), air_key.begin(), air_key.end());
         Result<double> vanish = make_error("");
         if (cache && cache->count(key)) {
             vanish = cache->at(key);
         } else {
-            vanish = sphere_vanishing_distance(profile, eye.y, m.centre.y, m.radius);
+            vanish = sphere_vanishing_distance(*atmosphere, eye.y, m.centre.y, m.radius);
             if (!vanish) return make_error(at + vanish.message());
             if (cache) (*cache)[key] = *vanish;
         }
@@ -104,7 +119,7 @@ Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int widt
         v.eye_distance = d * unit;
         v.vanishing_distance = *vanish * unit;
         const SphereMirror image =
-            mirrored_image_of_sphere(profile, eye.y, d, m.centre.y, m.radius);
+            mirrored_image_of_sphere(*atmosphere, eye.y, d, m.centre.y, m.radius);
         v.mirrored = image.visible;
         v.angular_size_deg = image.angular_size_rad * kDeg;
         v.angular_size_px = pixel_rad > 0.0 ? image.angular_size_rad / pixel_rad : 0.0;

@@ -146,6 +146,11 @@ double ExactPath::height_at(double dz) const {
     return quadratic()->height_at(dz);
 }
 
+double ExactPath::distance_to_height(double y) const {
+    if (auto r = exponential()) return mirage::distance_to_height(*r, y);
+    return quadratic()->distance_to_height(y);
+}
+
 double ExactPath::slope_at(double dz) const {
     if (auto r = exponential()) return mirage::slope_at(*r, dz);
     return quadratic()->slope_at(dz);

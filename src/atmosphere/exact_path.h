@@ -60,6 +60,9 @@ class ExactPath {
 
     double height_at(double dz) const;
     double slope_at(double dz) const;
+    /// The first horizontal distance at which the path reaches height y while still moving
+    /// towards it from y0 (before any turning point), or +inf if it never does.
+    double distance_to_height(double y) const;
     /// The largest |y''| of this path at any height in [ya, yb] (either order).
     double curvature_bound(double ya, double yb) const;
 

@@ -746,6 +746,66 @@ double QuadraticPath::slope_at(double dz) const {
     return sign * segment_slope(segment_for(t), t);
 }
 
+// Run distance at which segment g (of a run in direction dir) is at height y, between its
+// ends: from its anchor by the closed forms, the slope at y from the segment's own quadratic
+// (s^2 = s_a^2 + 2 a_a dy + kappa dy^2, which a coarse span's segment keeps as well).
+double segment_time_at_height(const QuadraticSegment& g, double y, int dir) {
+    const double dy = y - g.ya;
+    if (dy == 0.0) return g.ta;
+    if (g.sa == 0.0) {
+        // Anchored at a turning point: the run's origin (a lowest point or an apex) or its end.
+        const double tv = vertex_time(dy, g.aa, g.kappa, g.lambda);
+        return g.ta == g.t0 ? g.ta + tv : g.ta - tv;
+    }
+    if (g.kappa == 0.0 && g.aa == 0.0) return g.ta + dy / g.sa;  // straight (above the top)
+    const double s_y =
+        dir * std::sqrt(std::max(0.0, g.sa * g.sa + (2.0 * g.aa + g.kappa * dy) * dy));
+    return g.ta + crossing_time(dy, g.sa, s_y, g.aa, g.kappa, g.lambda);
+}
+
+double QuadraticPath::distance_to_height(double y) const {
+    if (y == y0_) return 0.0;
+    const int towards = y > y0_ ? 1 : -1;
+    if (fate_ == PathFate::Level) return kInf;
+    if (fate_ == PathFate::Straight) {
+        if (towards != sg_ || (towards < 0 && y < 0.0)) return kInf;
+        return (y - y0_) / slope0_;
+    }
+    const Sweep& s = sweep_;
+    if (towards != sg_) return kInf;
+    if (vertex_ahead_) {
+        // Before the first turning point the ray runs from y0 to the sweep's origin, the
+        // vertex: back along the sweep's first stretch, from its distance t1 at y0.
+        if (towards * (y - s.y_start) > 0.0) return kInf;
+        ensure_t1();
+        if (y == s.y_start) return t1_;
+        const auto& segs = s.segments;
+        // The sweep leaves the vertex in direction s.dir = -sg_: its heights fall back
+        // towards y0, monotone in run distance.
+        for (const QuadraticSegment& g : segs) {
+            if (g.t0 > t1_) break;
+            if (s.dir * (g.y1 - y) >= 0.0) {
+                const double t = segment_time_at_height(g, y, s.dir);
+                return t1_ - std::clamp(t, g.t0, g.t1);
+            }
+        }
+        return kInf;
+    }
+    // No turning point ahead: one run from the start to the ground or the top.
+    complete();
+    if (s.dir * (y - s.y_end) > 0.0) {
+        if (s.end != SweepEnd::Top || !(s.end_slope != 0.0)) return kInf;
+        return s.length + (y - s.y_end) / s.end_slope;  // straight beyond the top
+    }
+    const auto& segs = s.segments;
+    auto it = std::lower_bound(segs.begin(), segs.end(), y, [&](const QuadraticSegment& g,
+                                                                 double v) {
+        return s.dir * (g.y1 - v) < 0.0;
+    });
+    if (it == segs.end()) return kInf;
+    return std::clamp(segment_time_at_height(*it, y, s.dir), it->t0, it->t1);
+}
+
 double QuadraticPath::curvature_at_height(double y) const {
     return 0.5 * profile_->slope(y) * inv_beta_sq_;
 }

@@ -89,6 +89,10 @@ class QuadraticPath {
     double height_at(double dz) const;
     /// Slope dy/dz at dz.
     double slope_at(double dz) const;
+    /// The first horizontal distance at which the path reaches height y while still moving
+    /// towards it from y0 (before any turning point), or +inf if it never does: the closed
+    /// form of the piece holding y, after the crossings of the pieces before it.
+    double distance_to_height(double y) const;
     /// y'' anywhere on a path of this invariant at height y.
     double curvature_at_height(double y) const;
     /// The largest |y''| at any height in [ya, yb].

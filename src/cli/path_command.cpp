@@ -1,6 +1,7 @@
 // `mirage path`: one exact ray (class, invariant, turning point, ground hit, samples), a ray
 // diagram as SVG, or a batch of rays from a CSV.
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <iostream>
 #include <limits>
@@ -179,64 +180,6 @@ void write_svg(const PathOptions& o, const Atmosphere& atm, const std::string& l
     OutputSet outputs(input_files(o));
     if (auto s = outputs.write_text(o.svg, *svg); !s) fail(s.message());
     if (auto s = outputs.commit(); !s) fail(s.message());
-}
-
-// `--object-height H [--object-distance D]`: from which eye distances the point has a mirrored
-// image (atmosphere/vanishing.h), and whether it has one from D.
-void run_vanishing(const PathOptions& o) {
-    std::string label;
-    const Profile profile = resolve_profile(o, label);
-    if (std::isnan(o.eye_height)) fail("give the eye height with --eye-height M");
-    if (std::isnan(o.object_height)) fail("give the point's height with --object-height M");
-    if (!std::isnan(o.elevation_deg) || !std::isnan(o.i_rad))
-        fail(
-            "--object-height asks for the rays that reach the point: give no --elevation-deg or "
-            "--i-rad");
-    if (!std::isnan(o.object_distance) &&
-        !(o.object_distance > 0.0 && std::isfinite(o.object_distance)))
-        fail("--object-distance " + g(o.object_distance) + ": must be a distance > 0 m");
-    auto reach = mirror_reach(profile, o.eye_height, o.object_height);
-    if (!reach) fail(reach.message());
-    const double elev_deg = reach->nearest_elevation_rad * 180.0 / M_PI;
-    const bool has_d = !std::isnan(o.object_distance);
-    const bool seen =
-        has_d && o.object_distance >= reach->nearest && o.object_distance <= reach->farthest;
-    if (o.json) {
-        nlohmann::json j;
-        j["profile"] = {{"kind", profile_kind_name(profile.kind)},
-                        {"eta0", profile.eta0},
-                        {"eta1", profile.eta1},
-                        {"alpha", profile.alpha}};
-        j["eye_height"] = o.eye_height;
-        j["object_height"] = o.object_height;
-        j["nearest_eye_distance"] = reach->nearest;
-        j["farthest_eye_distance"] = reach->farthest;
-        j["nearest_turn_height"] = reach->nearest_turn_height;
-        j["nearest_elevation_deg"] = elev_deg;
-        j["grazing"] = reach->grazing;
-        if (has_d) {
-            j["object_distance"] = o.object_distance;
-            j["mirrored"] = seen;
-        }
-        std::cout << j.dump(2) << "\n";
-        return;
-    }
-    std::cout << "profile     " << label << ": eta0 = " << shortest(profile.eta0)
-              << ", eta1 = " << shortest(profile.eta1) << ", alpha = " << shortest(profile.alpha)
-              << " /m\n";
-    std::cout << "eye         y0 = " << g(o.eye_height) << " m\n";
-    std::cout << "point       y = " << g(o.object_height) << " m\n";
-    std::cout << "vanishing   nearest eye distance with a mirrored image " << g(reach->nearest)
-              << " m (the ray turning at y = " << g(reach->nearest_turn_height) << " m"
-              << (reach->grazing ? ", grazing the ground" : "") << ", elevation " << g(elev_deg)
-              << " deg)\n";
-    std::cout << "            farthest " << g(reach->farthest) << " m\n";
-    if (has_d)
-        std::cout
-            << "at " << g(o.object_distance) << " m    "
-            << (seen ? "mirrored: rays from the eye reach the point after turning"
-                     : "no mirrored image: no ray from the eye reaches the point after turning")
-            << "\n";
 }
 
 // The eye, the ray's direction, the sampling tolerance and the distance of a single ray, in
@@ -564,6 +507,85 @@ void run_transfer(const PathOptions& o, const AirChoice& c) {
     }
 }
 
+// `--object-height H [--object-distance D]`: from which eye distances the point has a mirrored
+// image (atmosphere/vanishing.h), and whether it has one from D: in the exponential profiles'
+// closed forms, or in any atmosphere through the general engine (heights above the sphere and
+// distances along it on the curved Earth).
+void run_vanishing(const PathOptions& o) {
+    if (std::isnan(o.eye_height)) fail("give the eye height with --eye-height M");
+    if (std::isnan(o.object_height)) fail("give the point's height with --object-height M");
+    if (!std::isnan(o.elevation_deg) || !std::isnan(o.i_rad))
+        fail(
+            "--object-height asks for the rays that reach the point: give no --elevation-deg or "
+            "--i-rad");
+    if (!std::isnan(o.object_distance) &&
+        !(o.object_distance > 0.0 && std::isfinite(o.object_distance)))
+        fail("--object-distance " + g(o.object_distance) + ": must be a distance > 0 m");
+    std::string label;
+    std::optional<Profile> profile;
+    std::optional<AirChoice> air;
+    Result<MirrorReach> reach = make_error("");
+    if (general_requested(o)) {
+        air = resolve_air(o);
+        const double R = air->atmosphere.earth_radius();
+        reach = mirror_reach(air->atmosphere, flattened_height(o.eye_height, R),
+                             flattened_height(o.object_height, R));
+        if (reach) reach->nearest_turn_height = height_above_sphere(reach->nearest_turn_height, R);
+    } else {
+        profile = resolve_profile(o, label);
+        reach = mirror_reach(*profile, o.eye_height, o.object_height);
+    }
+    if (!reach) fail(reach.message());
+    const double elev_deg = reach->nearest_elevation_rad * 180.0 / M_PI;
+    const bool has_d = !std::isnan(o.object_distance);
+    const bool seen =
+        has_d && o.object_distance >= reach->nearest && o.object_distance <= reach->farthest;
+    if (o.json) {
+        nlohmann::json j;
+        if (profile) {
+            j["profile"] = {{"kind", profile_kind_name(profile->kind)},
+                            {"eta0", profile->eta0},
+                            {"eta1", profile->eta1},
+                            {"alpha", profile->alpha}};
+        } else {
+            j["air"] = air_json(*air);
+        }
+        j["eye_height"] = o.eye_height;
+        j["object_height"] = o.object_height;
+        j["nearest_eye_distance"] = reach->nearest;
+        j["farthest_eye_distance"] = reach->farthest;
+        j["nearest_turn_height"] = reach->nearest_turn_height;
+        j["nearest_elevation_deg"] = elev_deg;
+        j["grazing"] = reach->grazing;
+        if (has_d) {
+            j["object_distance"] = o.object_distance;
+            j["mirrored"] = seen;
+        }
+        std::cout << j.dump(2) << "\n";
+        return;
+    }
+    if (profile) {
+        std::cout << "profile     " << label << ": eta0 = " << shortest(profile->eta0)
+                  << ", eta1 = " << shortest(profile->eta1)
+                  << ", alpha = " << shortest(profile->alpha) << " /m\n";
+    } else {
+        print_air(*air);
+    }
+    std::cout << "eye         y0 = " << g(o.eye_height) << " m\n";
+    std::cout << "point       y = " << g(o.object_height) << " m\n";
+    std::cout << "vanishing   nearest eye distance with a mirrored image " << g(reach->nearest)
+              << " m (the ray turning at y = " << g(reach->nearest_turn_height) << " m"
+              << (reach->grazing ? ", grazing the ground" : "") << ", elevation " << g(elev_deg)
+              << " deg)\n";
+    std::cout << "            farthest " << g(reach->farthest) << " m\n";
+    if (has_d)
+        std::cout
+            << "at " << g(o.object_distance) << " m    "
+            << (seen ? "mirrored: rays from the eye reach the point after turning"
+                     : "no mirrored image: no ray from the eye reaches the point after turning")
+            << "\n";
+}
+
 void run_general(const PathOptions& o) {
     if (!o.png.empty() && std::isnan(o.transfer))
         fail("--png draws the transfer diagram: give --transfer DIST");
@@ -755,9 +777,6 @@ void setup_path_command(CLI::App& app) {
         if (!std::isnan(o->object_height) || !std::isnan(o->object_distance)) {
             if (std::isnan(o->object_height))
                 fail("--object-distance needs the point's height: --object-height M");
-            if (general_requested(*o))
-                fail(
-                    "--object-height works in the exponential profiles (--preset, --profile) only");
             run_vanishing(*o);
         } else if (general_requested(*o)) {
             run_general(*o);

@@ -358,6 +358,92 @@ TEST(Animate, EachFramesSceneIsLoadedAsCompileAndTraceLoadIt) {
                   "of the origin");
 }
 
+// Real air: walking down the hot road of scenes/hot_road.csv (the general engine, on the curved
+// Earth) towards a balloon above the eye.  The report's vanishing distance comes from the same
+// fitted model the tracer renders; the traced frames show the balloon's mirrored image (pixels
+// of its flat colour whose rays leave the eye downwards) 15 and 5 % farther than that
+// distance, and none 5 and 15 % nearer.
+TEST(Animate, RealAirMirroredImageVanishesAtTheComputedDistance) {
+    if (!have_ffmpeg()) GTEST_SKIP() << "ffmpeg/ffprobe not on PATH";
+    const fs::path dir = testing::test_dir("animate", "real_air_vanishing");
+    fs::copy_file(kSource + "/scenes/hot_road.csv", dir / "hot_road.csv",
+                  fs::copy_options::overwrite_existing);
+    const std::string text =
+        "#version 3.7;\n"
+        "#declare Mirage_Sounding = \"hot_road.csv\";\n"
+        "#declare Mirage_Tolerance = 0.1;\n"
+        "#include \"mirage.inc\"\n"
+        "#declare Walk_Start = 800;\n"
+        "#declare Walk_End = 200;\n"
+        "#declare Eye_Distance = Walk_Start + (Walk_End - Walk_Start) * clock;\n"
+        "#declare Marked_Center = <0, 1.9, 1000>;\n"
+        "#declare Marked_Radius = 0.3;\n"
+        "#declare Marked_Name = \"balloon\";\n"
+        "camera { location <0, 1.2, 1000 - Eye_Distance>\n"
+        "  look_at <0, 1.2 - 100 * tan(radians(0.2)), 1100 - Eye_Distance>\n"
+        "  right x * image_width / image_height angle 1.5 }\n"
+        "sky_sphere { pigment { color rgb <0.6, 0.7, 0.9> } }\n"
+        "plane { y, 0 pigment { color rgb 0.3 } finish { ambient 1 diffuse 0 } }\n"
+        "sphere { Marked_Center, Marked_Radius\n"
+        "  texture { pigment { color rgb <1, 0, 1> } finish { ambient 1 diffuse 0 } } }\n";
+    write_text(dir / "balloon.pov", text);
+    ParseOptions po;
+    po.library_paths = {dir.string(), kSource + "/pov_includes"};
+    po.strict = false;
+    auto scene = parse_scene_file((dir / "balloon.pov").string(), po);
+    ASSERT_TRUE(scene.ok()) << scene.message();
+    auto views = view_marked_spheres(*scene, 320, 240);
+    ASSERT_TRUE(views.ok()) << views.message();
+    ASSERT_EQ(views->size(), 1u);
+    const double vanish = (*views)[0].vanishing_distance;
+    // A hot road's mirage: some hundreds of metres out (the sounding's own figures).
+    ASSERT_GT(vanish, 200.0);
+    ASSERT_LT(vanish, 700.0);
+    const double start = 800.0, end = 200.0;
+    auto clock_at = [&](double d) { return (d - start) / (end - start); };
+    const double first = clock_at(1.15 * vanish), last = clock_at(0.85 * vanish);
+    std::ostringstream cmd;
+    cmd.precision(9);
+    cmd << "animate " << (dir / "balloon.pov") << " +KFI1 +KFF4 +KI" << first << " +KF" << last
+        << " -W 320 -H 240 --model trace -q -o " << (dir / "out");
+    const auto run = run_tool(cmd.str());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::vector<int> counts;
+    AnimationRange range;
+    range.initial_frame = 1;
+    range.final_frame = 4;
+    range.initial_clock = first;
+    range.final_clock = last;
+    for (int f = 1; f <= 4; ++f) {
+        po.animation = plan_frames(range)->frames[f - 1].clock;
+        auto frame_scene = parse_scene_file((dir / "balloon.pov").string(), po);
+        ASSERT_TRUE(frame_scene.ok());
+        auto img = read_image(
+            (dir / "out" / "frames" / ("frame_000" + std::to_string(f) + ".png")).string());
+        ASSERT_TRUE(img.ok()) << img.message();
+        counts.push_back(mirrored_pixels(*img, frame_scene->camera, {255, 0, 255}));
+        std::cout << "frame " << f << ": eye " << 1000.0 - frame_scene->camera.location.z
+                  << " m from the balloon (vanishes at " << vanish << " m), " << counts.back()
+                  << " mirrored pixels\n";
+    }
+    EXPECT_GT(counts[0], 0) << "15 % farther than the vanishing distance";
+    EXPECT_GT(counts[1], 0) << "5 % farther";
+    EXPECT_GT(counts[0], counts[1]) << "the image shrinks as the eye comes closer";
+    EXPECT_EQ(counts[2], 0) << "5 % nearer";
+    EXPECT_EQ(counts[3], 0) << "15 % nearer";
+    std::ifstream csv(dir / "out" / "vanishing.csv");
+    std::string line;
+    std::getline(csv, line);
+    int mirrored_rows = 0, rows = 0;
+    while (std::getline(csv, line)) {
+        if (line.find("balloon") == std::string::npos) continue;
+        ++rows;
+        mirrored_rows += line.find(",1,") != std::string::npos;
+    }
+    EXPECT_EQ(rows, 4);
+    EXPECT_EQ(mirrored_rows, 2);
+}
+
 TEST(Animate, MarkedSpheresAreSeenAboveTheDeclaredGround) {
     // The same scene with its floor at y = 0 and at y = -1 (Mirage_Ground_Height = -1): the
     // marked sphere's vanishing distance and mirrored image are the same; without the setting

@@ -300,6 +300,66 @@ TEST(QuadraticPath, EverySegmentTakesUpWhereTheLastEndedAndReachesItsKnot) {
     EXPECT_GT(ducted, 10);
 }
 
+// distance_to_height: on random rays of a hot road, a duct under an inversion and the same
+// with coarse spans, every height the ray passes before its first turning point (or its end)
+// is reached at the distance given (the height there within 1e-9 m, and no sooner: the height
+// a hair before is short of it), and heights it never moves towards, or lies beyond the turn,
+// are +inf.  A closed form with the wrong anchor, slope or sign fails the first check.
+TEST(QuadraticPath, DistanceToHeightIsWhereThePathFirstReachesIt) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int checked = 0, before_turn = 0, spans_used = 0, unreachable = 0;
+    for (bool spans : {false, true}) {
+        for (const auto& spec : {testing::hot_road_spec(), testing::road_duct_spec()}) {
+            auto q = fit_or_die(spec, 1e-11, spans);
+            ASSERT_TRUE(q);
+            for (const auto& r : random_rays(rng, 120, 0.02, 8.0, 1e-6, 0.3)) {
+                auto made = QuadraticPath::make(*q, r.y0, M_PI / 2 - r.elev);
+                ASSERT_TRUE(made.ok());
+                const QuadraticPath path = *made;
+                const std::string what =
+                    "y0=" + std::to_string(r.y0) + " elev=" + std::to_string(r.elev);
+                // Where the monotone stretch from the start ends.
+                double end_y;
+                const bool turns = path.turning_point_count() != 0;
+                if (turns) {
+                    end_y = path.turning_point(0).y;
+                    ++before_turn;
+                } else if (path.hits_ground()) {
+                    end_y = 0.0;
+                } else {
+                    end_y = path.height_at(1e4);
+                }
+                for (int k = 0; k < 6; ++k) {
+                    const double y = r.y0 + (end_y - r.y0) * unit(rng);
+                    if (y < 0.0) continue;
+                    const double d = path.distance_to_height(y);
+                    ASSERT_TRUE(std::isfinite(d)) << what << " y " << y;
+                    ASSERT_NEAR(path.height_at(d), y, 1e-9 * (1.0 + y)) << what << " y " << y;
+                    const double before = path.height_at(d * (1.0 - 1e-6));
+                    ASSERT_LT((end_y > r.y0 ? 1 : -1) * (before - y), 0.0) << what << " y " << y;
+                    ++checked;
+                }
+                // Behind the start, and past the turning point: never.
+                const double away = r.y0 - 0.1 * (end_y - r.y0) - 1e-3 * (end_y > r.y0 ? 1 : -1);
+                if (away > 0.0 && std::fabs(end_y - r.y0) > 0.0) {
+                    EXPECT_EQ(path.distance_to_height(away), INFINITY) << what;
+                    ++unreachable;
+                }
+                if (turns) {
+                    const double past = end_y + 0.05 * (end_y - r.y0);
+                    if (past > 0.0) EXPECT_EQ(path.distance_to_height(past), INFINITY) << what;
+                }
+                spans_used += path.spans_crossed() > 0;
+            }
+        }
+    }
+    EXPECT_GT(checked, 2000);
+    EXPECT_GT(before_turn, 100);
+    EXPECT_GT(spans_used, 20);
+    EXPECT_GT(unreachable, 200);
+}
+
 TEST(QuadraticPath, HomogeneousAirGivesStraightLines) {
     auto q = QuadraticProfile::make({0.0, 10.0}, {0.0}, {0.0}, 1.0003 * 1.0003, 0.0);
     ASSERT_TRUE(q.ok());
