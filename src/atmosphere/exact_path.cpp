@@ -117,6 +117,23 @@ Result<ExactPath> ExactPath::make(const Atmosphere& atmosphere, double y0, doubl
     return ExactPath(std::move(*path));
 }
 
+Result<ExactPath> ExactPath::make_direction(const Atmosphere& atmosphere, double y0, double cos_i,
+                                            double sin_i) {
+    if (atmosphere.exponential_profile()) return make(atmosphere, y0, std::atan2(sin_i, cos_i));
+    return make_direction(atmosphere, quadratic_start(*atmosphere.quadratic_profile(), y0), cos_i,
+                          sin_i);
+}
+
+Result<ExactPath> ExactPath::make_direction(const Atmosphere& atmosphere,
+                                            const QuadraticStart& start, double cos_i,
+                                            double sin_i) {
+    const QuadraticProfile* profile = atmosphere.quadratic_profile();
+    MIRAGE_CHECK(profile != nullptr);
+    auto path = QuadraticPath::make_direction(*profile, start, cos_i, sin_i);
+    if (!path) return path.error();
+    return ExactPath(std::move(*path));
+}
+
 double ExactPath::y0() const {
     return std::visit(Overload{[](const ExactRay& r) { return r.y0; },
                                [](const QuadraticPath& q) { return q.y0(); }},

@@ -52,6 +52,13 @@ class ExactPath {
     /// upward vertical.  A path through a quadratic profile refers to the atmosphere's model,
     /// which must outlive it.
     static Result<ExactPath> make(const Atmosphere& atmosphere, double y0, double i_rad);
+    /// The same ray from its direction: cos i and sin i of a unit vector with sin i > 0.
+    static Result<ExactPath> make_direction(const Atmosphere& atmosphere, double y0, double cos_i,
+                                            double sin_i);
+    /// The same in a piecewise-quadratic atmosphere, from what every ray from its height shares.
+    static Result<ExactPath> make_direction(const Atmosphere& atmosphere,
+                                            const QuadraticStart& start, double cos_i,
+                                            double sin_i);
 
     double y0() const;
     double i_rad() const;

@@ -402,7 +402,7 @@ class ExactNearSampler {
 bool wedge_is_clear(const ExactPath& path, const SampleSettings& st,
                     const PathObstacles& obstacles, bool escapes, double end) {
     const QuadraticPath* q = path.quadratic();
-    if (!q || !(std::cos(path.i_rad()) > 0.0) || !(end > 0.0)) return false;
+    if (!q || !(q->cos_i() > 0.0) || !(end > 0.0)) return false;
     const double y0 = path.y0();
     const double top = q->profile().top();
     const double y_hi = escapes ? std::max(y0, top) : path.height_at(end);

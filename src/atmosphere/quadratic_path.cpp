@@ -155,9 +155,11 @@ double crossing_time(double dy, double s_e, double s_x, double a_e, double kappa
     const double M = a_e * a_e + l2 * s_e * s_e;
     const double im_S = dy * (l2 * s_e * S + a_e * g);
     const double den_S = M * S + l2 * dy * (g * s_e - a_e * S);
-    if (den_S * S > 0.0 && std::fabs(lambda * im_S) < 0.1 * std::fabs(den_S)) {
+    if (den_S * S > 0.0) {
+        // The angle lies within (-pi/2, pi/2): atan of the quotient (half the cost of atan2).
         const double r = im_S / den_S;
-        return r * atanc(lambda * r);
+        if (std::fabs(lambda * r) < 0.1) return r * atanc(lambda * r);
+        return std::atan(lambda * r) / lambda;
     }
     return std::atan2(lambda * im_S / S, den_S / S) / lambda;
 }
@@ -323,15 +325,52 @@ Result<QuadraticPath> QuadraticPath::make(const QuadraticProfile& profile, doubl
         return make_error("angle from the vertical i = " + shortest(i_rad) +
                           " rad must lie strictly between 0 and pi (a vertical ray has no "
                           "horizontal distance)");
+    auto path =
+        make_direction(profile, quadratic_start(profile, y0), std::cos(i_rad), std::sin(i_rad));
+    if (path) path->i_ = i_rad;
+    return path;
+}
+
+double QuadraticPath::i_rad() const {
+    if (std::isnan(i_)) i_ = std::atan2(sin_i_, cos_i_);
+    return i_;
+}
+
+QuadraticStart quadratic_start(const QuadraticProfile& profile, double y0) {
+    QuadraticStart st;
+    st.y0 = y0;
+    if (!std::isfinite(y0) || y0 < 0.0) return st;
+    st.e0 = profile.excess(y0);
+    st.piece_up = piece_for(profile, y0, 1);
+    st.piece_down = piece_for(profile, y0, -1);
+    return st;
+}
+
+Result<QuadraticPath> QuadraticPath::make_direction(const QuadraticProfile& profile,
+                                                    const QuadraticStart& start, double cos_i,
+                                                    double sin_i) {
+    const double y0 = start.y0;
+    if (!std::isfinite(y0) || y0 < 0.0)
+        return make_error("start height y0 = " + shortest(y0) + " m must be finite and >= 0");
+    if (!std::isfinite(cos_i) || !(sin_i > 0.0) || !std::isfinite(sin_i) ||
+        !(std::fabs(cos_i * cos_i + sin_i * sin_i - 1.0) < 1e-12))
+        return make_error("direction (cos i, sin i) = (" + shortest(cos_i) + ", " +
+                          shortest(sin_i) +
+                          ") must be a unit vector with a horizontal part (sin i > 0)");
+    // A path starts inside a run (n^2 - beta^2 > 0 there: a start exactly at a turning point
+    // would be taken for one in the direction of cos i's sign).  make(i) never gives |cos i|
+    // below cos of the double nearest pi/2; a direction nearer level is given that.
+    constexpr double kMinCos = 6.123233995736766e-17;
+    if (std::fabs(cos_i) < kMinCos) cos_i = std::signbit(cos_i) ? -kMinCos : kMinCos;
     QuadraticPath r;
     r.profile_ = &profile;
     r.y0_ = y0;
-    r.i_ = i_rad;
-    r.cos_i_ = std::cos(i_rad);
-    r.sin_i_ = std::sin(i_rad);
+    r.i_ = kNaN;
+    r.cos_i_ = cos_i;
+    r.sin_i_ = sin_i;
     r.slope0_ = r.cos_i_ / r.sin_i_;
     r.sg_ = r.cos_i_ < 0.0 ? -1 : 1;
-    r.e0_ = profile.excess(y0);
+    r.e0_ = start.e0;
     const double N0 = profile.n0_sq() + r.e0_;
     r.eta_p_ = std::sqrt(N0);
     r.beta_ = r.eta_p_ * r.sin_i_;
@@ -368,7 +407,7 @@ Result<QuadraticPath> QuadraticPath::make(const QuadraticProfile& profile, doubl
         r.cur_.done = true;
         return r;
     }
-    const int start_piece = piece_for(profile, y0, r.sg_);
+    const int start_piece = r.sg_ > 0 ? start.piece_up : start.piece_down;
     r.hint_a_ = r.hint_b_ = std::clamp(start_piece, 0, m - 1);
     const RunEnd ahead = run_end(profile, y0, start_piece, r.sg_, r.Q0_, false, level);
     if (ahead.kind == SweepEnd::Vertex) {
@@ -384,14 +423,14 @@ Result<QuadraticPath> QuadraticPath::make(const QuadraticProfile& profile, doubl
                 r.cur_.done = true;
                 return r;
             }
-            return make_error("the ray from " + shortest(y0) + " m at i = " + shortest(i_rad) +
+            return make_error("the ray from " + shortest(y0) + " m at i = " + shortest(r.i_rad()) +
                               " rad is tangent to an extremum of the index at " +
                               shortest(ahead.y) + " m: it approaches that height for ever");
         }
         // The run back from the first turning point passes the start and ends where the
         // reversed ray from the start ends.
-        const RunEnd behind =
-            run_end(profile, y0, piece_for(profile, y0, -r.sg_), -r.sg_, r.Q0_, false, level);
+        const RunEnd behind = run_end(profile, y0, r.sg_ > 0 ? start.piece_down : start.piece_up,
+                                      -r.sg_, r.Q0_, false, level);
         if (behind.kind == SweepEnd::Vertex && behind.y == ahead.y) {
             // Level at a maximum of n^2 with a corner (an inversion's sharp bottom): n^2 falls
             // on both sides, so the ray cannot leave this height.

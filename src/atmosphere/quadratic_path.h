@@ -67,6 +67,15 @@ struct TurningPoint {
     bool lowest = true;  // a lowest point (the path is concave up there) or an apex
 };
 
+/// What every ray from one height shares (a tracer's eye): made once by quadratic_start.
+struct QuadraticStart {
+    double y0 = 0.0;
+    double e0 = 0.0;     // n^2 - n0^2 at y0
+    int piece_up = 0;    // the piece a run leaves y0 by going up (piece_count(): above the top)
+    int piece_down = 0;  // and going down (-1: at the ground)
+};
+QuadraticStart quadratic_start(const QuadraticProfile& profile, double y0);
+
 class QuadraticPath {
   public:
     /// The ray from height y0 >= 0 at angle i from the upward vertical (strictly between 0 and
@@ -76,9 +85,15 @@ class QuadraticPath {
     /// the profile has.  Queries extend the path in place: a path is not to be shared between
     /// threads (copy it).
     static Result<QuadraticPath> make(const QuadraticProfile& profile, double y0, double i_rad);
+    /// The same ray from its direction's cosine and sine of i (a unit vector, sin i > 0): for
+    /// a tracer that has the direction, not the angle.
+    static Result<QuadraticPath> make_direction(const QuadraticProfile& profile,
+                                                const QuadraticStart& start, double cos_i,
+                                                double sin_i);
 
     double y0() const { return y0_; }
-    double i_rad() const { return i_; }
+    double i_rad() const;
+    double cos_i() const { return cos_i_; }
     double beta() const { return beta_; }
     double eta_start() const { return eta_p_; }
     int start_direction() const { return sg_; }  // +1 up or level, -1 down
@@ -143,7 +158,8 @@ class QuadraticPath {
 
   private:
     const QuadraticProfile* profile_ = nullptr;
-    double y0_ = 0.0, i_ = 0.0, cos_i_ = 0.0, sin_i_ = 1.0, slope0_ = 0.0;
+    mutable double i_ = 0.0;  // NaN until asked for, when made from a direction
+    double y0_ = 0.0, cos_i_ = 0.0, sin_i_ = 1.0, slope0_ = 0.0;
     double eta_p_ = 1.0, beta_ = 1.0, inv_beta_ = 1.0, inv_beta_sq_ = 1.0;
     double e0_ = 0.0, Q0_ = 0.0;  // n^2 - n0^2 and n^2 - beta^2 at the start
     int sg_ = 1;

@@ -291,38 +291,47 @@ double general_path_reach(const SceneAccel& accel, const glm::dvec3& eye) {
 
 namespace {
 
-// Whether a ray of the general engine from y0 with sin i = sin_i turns by at most `limit`
-// anywhere: from the invariant n(y) sin i(y) = beta over the heights it can reach without
-// turning (above the start rising, below it descending); false when it can turn.
-bool general_bends_at_most(const Atmosphere& atm, double y0, double sin_i, bool rising,
-                           double limit) {
-    // The index's range and its value at the start, the same for every ray from one eye: kept
-    // per thread with the model (held, so that no other model can take its address).
-    struct Start {
-        std::optional<Atmosphere> atm;
-        double y0 = -1.0;
-        bool rising = false;
-        double lo = 0.0, hi = 0.0, n = 0.0;
-    };
-    thread_local Start last;
+// What every ray of the general engine from one height shares: the index's range above and
+// below it, its index there and the model's start.  Kept per thread with the model for the last
+// height asked for (held, so that no other model can take its address): a frame's camera rays
+// all start at the eye.
+struct GeneralStart {
+    std::optional<Atmosphere> atm;
+    double y0 = -1.0;
+    double lo_up = 0.0, hi_up = 0.0;      // n over [y0, inf)
+    double lo_down = 0.0, hi_down = 0.0;  // n over [0, y0]
+    double n = 0.0;
+    std::optional<QuadraticStart> start;  // with a piecewise-quadratic model
+};
+
+const GeneralStart& general_start(const Atmosphere& atm, double y0) {
+    thread_local GeneralStart last;
     const QuadraticProfile* model = atm.quadratic_profile();
-    if (!model || !last.atm || last.atm->quadratic_profile() != model || last.y0 != y0 ||
-        last.rising != rising) {
+    if (!model || !last.atm || last.atm->quadratic_profile() != model || last.y0 != y0) {
         last.atm = atm;
         last.y0 = y0;
-        last.rising = rising;
-        if (rising) {
-            atm.n_range(y0, kInf, last.lo, last.hi);
-        } else {
-            atm.n_range(0.0, y0, last.lo, last.hi);
-        }
+        atm.n_range(y0, kInf, last.lo_up, last.hi_up);
+        atm.n_range(0.0, y0, last.lo_down, last.hi_down);
         last.n = atm.n(y0);
+        last.start.reset();
+        if (model) last.start = quadratic_start(*model, y0);
     }
-    const double lo = last.lo, hi = last.hi;
-    const double beta = last.n * sin_i;
+    return last;
+}
+
+// Whether a ray of the general engine from the start with sin i = sin_i turns by at most
+// `limit` anywhere: from the invariant n(y) sin i(y) = beta over the heights it can reach
+// without turning (above the start rising, below it descending); false when it can turn.
+bool general_bends_at_most(const GeneralStart& start, double sin_i, bool rising, double limit) {
+    const double lo = rising ? start.lo_up : start.lo_down;
+    const double hi = rising ? start.hi_up : start.hi_down;
+    const double beta = start.n * sin_i;
     const double s_max = beta / lo;
     if (!(s_max < 1.0)) return false;
-    return std::asin(s_max) - std::asin(beta / hi) <= limit;
+    const double s_min = beta / hi;
+    // asin' = 1 / sqrt(1 - x^2) is at least 1 / sqrt(1 - s_min^2) between the two.
+    if (s_max - s_min > limit * std::sqrt((1.0 - s_min) * (1.0 + s_min))) return false;
+    return std::asin(s_max) - std::asin(s_min) <= limit;
 }
 
 // The general engine's path of a ray (settings.general) into `cp`; false when it goes
@@ -338,12 +347,15 @@ bool general_path(const CurvedSettings& settings, const SceneAccel* accel, const
     const double hl = std::hypot(direction.x, direction.z);
     if (hl < kVerticalSin) return false;
     const double y0 = std::max(origin.y, 0.0);
-    const double sin_i = hl / std::hypot(hl, direction.y);
-    if (general_bends_at_most(atm, y0, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad))
+    const double length = std::hypot(hl, direction.y);
+    const double sin_i = hl / length, cos_i = direction.y / length;
+    const GeneralStart& start = general_start(atm, y0);
+    if (general_bends_at_most(start, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad))
         return false;
     std::vector<QuadraticSegment> storage;
     if (cp.general) storage = cp.general->release_storage();
-    auto path = ExactPath::make(atm, y0, std::atan2(hl, direction.y));
+    auto path = start.start ? ExactPath::make_direction(atm, *start.start, cos_i, sin_i)
+                            : ExactPath::make_direction(atm, y0, cos_i, sin_i);
     MIRAGE_CHECK(path.ok());
     path->adopt_storage(std::move(storage));
     cp.general.emplace(std::move(*path));

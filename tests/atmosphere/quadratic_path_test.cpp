@@ -401,6 +401,64 @@ TEST(QuadraticPath, RefusesStartsBelowTheGroundAndVerticalRays) {
     EXPECT_NE(vertical.message().find("strictly between 0 and pi"), std::string::npos);
 }
 
+// A tracer makes its paths from the ray's direction (make_direction: cos i and sin i, no angle):
+// the same paths as from the angle, to the rounding of the cosine; a level direction, whose cos i
+// is exactly 0, the path make(pi / 2) gives (with cos i = 6.1e-17 a start just inside the run,
+// where exactly 0 would put the start on its own turning point and send a ray with a falling
+// index upwards first: Young's duct from 54 m then meets a wall 40 km away 0.39 m too high);
+// directions that are not unit vectors with a horizontal part are refused.
+TEST(QuadraticPath, MadeFromADirectionIsTheRayMadeFromItsAngle) {
+    for (const auto& spec :
+         {testing::young_spec(0.85), testing::road_duct_spec(), testing::hot_road_spec()}) {
+        auto q = fit_or_die(spec, 1e-11);
+        ASSERT_TRUE(q);
+        std::mt19937_64 rng(20261203);
+        int compared = 0;
+        for (const RandomRay& r : random_rays(rng, 60, 0.05, 80.0, 1e-6, 0.05)) {
+            const double i = M_PI / 2 - r.elev;
+            auto from_angle = QuadraticPath::make(*q, r.y0, i);
+            auto from_direction = QuadraticPath::make_direction(*q, quadratic_start(*q, r.y0),
+                                                                std::cos(i), std::sin(i));
+            ASSERT_TRUE(from_angle.ok() && from_direction.ok());
+            EXPECT_EQ(from_direction->fate(), from_angle->fate()) << r.y0 << " " << r.elev;
+            EXPECT_EQ(from_direction->turning_point_count(), from_angle->turning_point_count());
+            EXPECT_EQ(from_direction->beta(), from_angle->beta());
+            EXPECT_NEAR(from_direction->i_rad(), i, 1e-15);
+            for (const double dz : {10.0, 300.0, 5000.0}) {
+                EXPECT_EQ(from_direction->height_at(dz), from_angle->height_at(dz))
+                    << r.y0 << " " << r.elev << " " << dz;
+            }
+            ++compared;
+        }
+        EXPECT_EQ(compared, 60);
+
+        // Level: from 54 m (in Young's inversion, where the index falls upwards), the start is
+        // an apex, as make(pi / 2) has it.
+        for (const double y0 : {54.0, 1.0, 0.3}) {
+            auto level = QuadraticPath::make_direction(*q, quadratic_start(*q, y0), 0.0, 1.0);
+            auto angle = QuadraticPath::make(*q, y0, M_PI / 2);
+            ASSERT_TRUE(level.ok() && angle.ok());
+            EXPECT_EQ(level->fate(), angle->fate()) << y0;
+            ASSERT_EQ(level->turning_point_count(), angle->turning_point_count()) << y0;
+            if (angle->turning_point_count() != 0) {
+                EXPECT_EQ(level->turning_point(0).dz, angle->turning_point(0).dz) << y0;
+                EXPECT_EQ(level->turning_point(0).y, angle->turning_point(0).y) << y0;
+            }
+            EXPECT_EQ(level->height_at(40000.0), angle->height_at(40000.0)) << y0;
+        }
+    }
+    auto q = fit_or_die(testing::hot_road_spec(), 1e-10);
+    const QuadraticStart start = quadratic_start(*q, 1.0);
+    for (const auto& [c, s] : {std::pair{0.6, 0.6}, std::pair{1.0, 0.0}, std::pair{0.6, -0.8},
+                               std::pair{std::nan(""), 1.0}}) {
+        auto bad = QuadraticPath::make_direction(*q, start, c, s);
+        ASSERT_FALSE(bad.ok()) << c << " " << s;
+        EXPECT_NE(bad.message().find("must be a unit vector with a horizontal part"),
+                  std::string::npos)
+            << bad.message();
+    }
+}
+
 }  // namespace
 }  // namespace mirage
 
