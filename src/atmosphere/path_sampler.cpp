@@ -282,6 +282,14 @@ class ExactNearSampler {
     /// a test needs it.
     void set_may_stop() { may_stop_ = obstacles_ != nullptr; }
     bool stopped() const { return stopped_; }
+    void stop() { stopped_ = true; }
+
+    /// After a stop: the point at dz (beyond the last one) by a stretch that meets nothing.
+    void reach_clear(double dz) {
+        const Point last{out_.points.back().x, out_.points.back().y};
+        const Point to{dz, height(dz)};
+        emit(to, std::hypot(to.dz - last.dz, to.y - last.y));
+    }
 
     /// Samples the monotone run from (a, ya) to (b, yb); yb NaN: not computed yet.
     void run(double a, double ya, double b, double yb) {
@@ -300,7 +308,18 @@ class ExactNearSampler {
         return chord_within(m, a.dz, b_dz, allowed_error(path_, st_, a.dz, a.y), st_);
     }
 
-    bool nothing_beyond(double dz) const { return nothing_beyond_dz(*obstacles_, dz); }
+    // Whether nothing lies beyond dz: monotone in dz (true beyond any dz where it is true), so
+    // the answers found so far settle most questions without asking the scene.
+    bool nothing_beyond(double dz) const {
+        if (dz >= clear_from_) return true;
+        if (dz <= busy_until_) return false;
+        if (nothing_beyond_dz(*obstacles_, dz)) {
+            clear_from_ = dz;
+            return true;
+        }
+        busy_until_ = dz;
+        return false;
+    }
 
     // Whether nothing the path can meet lies near the stretch from a to b (within one monotone
     // run, so between the heights of its ends, and within m w^2 / 8 of its chord); then its
@@ -367,11 +386,13 @@ class ExactNearSampler {
         const double m = path_.curvature_bound(a.y, b.y);
         if (fine(a, b.dz, m)) {
             emit(b, 0.0);
+            if (may_stop_ && nothing_beyond(b.dz)) stopped_ = true;
             return;
         }
         double length = 0.0;
         if (obstacles_ && b.dz != ground_end_ && clear(a, b, m, length)) {
             emit(b, length);
+            if (may_stop_ && nothing_beyond(b.dz)) stopped_ = true;
             return;
         }
         if (may_stop_ && nothing_beyond(a.dz)) {
@@ -388,6 +409,7 @@ class ExactNearSampler {
     double dz_ground_;
     double ground_end_ = kNaN;
     bool may_stop_ = false;
+    mutable double clear_from_ = kInf, busy_until_ = -kInf;
     bool stopped_ = false;
 };
 
@@ -458,37 +480,70 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
     const double end = ground ? path.dz_ground() : max_dz;
     ExactNearSampler sampler(path, st, obstacles, out, ground ? path.dz_ground() : kInf);
     if (ground && obstacles && obstacles->ground()) sampler.set_ground_end(path.dz_ground());
-    // An escaping path is followed to the cut (the end of the reach); with obstacles it stops
-    // where nothing lies beyond.
+    // A path that does not end on the ground is followed to the cut (the end of the reach);
+    // with obstacles it stops where nothing lies beyond.
     const bool escapes = !ground && path.fate() == PathFate::Escape && path.quadratic() &&
                          std::isfinite(path.asymptotic_slope());
-    if (escapes) sampler.set_may_stop();
+    if (!ground) sampler.set_may_stop();
 
-    // The turning points before the end split the path into monotone runs.
-    std::vector<double> starts{0.0};
+    // Nothing lies beyond the obstacles' reach: a path that does not end on the ground is
+    // sampled no farther than the node of a run's grid (from the run's start, powers of two)
+    // that covers it, where the sampler would stop.
+    const double reach = !ground && obstacles ? obstacles->reach() : kInf;
+    auto covering_node_end = [&](double from) {
+        const double r = reach - from;
+        if (!(r > 0.0)) return from;
+        if (!std::isfinite(r)) return kInf;
+        int e = 0;
+        std::frexp(r, &e);  // r in [2^(e-1), 2^e)
+        double size = std::ldexp(1.0, e);
+        if (0.5 * size >= r) size *= 0.5;
+        return from + size;
+    };
+    // The turning points before the end split the path into monotone runs; each is asked for
+    // when the run before it has been sampled, so that none is computed beyond a stop.
     const int count = path.turning_point_count();
-    for (int k = 0; count < 0 || k < count; ++k) {
-        TurningPoint tp;
-        if (!path.turning_point_before(k, end, tp)) break;
-        if (tp.dz > starts.back()) starts.push_back(tp.dz);
-    }
-    if (starts.size() > 1) {
-        out.turns = true;
-        out.dz_turn = starts[1];
-    }
+    int next_k = 0;
+    bool no_more = count == 0;
+    auto next_turn = [&](double after, double& dz) {
+        while (!no_more && (count < 0 || next_k < count)) {
+            TurningPoint tp;
+            if (!path.turning_point_before(next_k++, end, tp)) break;
+            if (tp.dz > after) {
+                dz = tp.dz;
+                return true;
+            }
+        }
+        no_more = true;
+        return false;
+    };
+    double b = 0.0;
+    bool turn_ahead = next_turn(0.0, b);
+    out.turns = turn_ahead;
+    if (turn_ahead) out.dz_turn = b;
     // A path rising from its start that turns nowhere before the end, met by nothing near it:
     // kept as its start and its end direction (wedge_is_clear).
-    const bool whole_clear = obstacles && !ground && starts.size() == 1 &&
-                             wedge_is_clear(path, st, *obstacles, escapes, end);
+    const bool whole_clear =
+        obstacles && !ground && !turn_ahead && wedge_is_clear(path, st, *obstacles, escapes, end);
     double a = 0.0, ya = y0;
-    for (size_t k = 1; !whole_clear && k <= starts.size(); ++k) {
-        const bool last = k == starts.size();
-        const double b = last ? end : starts[k];
-        // The far end's height waits until a test needs it (escaping paths).
-        const double yb = last && escapes ? kNaN : sampler.height(b);
+    while (!whole_clear && !sampler.stopped()) {
+        const double run_end = turn_ahead ? b : end;
+        const double c = covering_node_end(a);
+        if (c < run_end) {
+            if (c > a) sampler.run(a, ya, c, sampler.height(c));
+            sampler.stop();
+            break;
+        }
+        if (!turn_ahead) {
+            // The far end's height waits until a test needs it (escaping paths).
+            sampler.run(a, ya, end, escapes ? kNaN : sampler.height(end));
+            break;
+        }
+        const double yb = sampler.height(b);
         sampler.run(a, ya, b, yb);
         a = b;
         ya = yb;
+        turn_ahead = next_turn(a, b);
     }
     if (ground) {
         out.end = PathEnd::Ground;
@@ -506,7 +561,9 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
         out.end_slope_dz = at;
         out.end_clear = stopped;
     } else {
-        // Cut at the end (where the last point is, when sampled).
+        // Cut at the end.  A path stopped where nothing lies beyond still reaches the cut, by
+        // one clear stretch: beyond the cut it goes on straight and may meet the ground there.
+        if (sampler.stopped() && out.points.back().x < end) sampler.reach_clear(end);
         out.end = PathEnd::Cut;
         out.end_slope = path.slope_at(end);
         out.end_slope_dz = end;

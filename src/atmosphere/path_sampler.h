@@ -33,10 +33,13 @@ double allowed_error(const ExactPath& path, const SampleSettings& settings, doub
 /// and everything within the allowance of it (the chord +- max|y''| L^2 / 8 and the allowance,
 /// within the heights of its ends) meets nothing: marked in clear_length.  A half that ends on a
 /// surface at the ground always keeps the tolerance.  An escaping path ends with its asymptotic
-/// slope (the direction it leaves the profile's top with); with obstacles it stops, straight and
-/// clear, at the first node beyond which nothing lies (its far end's height is computed only where
-/// a test needs it). Without obstacles every segment keeps the tolerance, and with them the
-/// segments that do are the same ones.  `path`'s storage is reused.
+/// slope (the direction it leaves the profile's top with, or its slope at the cut).  With
+/// obstacles a path that does not end on the ground stops at the first node beyond which nothing
+/// lies (at once at the node of the grid that covers the obstacles' reach, when they know it):
+/// an escaping one is then straight and clear in its end direction (its far end's height is
+/// computed only where a test needs it), one cut at max_dz reaches the cut by one clear stretch
+/// and goes on from there as before.  Without obstacles every segment keeps the tolerance, and
+/// with them the segments that do are the same ones.  `path`'s storage is reused.
 void sample_exact_path_near(const ExactPath& path, const SampleSettings& settings,
                             const PathObstacles* obstacles, SampledPath& out);
 

@@ -120,6 +120,8 @@ class PathObstacles {
     /// Whether a surface covers the ground (y = 0): a path meets it at its ground point
     /// (nowhere else: its chords join points of the path, which lies above the ground).
     virtual bool ground() const = 0;
+    /// A distance beyond which nothing the path can meet lies (+inf: not known).
+    virtual double reach() const { return std::numeric_limits<double>::infinity(); }
 };
 
 /// Samples the exact ray to the tolerance wherever it may meet something, and coarsely where

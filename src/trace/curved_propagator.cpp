@@ -189,6 +189,16 @@ class SceneObstacles final : public PathObstacles {
         return false;
     }
     bool ground() const override { return accel_.has_ground_plane(); }
+    double reach() const override {
+        if (asked_ <= kDirectQuestions) {
+            asked_ = kDirectQuestions + 1;
+            crossings_.clear();
+            accel_.plane_crossings(origin_, heading_, crossings_);
+        }
+        double r = 0.0;
+        for (const SceneAccel::Crossing& c : crossings_) r = std::max(r, c.dz_hi);
+        return r;
+    }
 
   private:
     const SceneAccel& accel_;
