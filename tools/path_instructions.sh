@@ -16,6 +16,8 @@ bench=$build/mirage_bench
 command -v valgrind >/dev/null || { echo "$0: valgrind is not installed" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/valgrind_env.sh"
+valgrind_env "$bench" "$tmp"
 
 # Collection is toggled on entering and leaving a function, so the names are whole signatures:
 # a pattern that also matched a kernel's lambdas would toggle collection off inside them.

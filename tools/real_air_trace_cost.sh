@@ -13,6 +13,8 @@ H=${2:-480}
 mirage=${MIRAGE:-build/mirage}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/valgrind_env.sh"
+valgrind_env "$mirage" "$tmp"
 line='#declare Mirage_Preset    = "hot-road";'
 grep -q "$line" scenes/road.pov
 variant() {  # NAME REPLACEMENT

@@ -15,6 +15,8 @@ mirage=${MIRAGE:-build/mirage}
 extra=${EXTRA:-}
 out=${OUT:-build/times/callgrind}
 mkdir -p "$out"
+. "$(dirname "$0")/valgrind_env.sh"
+valgrind_env "$mirage" "$out"
 
 # instructions of one run: name, then mirage trace arguments
 count() {
