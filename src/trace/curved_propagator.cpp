@@ -303,8 +303,8 @@ namespace {
 
 // What every ray of the general engine from one height shares: the index's range above and
 // below it, its index there and the model's start.  Kept per thread with the model for the last
-// height asked for (held, so that no other model can take its address): a frame's camera rays
-// all start at the eye.
+// two heights asked for (held, so that no other model can take its address): a frame's camera
+// rays all start at the eye, and each reflection asks for another.
 struct GeneralStart {
     std::optional<Atmosphere> atm;
     double y0 = -1.0;
@@ -315,18 +315,28 @@ struct GeneralStart {
 };
 
 const GeneralStart& general_start(const Atmosphere& atm, double y0) {
-    thread_local GeneralStart last;
+    thread_local GeneralStart slots[2];
+    thread_local int last = 0;
     const QuadraticProfile* model = atm.quadratic_profile();
-    if (!model || !last.atm || last.atm->quadratic_profile() != model || last.y0 != y0) {
-        last.atm = atm;
-        last.y0 = y0;
-        atm.n_range(y0, kInf, last.lo_up, last.hi_up);
-        atm.n_range(0.0, y0, last.lo_down, last.hi_down);
-        last.n = atm.n(y0);
-        last.start.reset();
-        if (model) last.start = quadratic_start(*model, y0);
+    auto matches = [&](const GeneralStart& s) {
+        return model && s.atm && s.atm->quadratic_profile() == model && s.y0 == y0;
+    };
+    for (int k : {last, 1 - last}) {
+        if (matches(slots[k])) {
+            last = k;
+            return slots[k];
+        }
     }
-    return last;
+    last = 1 - last;  // replace the one used less recently
+    GeneralStart& s = slots[last];
+    s.atm = atm;
+    s.y0 = y0;
+    atm.n_range(y0, kInf, s.lo_up, s.hi_up);
+    atm.n_range(0.0, y0, s.lo_down, s.hi_down);
+    s.n = atm.n(y0);
+    s.start.reset();
+    if (model) s.start = quadratic_start(*model, y0);
+    return s;
 }
 
 // Whether a ray of the general engine from the start with sin i = sin_i turns by at most
