@@ -288,7 +288,8 @@ class ExactNearSampler {
     void reach_clear(double dz) {
         const Point last{out_.points.back().x, out_.points.back().y};
         const Point to{dz, height(dz)};
-        emit(to, std::hypot(to.dz - last.dz, to.y - last.y));
+        const double w = to.dz - last.dz, dy = to.y - last.y;
+        emit(to, std::sqrt(w * w + dy * dy));
     }
 
     /// Samples the monotone run from (a, ya) to (b, yb); yb NaN: not computed yet.

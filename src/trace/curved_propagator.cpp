@@ -364,10 +364,11 @@ bool general_path(const CurvedSettings& settings, const SceneAccel* accel, const
     if (origin.y < -ground_slack(origin)) return false;
     if (origin.y > kMaxHeight) return false;
     if (origin.y <= 0.0 && direction.y <= 0.0) return false;
-    const double hl = std::hypot(direction.x, direction.z);
+    // A direction's components are near 1 or 0 (no overflow to guard against, as hypot does).
+    const double hl = std::sqrt(direction.x * direction.x + direction.z * direction.z);
     if (hl < kVerticalSin) return false;
     const double y0 = std::max(origin.y, 0.0);
-    const double length = std::hypot(hl, direction.y);
+    const double length = std::sqrt(hl * hl + direction.y * direction.y);
     const double sin_i = hl / length, cos_i = direction.y / length;
     const GeneralStart& start = general_start(atm, y0);
     if (general_bends_at_most(start, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad))
