@@ -214,7 +214,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
                 const double km = ctx.settings.unit_m / 1000.0;
                 return make_error(
                     opt.scene +
-                    ": mirage compile: on the curved Earth POV-Ray sees the sky up to " +
+                    ": on the curved Earth POV-Ray sees the sky up to " +
                     "the layers' reach over the Earth's radius off (" + sig(near * km, 3) +
                     " km / " + shortest(R * km) + " km = " + sig(1e3 * near / R, 3) +
                     " mrad), more than the " + shortest(1e3 * kMaxCurvedSkyRad) +

@@ -360,6 +360,8 @@ TEST(AirCompile, CurvedEarthBeyondTheBandsReachIsRefusedWithWhatToDo) {
     EXPECT_NE(r.message().find("more than the 1 mrad bands allow"), std::string::npos)
         << r.message();
     EXPECT_NE(r.message().find("mirage trace"), std::string::npos) << r.message();
+    // The command names itself in front of the message, once.
+    EXPECT_EQ(r.message().find("mirage compile:"), std::string::npos) << r.message();
     EXPECT_FALSE(fs::exists(o.out_dir + "/mirage_layers.inc"));
     // The wall at 4.4 km is within reach (above); the boundary is the radius's 1 mrad.
     o = sphere_scene("sphere_near", 4400.0);
