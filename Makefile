@@ -3,7 +3,8 @@
 # build and then render or test.
 #
 #   make                 install what is missing, build build/mirage
-#   make render          compile scenes/desert.pov to a banded medium and render it with POV-Ray
+#   make render          compile scenes/desert.pov to a banded medium and its corrected camera,
+#                        and render it with POV-Ray into build/render/NAME/NAME.png
 #                        (SCENE=scenes/road.pov W=640 H=480 TOL=0.5 to choose)
 #   make trace           render the scene with the built-in tracer along the curved rays
 #                        (build/render/NAME-trace.png; same SCENE, W, H, TOL)
@@ -73,12 +74,7 @@ test: build
 
 render: build
 	$(BUILD)/mirage compile $(SCENE) --width $(W) --height $(H) $(if $(TOL),--tolerance $(TOL)) \
-	    -o $(BUILD)/render/$(NAME)
-	@echo "povray $(BUILD)/render/$(NAME)/$(NAME).ini"
-	@povray $(BUILD)/render/$(NAME)/$(NAME).ini 2>$(BUILD)/render/$(NAME)/povray.log || \
-	    { tail -20 $(BUILD)/render/$(NAME)/povray.log; exit 1; }
-	@grep -E "Max Level|Trace Time" $(BUILD)/render/$(NAME)/povray.log | sed "s/^ */  /"
-	@echo "image: $(BUILD)/render/$(NAME).png"
+	    -o $(BUILD)/render/$(NAME) --render
 
 trace: build
 	@mkdir -p $(BUILD)/render

@@ -1,11 +1,17 @@
 // `mirage compile SCENE.pov`: the scene with a banded refraction medium for POV-Ray.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.h"
+#include "compare/povray_render.h"
 #include "compile/compile.h"
+#include "pov/emit_camera.h"
+#include "util/format.h"
 
 namespace mirage {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -16,6 +22,9 @@ struct CompileCliOptions {
     int count = 0;
     bool json = false;
     bool quiet = false;
+    std::string camera = "corrected";
+    bool render = false;
+    bool strict = false;
 };
 
 }  // namespace
@@ -33,7 +42,7 @@ void setup_compile_command(CLI::App& app) {
                     "directory for mirage_layers.inc, SCENE.ini, layers.csv, report.json "
                     "(default build/render/SCENE)");
     sub->add_option("--image", o->compile.image,
-                    "the image the .ini renders (default next to the directory)");
+                    "the image the .ini renders (default SCENE.png in the output directory)");
     auto* tol = sub->add_option("--tolerance", o->tolerance,
                                 "largest path error, pixels (default: Mirage_Tolerance, else 0.5)");
     auto* layers = sub->add_option("--layers", o->layers,
@@ -56,6 +65,15 @@ void setup_compile_command(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--error-map", o->compile.error_map,
                     "also write every pixel centre's path error, pixels, as a float image (.exr)");
+    sub->add_option("--camera", o->camera,
+                    "corrected (every pixel's ray aimed through the layers to where its exact "
+                    "ray ends: a mesh camera) or perspective (the scene's own camera)")
+        ->check(CLI::IsMember({"corrected", "perspective"}))
+        ->capture_default_str();
+    sub->add_flag("--render", o->render,
+                  "then render it with POV-Ray (beside the .ini), the corrected camera's extra "
+                  "top row dropped");
+    sub->add_flag("--strict", o->strict, "exit 3 when the pixels miss the tolerance");
     sub->add_flag("--json", o->json, "print the report as JSON");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     sub->callback([o, tol, layers, count] {
@@ -66,6 +84,7 @@ void setup_compile_command(CLI::App& app) {
                        : o->layers == "index-steps" ? LayerMode::IndexSteps
                                                     : LayerMode::Adaptive;
         if (*count) c.layer_count = o->count;
+        c.camera = o->camera == "perspective" ? CameraModel::Perspective : CameraModel::Corrected;
         auto report = compile_scene(c);
         if (!report) {
             std::cerr << "mirage compile: " << report.message() << "\n";
@@ -76,6 +95,40 @@ void setup_compile_command(CLI::App& app) {
         } else if (!o->quiet) {
             std::cout << report_text(*report);
         }
+        if (o->render) {
+            const std::string dir = fs::path(report->ini_path).parent_path().string();
+            PovrayRenderSettings rs;
+            rs.ini = report->ini_path;
+            rs.work_dir = dir;
+            rs.log = (fs::path(dir) / "povray.log").string();
+            auto r = render_povray(rs);
+            if (!r) {
+                std::cerr << "mirage compile: " << r.message() << "\n";
+                throw CommandFailed{1};
+            }
+            if (r->exit_code != 0) {
+                std::cerr << "mirage compile: POV-Ray failed (exit " << r->exit_code << ") on "
+                          << report->ini_path << ":\n"
+                          << log_tail(rs.log, 20);
+                throw CommandFailed{1};
+            }
+            if (report->camera == "corrected") {
+                if (auto s = crop_mesh_camera_render(report->image_path); !s) {
+                    std::cerr << "mirage compile: " << s.message() << "\n";
+                    throw CommandFailed{1};
+                }
+            }
+            if (!o->quiet && !o->json)
+                std::cout << "  rendered    " << report->image_path << " (POV-Ray "
+                          << sig(r->seconds, 3) << " s"
+                          << (r->log.cpu_seconds
+                                  ? ", " + sig(*r->log.cpu_seconds, 3) + " CPU-seconds"
+                                  : std::string())
+                          << (r->log.max_level ? ", max level " + std::to_string(*r->log.max_level)
+                                               : std::string())
+                          << ")\n";
+        }
+        if (o->strict && !report->within_tolerance) throw CommandFailed{3};
     });
 }
 

@@ -9,6 +9,8 @@
 #include "compile/pixel_check.h"
 #include "compile/stages.h"
 #include "image/image_io.h"
+#include "pov/emit_camera.h"
+#include "pov/emit_layers.h"
 #include "util/format.h"
 #include "util/output_set.h"
 
@@ -88,7 +90,7 @@ void summarize_check(const PixelCheck& pc, const CameraRays& rays, double tolera
     rep.pixel_error_px.assign(n, 0.0f);
     rep.pixel_shift_rows.assign(n, 0.0f);
     rep.pixel_reflection_error_px.assign(n, 0.0f);
-    std::vector<double> seen, shift, seen_all, shift_all;
+    std::vector<double> seen, shift, seen_all, shift_all, camera, camera_all;
     std::vector<LineError> rows(H), cols(W);
     for (int r = 0; r < H; ++r) rows[r].index = r;
     for (int c = 0; c < W; ++c) cols[c].index = c;
@@ -99,6 +101,7 @@ void summarize_check(const PixelCheck& pc, const CameraRays& rays, double tolera
         // Shifts are in rows of the sample grid: per_side of them to a pixel row.
         const float s = pc.shift_rows[g] / static_cast<float>(k);
         seen_all.push_back(e);
+        if (!pc.camera_error_px.empty()) camera_all.push_back(pc.camera_error_px[g]);
         if (std::isfinite(s))
             shift_all.push_back(s);
         else
@@ -113,6 +116,7 @@ void summarize_check(const PixelCheck& pc, const CameraRays& rays, double tolera
         rep.pixel_shift_rows[i] = s;
         rep.pixel_reflection_error_px[i] = pc.reflection_error_px[g];
         seen.push_back(e);
+        if (!pc.camera_error_px.empty()) camera.push_back(pc.camera_error_px[g]);
         if (std::isfinite(s))
             shift.push_back(s);
         else
@@ -128,6 +132,12 @@ void summarize_check(const PixelCheck& pc, const CameraRays& rays, double tolera
     rep.p95_shift_rows_samples = percentile(shift_all, 0.95);
     rep.max_shift_rows_samples =
         shift_all.empty() ? 0.0 : *std::max_element(shift_all.begin(), shift_all.end());
+    if (!camera.empty()) {
+        rep.p95_camera_error_px = percentile(camera, 0.95);
+        rep.max_camera_error_px = *std::max_element(camera.begin(), camera.end());
+        rep.p95_camera_error_px_samples = percentile(camera_all, 0.95);
+        rep.max_camera_error_px_samples = *std::max_element(camera_all.begin(), camera_all.end());
+    }
     auto worst = [](std::vector<LineError> v) {
         std::stable_sort(v.begin(), v.end(), [](const LineError& a, const LineError& b) {
             return a.max_seen_error_px > b.max_seen_error_px;
@@ -137,6 +147,92 @@ void summarize_check(const PixelCheck& pc, const CameraRays& rays, double tolera
     };
     rep.worst_rows = worst(rows);
     rep.worst_columns = worst(cols);
+}
+
+/// The corrected camera's outputs: the mesh camera's include and the scene that renders the
+/// template through it.
+struct CameraTexts {
+    std::string mesh, scene;
+};
+
+/// The samples of a pixel POV-Ray shoots through the corrected camera, as grid offsets
+/// within the pixel's per_side x per_side samples: the centre, and antialiased the four
+/// corner samples too (POV-Ray averages one mesh per sample).
+std::vector<std::pair<int, int>> shot_samples(int per_side, bool antialias) {
+    const int c = per_side / 2;
+    std::vector<std::pair<int, int>> s = {{c, c}};
+    if (antialias && per_side >= 3)
+        for (int dy : {0, per_side - 1})
+            for (int dx : {0, per_side - 1}) s.emplace_back(dx, dy);
+    return s;
+}
+
+/// The mesh camera for the check's chosen directions, and the scene and .ini that render
+/// through it (files.ini is replaced); names the outputs in the report.
+Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const CameraRays& rays,
+                                          const PixelCheck& pc, const fs::path& dir,
+                                          CompileReport& rep, EmittedFiles& files) {
+    const CompileOptions& opt = ctx.options;
+    const int W = rays.width, H = rays.height, k = rays.per_side, GW = rays.grid_width();
+    const auto samples = shot_samples(k, opt.antialias);
+    // The mesh's text, about 60 bytes a face and POV-Ray's memory about 215 bytes a face
+    // (docs/band_designs.md): refused past the limit, with the figure.
+    const double faces = static_cast<double>(W) * H * samples.size();
+    if (faces > kMaxMeshCameraFaces)
+        return make_error("--width " + std::to_string(W) + " --height " + std::to_string(H) +
+                          (samples.size() > 1 ? " antialiased" : std::string()) +
+                          ": the corrected camera would need " + sig(faces, 3) +
+                          " mesh faces (about " + sig(faces * 215.0 / (1 << 30), 3) +
+                          " GiB of POV-Ray's memory), more than the limit of " +
+                          sig(kMaxMeshCameraFaces, 3) +
+                          ": render smaller, or use --camera perspective");
+    MeshCameraSettings ms;
+    ms.width = W;
+    ms.height = H;
+    ms.eye = ctx.camera.location + glm::dvec3(0.0, ctx.settings.ground_height, 0.0);
+    for (const auto& [sx, sy] : samples) {
+        std::vector<glm::dvec3> dirs(static_cast<size_t>(W) * H);
+        for (int row = 0; row < H; ++row)
+            for (int col = 0; col < W; ++col)
+                dirs[static_cast<size_t>(row) * W + col] =
+                    pc.band_direction[static_cast<size_t>(row * k + sy) * GW + (col * k + sx)];
+        ms.samples.push_back(std::move(dirs));
+    }
+    ms.header = {"mirage_camera.inc: the corrected camera of " + rep.name + " at " +
+                     std::to_string(W) + "x" + std::to_string(H) + ", written by mirage compile.",
+                 "Every pixel's ray aimed through the layers of mirage_layers.inc to where its "
+                 "exact ray ends.",
+                 "Do not edit: run mirage compile again."};
+    rep.camera_samples = static_cast<int>(samples.size());
+    rep.camera_path = (dir / "mirage_camera.inc").string();
+    rep.render_scene_path = (dir / (rep.name + "_render.pov")).string();
+    const std::string scene_abs = fs::absolute(opt.scene).string();
+    for (const std::string& p : {scene_abs, rep.camera_path, rep.image_path})
+        if (auto lit = pov_string_literal(p); !lit) return make_error(lit.message());
+    RenderSceneSettings rs;
+    rs.scene = scene_abs;
+    rs.camera_include = rep.camera_path;
+    rs.width = W;
+    rs.height = H;
+    rs.header = {rep.name + "_render.pov: renders " + scene_abs +
+                     " through its corrected camera, written by mirage compile.",
+                 "POV-Ray 3.7 gives image rows 0 and 1 the same faces of a mesh camera: this "
+                 "renders one row more,",
+                 "and the top row is dropped after (mirage compile --render does it)."};
+    IniSettings ini;
+    ini.scene = rep.render_scene_path;
+    ini.output_image = rep.image_path;
+    ini.width = W;
+    ini.height = H + 1;
+    ini.library_paths.push_back(dir.string());
+    for (const auto& p : ctx.library_paths) ini.library_paths.push_back(p);
+    ini.library_paths.push_back(fs::path(scene_abs).parent_path().string());
+    ini.antialias = false;  // POV-Ray averages the meshes' samples itself
+    files.ini = render_ini(ini);
+    CameraTexts t;
+    t.mesh = mesh_camera_include(ms);
+    t.scene = render_scene(rs);
+    return t;
 }
 
 }  // namespace
@@ -205,10 +301,12 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     if (rep.layers > 0) {
         rep.lowest = stack.heights.front();
         rep.highest = stack.heights.back();
-        if (ctx.profile.kind == ProfileKind::Inferior)
+        // (The corrected camera's layers say themselves what they leave out.)
+        const bool fitted = design.mode == "adaptive" || design.mode == "uniform";
+        if (ctx.profile.kind == ProfileKind::Inferior && fitted)
             rep.left_out.push_back("layers below y = " + sig(rep.lowest, 4) +
                                    ": no camera ray turns lower");
-        if (!ctx.air)
+        if (!ctx.air && fitted)
             rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
                                    ": the index is within 1% of eta(infinity), or no camera ray "
                                    "reaches higher");
@@ -233,7 +331,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.csv_path = (abs_dir / "layers.csv").string();
     rep.ini_path = (abs_dir / (rep.name + ".ini")).string();
     rep.report_path = (abs_dir / "report.json").string();
-    rep.image_path = opt.image.empty() ? (abs_dir.parent_path() / (rep.name + ".png")).string()
+    rep.image_path = opt.image.empty() ? (abs_dir / (rep.name + ".png")).string()
                                        : fs::absolute(opt.image).string();
     if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
     const std::vector<std::string> header = {
@@ -249,10 +347,16 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                   sig(rep.p50_error_px, 3) + " px, p95 " + sig(rep.p95_error_px, 3) + " px, max " +
                   sig(rep.max_error_px, 3) + " px (tolerance " + sig(rep.tolerance_px, 3) + " px).",
         "Do not edit: run mirage compile again."};
-    const EmittedFiles files =
+    EmittedFiles files =
         emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path, header);
     clock.done("emit");
+    // The corrected camera: POV-Ray's rays aimed through the layers (stage "camera"), for a
+    // camera with one eye and layers to aim through.
+    const bool corrected = opt.camera == CameraModel::Corrected && !ctx.many_origins &&
+                           stack.boundaries() > 0;
+    rep.camera = corrected ? "corrected" : "perspective";
 
+    CameraTexts camera_text;
     // What every pixel and sample shows: its ray through the rendered layers against the
     // exact ray, to the surfaces they meet (the design's errors above are taken at the
     // scene's edge).
@@ -282,10 +386,26 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         ps.progress = opt.progress;
         ps.general = ctx.air;
         ps.max_dz = ctx.air_max_dz;
+        if (corrected) ps.aim = corrected_camera_aim(ctx, rendered, rays);
         const PixelCheck pc =
             check_pixels(rendered, ctx.profile, ctx.scene, *ctx.accel, object_query(*ctx.accel),
                          rays.direction, rays.pixel_rad, cut_off, ps);
         summarize_check(pc, rays, st.tolerance_px, rep);
+        if (corrected) {
+            // The design's errors at the scene's edge are those of the camera's own rays:
+            // what POV-Ray shows is what the check found.
+            rep.rows_over.clear();
+            rep.pixels_over = 0;
+            summarize_design_errors(
+                std::vector<double>(rep.pixel_error_px.begin(), rep.pixel_error_px.end()),
+                centres, st.tolerance_px, rep);
+            rep.within_tolerance =
+                rep.within_tolerance && rep.max_seen_error_px_samples <= st.tolerance_px;
+            clock.done("check");
+            auto cam = emit_corrected_camera(ctx, rays, pc, abs_dir, rep, files);
+            if (!cam) return cam.error();
+            camera_text = std::move(*cam);
+        }
         if (ctx.many_origins) {
             std::vector<double> err(rep.pixel_error_px.begin(), rep.pixel_error_px.end());
             summarize_design_errors(err, centres, st.tolerance_px, rep);
@@ -297,13 +417,17 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         rep.pixel_reflection_error_px.assign(n, 0.0f);
         rep.samples_per_side = rays.per_side;
     }
-    clock.done("check");
+    clock.done(corrected ? "camera" : "check");
 
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const std::pair<std::string, std::string> texts[] = {{rep.include_path, files.include},
-                                                         {rep.csv_path, files.csv},
-                                                         {rep.ini_path, files.ini},
-                                                         {rep.report_path, report_json(rep)}};
+    std::vector<std::pair<std::string, std::string>> texts = {{rep.include_path, files.include},
+                                                              {rep.csv_path, files.csv},
+                                                              {rep.ini_path, files.ini},
+                                                              {rep.report_path, report_json(rep)}};
+    if (!camera_text.mesh.empty()) {
+        texts.emplace_back(rep.camera_path, std::move(camera_text.mesh));
+        texts.emplace_back(rep.render_scene_path, std::move(camera_text.scene));
+    }
     for (const auto& [path, text] : texts)
         if (auto s = outputs.write_text(path, text); !s) return s.error();
     if (!opt.error_map.empty()) {

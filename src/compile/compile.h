@@ -16,6 +16,10 @@
 
 namespace mirage {
 
+/// How POV-Ray's camera rays leave the eye: each aimed through the bands to where its exact
+/// ray ends (a mesh camera, the default), or as the scene's camera has them.
+enum class CameraModel { Corrected, Perspective };
+
 struct CompileOptions {
     std::string scene;              // the template
     int width = 320, height = 240;  // the render's size
@@ -36,6 +40,7 @@ struct CompileOptions {
     int samples_per_side = 3;        // the check's sub-pixel samples: a grid of this many per
                                      // side in every pixel (1: pixel centres only)
     bool progress = true;            // a progress bar on stderr, shown only on a terminal
+    CameraModel camera = CameraModel::Corrected;
 };
 
 /// An image row or column and the worst errors of its pixels and samples.
@@ -79,6 +84,10 @@ struct CompileReport {
     double p95_seen_error_px_samples = 0.0, max_seen_error_px_samples = 0.0;
     double p95_shift_rows_samples = 0.0, max_shift_rows_samples = 0.0;
     int samples_not_shown = 0;
+    // The camera rays' part of the seen error, without their reflections (with a corrected
+    // camera): pixel centres, and every sample.
+    double p95_camera_error_px = 0.0, max_camera_error_px = 0.0;
+    double p95_camera_error_px_samples = 0.0, max_camera_error_px_samples = 0.0;
     std::vector<LineError> worst_rows, worst_columns;  // by seen error, worst first (5 each)
     std::vector<std::pair<std::string, double>> stage_seconds;  // the pipeline's stages
     int pixels = 0, pixels_over = 0;
@@ -93,7 +102,17 @@ struct CompileReport {
     double lowest = 0.0, highest = 0.0;  // of the boundaries
     double seconds = 0.0;
     std::string include_path, ini_path, csv_path, image_path, report_path;
+    // The corrected camera (CameraModel::Corrected): "corrected" or "perspective", the
+    // samples per pixel POV-Ray shoots through it, its include and the scene that renders
+    // the template through it (empty for a perspective camera).
+    std::string camera = "perspective";
+    int camera_samples = 0;
+    std::string camera_path, render_scene_path;
 };
+
+/// The most faces a corrected camera's meshes may have in all: about 215 bytes of POV-Ray's
+/// memory and 60 bytes of text each (docs/band_designs.md), so 2 GiB of memory.
+inline constexpr double kMaxMeshCameraFaces = 1e7;
 
 /// Compiles the scene; on success every output was written (atomically), on failure none
 /// was changed and the message names the place at fault.
@@ -103,5 +122,8 @@ Result<CompileReport> compile_scene(const CompileOptions& options);
 /// the rest) and as text for people.
 std::string report_json(const CompileReport& report);
 std::string report_text(const CompileReport& report);
+/// One line: within the tolerance, or missed, with the share of pixels over it and the
+/// worst rows.
+std::string report_verdict(const CompileReport& report);
 
 }  // namespace mirage

@@ -140,11 +140,11 @@ double worst_reflection_error(const LayerStack& rendered, const Scene& scene,
     return worst;
 }
 
-PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
-                     const ObjectQuery& objects, const CurvedPropagator& exact,
-                     const PixelCheckSettings& s, const glm::dvec3& dir) {
-    RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, dir, s.layers, s.layers_below);
-    RayEnd e = exact_end(exact, accel, s.eye, dir, 0.0);
+PixelEnds band_against_exact(const LayerStack& rendered, const Scene& scene,
+                             const SceneAccel& accel, const ObjectQuery& objects,
+                             const CurvedPropagator& exact, const PixelCheckSettings& s,
+                             const glm::dvec3& band_dir, const RayEnd& e) {
+    RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, band_dir, s.layers, s.layers_below);
     PixelEnds p;
     p.cut_off = b.cut_off;
     p.band_seen = seen_from(s.eye, b);
@@ -156,6 +156,61 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
             return end_error_rad(o, travelled, b2, e2);
         });
     return p;
+}
+
+PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
+                     const ObjectQuery& objects, const CurvedPropagator& exact,
+                     const PixelCheckSettings& s, size_t i, const glm::dvec3& dir,
+                     double pixel_rad, std::vector<glm::dvec3>& candidates,
+                     glm::dvec3* chosen) {
+    const RayEnd e = exact_end(exact, accel, s.eye, dir, 0.0);
+    if (!s.aim)
+        return band_against_exact(rendered, scene, accel, objects, exact, s, dir, e);
+    candidates.clear();
+    s.aim.candidates(i, dir, ExactEnd{e.hit, e.point, e.direction}, candidates);
+    MIRAGE_CHECK(!candidates.empty());
+    // The camera ray's own end first (what the pixel shows), then its reflections': a
+    // candidate wins with a smaller camera error, or with one as small (to a hundredth of a
+    // pixel) and smaller reflections'.
+    const double same = 0.01 * pixel_rad;
+    PixelEnds best;
+    bool have = false;
+    for (const glm::dvec3& c : candidates) {
+        const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
+        if (p.cut_off && have) continue;
+        const bool better =
+            !have || (best.cut_off && !p.cut_off) ||
+            p.camera_error_rad < best.camera_error_rad - same ||
+            (p.camera_error_rad <= best.camera_error_rad + same &&
+             std::max(p.camera_error_rad, p.reflection_error_rad) <
+                 std::max(best.camera_error_rad, best.reflection_error_rad));
+        if (better) {
+            best = p;
+            have = true;
+            *chosen = c;
+        }
+    }
+    // A band path that meets something the exact path passes by (or passes what the exact
+    // path meets): aimed again through the exact path's point at that distance, a few times.
+    for (int round = 0; round < 4 && s.aim.through && best.camera_error_rad > same; ++round) {
+        const RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, *chosen, s.layers,
+                                  s.layers_below);
+        const glm::dvec3 at = b.hit ? b.point : (e.hit ? e.point : glm::dvec3(0.0));
+        if (!b.hit && !e.hit) break;
+        double r = std::hypot(at.x - s.eye.x, at.z - s.eye.z);
+        if (b.hit && e.hit) {
+            const double rb = std::hypot(b.point.x - s.eye.x, b.point.z - s.eye.z);
+            const double re = std::hypot(e.point.x - s.eye.x, e.point.z - s.eye.z);
+            r = std::min(rb, re);
+        }
+        const auto c = s.aim.through(i, dir, r);
+        if (!c) break;
+        const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, *c, e);
+        if (p.cut_off || !(p.camera_error_rad < best.camera_error_rad - same)) break;
+        best = p;
+        *chosen = *c;
+    }
+    return best;
 }
 
 // With many origins: where a ray ends as a point (a hit, or `far` along its final direction
@@ -340,22 +395,27 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
     const CurvedPropagator exact(cs);
 
     std::vector<PixelEnds> ends(n);
+    PixelCheck out;
+    out.band_direction = directions;
     ProgressBar bar("check", H, s.progress);
     parallel_for(
         H,
         [&](long row) {
+            std::vector<glm::dvec3> candidates;
             for (size_t i = static_cast<size_t>(row) * W; i < static_cast<size_t>(row + 1) * W; ++i)
                 if (!cut_off[i])
-                    ends[i] = pixel_ends(rendered, scene, accel, objects, exact, s, directions[i]);
+                    ends[i] = pixel_ends(rendered, scene, accel, objects, exact, s, i,
+                                         directions[i], pixel_rad[i], candidates,
+                                         &out.band_direction[i]);
             bar.advance();
         },
         0, 1);
     bar.finish();
 
-    PixelCheck out;
     out.seen_error_px.assign(n, 0.0f);
     out.shift_rows.assign(n, 0.0f);
     out.reflection_error_px.assign(n, 0.0f);
+    out.camera_error_px.assign(n, 0.0f);
     parallel_for(
         W,
         [&](long col) {
@@ -377,6 +437,7 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
                 const size_t i = static_cast<size_t>(row) * W + col;
                 if (cut_off[i] || ends[i].cut_off) {
                     out.seen_error_px[i] = out.shift_rows[i] = static_cast<float>(kInf);
+                    out.camera_error_px[i] = static_cast<float>(kInf);
                     continue;
                 }
                 const PixelEnds& p = ends[i];
@@ -384,6 +445,7 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
                     std::max(p.camera_error_rad, p.reflection_error_rad) / pixel_rad[i]);
                 out.reflection_error_px[i] =
                     static_cast<float>(p.reflection_error_rad / pixel_rad[i]);
+                out.camera_error_px[i] = static_cast<float>(p.camera_error_rad / pixel_rad[i]);
                 // The nearest row whose exact ray ends where this band ray does: outward from the
                 // pixel's own row, up and down alternately.
                 double shift = kInf;

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "atmosphere/profile.h"
@@ -20,6 +21,30 @@
 namespace mirage {
 
 class Atmosphere;  // atmosphere/exact_path.h
+
+/// Where an exact camera ray ends: on a surface (hit) or leaving in `direction`.
+struct ExactEnd {
+    bool hit = false;
+    glm::dvec3 point{0.0};
+    glm::dvec3 direction{0.0};
+};
+
+/// A corrected camera: the band directions to try for ray `i`, whose exact ray leaves along
+/// `exact_direction`.  The check follows each through the layers and keeps the one whose
+/// end lies nearest the exact end (the camera ray's first, then its reflections').
+struct BandAim {
+    /// The first directions to try, given where the exact ray ends.
+    std::function<void(size_t i, const glm::dvec3& exact_direction, const ExactEnd& end,
+                       std::vector<glm::dvec3>& candidates)>
+        candidates;
+    /// The direction whose band path passes where the exact path is at horizontal distance
+    /// r from the eye: tried when the best so far meets something at r that the exact ray
+    /// passes by (a band path a little off the exact one near an object's edge).
+    std::function<std::optional<glm::dvec3>(size_t i, const glm::dvec3& exact_direction,
+                                            double r)>
+        through;
+    explicit operator bool() const { return static_cast<bool>(candidates); }
+};
 
 struct PixelCheckSettings {
     int width = 0, height = 0;  // the image; rays are row-major from the top row
@@ -44,6 +69,9 @@ struct PixelCheckSettings {
     const std::vector<glm::dvec3>* origins = nullptr;
     PixelFootprint footprint;
     double far = 0.0;
+    // A corrected camera (one eye only): every band ray leaves along the best of the
+    // directions `aim` offers, instead of along the exact ray's direction.
+    BandAim aim;
 };
 
 struct PixelCheck {
@@ -57,6 +85,10 @@ struct PixelCheck {
     std::vector<float> shift_rows;
     // The reflections' part of seen_error_px (0 without reflections), pixels.
     std::vector<float> reflection_error_px;
+    // With an aim: the direction each band ray left along (one of the aim's candidates).
+    std::vector<glm::dvec3> band_direction;
+    // With an aim: the camera ray's part of seen_error_px, pixels.
+    std::vector<float> camera_error_px;
 };
 
 /// Checks every ray of a width x height grid (with settings.origins, from their own origins:

@@ -9,6 +9,27 @@
 
 namespace mirage {
 
+std::string report_verdict(const CompileReport& r) {
+    if (r.within_tolerance)
+        return "within the tolerance of " + sig(r.tolerance_px, 3) +
+               " px: every pixel's ray ends within it of its exact ray's end";
+    std::string s = "missed the tolerance of " + sig(r.tolerance_px, 3) + " px: " +
+                    sig(100.0 * r.pixels_over / std::max(1, r.pixels), 3) + "% of pixels over it";
+    auto rows = r.rows_over;
+    std::sort(rows.begin(), rows.end(), [](const RowExcess& a, const RowExcess& b) {
+        return a.max_error_px > b.max_error_px;
+    });
+    if (!rows.empty()) {
+        s += ", worst rows";
+        for (size_t i = 0; i < std::min<size_t>(3, rows.size()); ++i)
+            s += (i ? ", " : " ") + std::to_string(rows[i].row) + " (" +
+                 sig(rows[i].max_error_px, 3) + " px)";
+    } else if (r.max_seen_error_px_samples > r.tolerance_px) {
+        s += " at the centres, samples up to " + sig(r.max_seen_error_px_samples, 3) + " px";
+    }
+    return s;
+}
+
 std::string report_json(const CompileReport& r) {
     nlohmann::json j;
     j["scene"] = r.scene;
@@ -80,6 +101,19 @@ std::string report_json(const CompileReport& r) {
     j["ini"] = r.ini_path;
     j["csv"] = r.csv_path;
     j["image"] = r.image_path;
+    j["report"] = r.report_path;
+    j["camera"] = r.camera;
+    if (r.camera == "corrected") {
+        j["camera_samples_per_pixel"] = r.camera_samples;
+        j["camera_include"] = r.camera_path;
+        j["render_scene"] = r.render_scene_path;
+        auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf"); };
+        j["p95_camera_error_px"] = num(r.p95_camera_error_px);
+        j["max_camera_error_px"] = num(r.max_camera_error_px);
+        j["p95_camera_error_px_samples"] = num(r.p95_camera_error_px_samples);
+        j["max_camera_error_px_samples"] = num(r.max_camera_error_px_samples);
+    }
+    j["verdict"] = report_verdict(r);
     return j.dump(2) + "\n";
 }
 
@@ -137,8 +171,19 @@ std::string report_text(const CompileReport& r) {
       << r.max_trace_level << " of 256 with reflections\n";
     for (const auto& l : r.left_out) s << "  left out    " << l << "\n";
     for (const auto& w : r.warnings) s << "  warning     " << w << "\n";
+    if (r.camera == "corrected")
+        s << "  camera      corrected: every pixel's ray aimed through the layers to its exact "
+             "end ("
+          << r.camera_samples << (r.camera_samples == 1 ? " ray" : " rays")
+          << " per pixel); without reflections p95 " << sig(r.p95_camera_error_px, 3)
+          << " px, max " << sig(r.max_camera_error_px, 3) << " px (samples: p95 "
+          << sig(r.p95_camera_error_px_samples, 3) << " px, max "
+          << sig(r.max_camera_error_px_samples, 3) << " px)\n";
     s << "  wrote       " << r.include_path << "\n              " << r.ini_path
-      << "\n              " << r.csv_path << "\n";
+      << "\n              " << r.csv_path << "\n              " << r.report_path << "\n";
+    if (r.camera == "corrected")
+        s << "              " << r.camera_path << "\n              " << r.render_scene_path
+          << "\n";
     s << "  time        " << sig(r.seconds, 3) << " s";
     if (!r.stage_seconds.empty()) {
         s << " (";
@@ -148,6 +193,7 @@ std::string report_text(const CompileReport& r) {
         s << ")";
     }
     s << "\n";
+    s << "  verdict     " << report_verdict(r) << "\n";
     return s.str();
 }
 

@@ -14,6 +14,7 @@
 #include "layers/outcome.h"
 #include "layers/revolution.h"
 #include "util/format.h"
+#include "util/check.h"
 #include "util/parallel.h"
 
 namespace mirage {
@@ -60,6 +61,27 @@ double top_reached(const CompileContext& ctx, const CameraRays& rays) {
     return std::min(
         t, std::max(ctx.eye_y * 1.001,
                     height_of_excess(ctx.profile, eta_sq_excess(ctx.profile, kInf) * 0.99)));
+}
+
+// The top of the corrected camera's layers: the highest point a camera ray reaches inside
+// the scene, no higher than where the index excess left to gain, eta^2(infinity) - eta^2(y),
+// is below (p / 10)^2 for the finest pixel angle p: a ray at elevation e that rises from
+// there turns by at most about sqrt(that) <= p / 10 more, the worst case being a level one
+// (e^2 grows by the excess gained).
+double corrected_camera_top(const CompileContext& ctx, const CameraRays& rays) {
+    std::vector<double> top(rays.size(), ctx.eye_y);
+    parallel_for(static_cast<long>(rays.size()), [&](long i) {
+        auto ex = make_exact_ray(ctx.profile, ctx.eye_y, M_PI / 2 - rays.elevation[i]);
+        if (!ex) return;
+        top[i] = height_at(*ex, std::min(rays.exit_dz[i], ex->hits_ground ? ex->dz_ground : kInf));
+    });
+    double finest = kInf;
+    for (double p : rays.pixel_rad) finest = std::min(finest, p);
+    const double ex_inf = eta_sq_excess(ctx.profile, kInf);
+    const double left = std::min(0.5 * std::fabs(ex_inf), 0.01 * finest * finest);
+    const double flat = height_of_excess(ctx.profile, ex_inf - std::copysign(left, ex_inf));
+    const double t = *std::max_element(top.begin(), top.end());
+    return std::max(ctx.eye_y * 1.001, std::min(t, std::isfinite(flat) ? flat : t));
 }
 
 // The same in real air, no higher than the model's top (above it n no longer changes).
@@ -177,6 +199,54 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
 }
 
 }  // namespace
+
+LayerStack corrected_camera_layers(const Profile& profile, double eye_y, int count, double top) {
+    MIRAGE_CHECK(count >= 1 && eye_y > 0.0);
+    const double ex0 = eta_sq_excess(profile, 0.0), ex_eye = eta_sq_excess(profile, eye_y);
+    const double ex_top = eta_sq_excess(profile, std::max(top, eye_y));
+    // Two thirds of the boundaries below the eye, where the rays turn over hot ground (the
+    // inferior mirage), or a third where they turn above it (looming), the rest on the other
+    // side; none above `top`.
+    const bool turns_below = std::fabs(ex_eye - ex0) >= std::fabs(ex_top - ex_eye);
+    const int above = top > eye_y ? std::max(1, turns_below ? count / 3 : count - count / 3) : 0;
+    const int below = std::max(1, count - above);
+    LayerStack s;
+    s.profile = profile;
+    // Below: boundaries at excess fractions k / (below + 1/2) from the ground's to the eye's,
+    // the eye's layer from the last of them; the ground layer holds eta0, the others the
+    // excess midway between their boundaries.
+    s.excess.push_back(ex0);
+    for (int k = 1; k <= below; ++k) {
+        const double f = k / (below + 0.5);
+        s.heights.push_back(height_of_excess(profile, ex0 + f * (ex_eye - ex0)));
+        if (k < below)
+            s.excess.push_back(ex0 + (k + 0.5) / (below + 0.5) * (ex_eye - ex0));
+    }
+    s.excess.push_back(ex_eye);
+    // Above: from half a step over the eye up to `top`; the half-space over them holds
+    // eta(infinity), so that every ray that leaves for the sky leaves in its exact direction.
+    for (int k = 1; k <= above; ++k) {
+        const double f = (k - 0.5) / (above - 0.5);  // the last one at `top`
+        s.heights.push_back(height_of_excess(profile, ex_eye + f * (ex_top - ex_eye)));
+        s.excess.push_back(k < above ? ex_eye + k / (above - 0.5) * (ex_top - ex_eye)
+                                     : eta_sq_excess(profile, kInf));
+    }
+    // Heights strictly ascending, off the eye.
+    std::vector<double> h;
+    std::vector<double> ex = {s.excess.front()};
+    for (size_t j = 0; j < s.heights.size(); ++j) {
+        const double y = s.heights[j];
+        if (!std::isfinite(y) || y <= 0.0 || (!h.empty() && y <= h.back())) continue;
+        h.push_back(y);
+        ex.push_back(s.excess[j + 1]);
+    }
+    move_off_camera(h, eye_y);
+    s.heights = h;
+    s.excess = ex;
+    // The eye's layer holds the eye's index exactly.
+    s.excess[s.layer_at(eye_y)] = ex_eye;
+    return s;
+}
 
 ObjectQuery object_query(const SceneAccel& accel) {
     // Most pieces of a band path lie far from every finite object: a slab test against their
@@ -360,6 +430,25 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
     if (straight_max <= st.tolerance_px) {
         d.left_out.push_back("every layer: no camera ray bends by " + sig(st.tolerance_px, 3) +
                              " px (largest bend " + sig(straight_max, 3) + " px)");
+        return d;
+    }
+    if (ctx.options.camera == CameraModel::Corrected) {
+        // The corrected camera aims every ray through where its exact ray ends: the layers
+        // only carry the paths' smooth bending, at equal steps of eta^2.
+        d.mode = "index steps";
+        const double top = corrected_camera_top(ctx, rays);
+        int count = st.layer_count > 0 ? st.layer_count : kCorrectedCameraLayers;
+        for (int attempt = 0; attempt < 12; ++attempt) {
+            d.stack = merge_invisible_boundaries(
+                corrected_camera_layers(ctx.profile, ctx.eye_y, count, top), ctx.eye_y);
+            d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
+            if (d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
+            count = fewer_steps_for_trace_level(d, count, "steps");
+        }
+        warn_past_trace_level_ceiling(d);
+        d.left_out.push_back("layers above y = " + sig(top, 4) +
+                             ": no camera ray reaches higher inside the scene, or a ray rising "
+                             "from there turns by less than a tenth of a pixel more");
         return d;
     }
     // Fit to the rays of a few columns spread from the image's centre to its edge (their rows

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "compile/compile.h"
+#include "compile/pixel_check.h"
 #include "layers/band_tracer3d.h"
 #include "layers/stack.h"
 #include "load/atmosphere_settings.h"
@@ -150,6 +151,15 @@ void warn_past_trace_level_ceiling(Design& d);
 std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& rendered,
                                   const CameraRays& rays, int* max_crossings = nullptr);
 
+/// The corrected camera's layers when no count is asked for (Mirage_Layer_Count, --count).
+inline constexpr int kCorrectedCameraLayers = 24;
+
+/// The layers the corrected camera sees through (exponential profiles): `count` boundaries
+/// at equal steps of eta^2, most on the side of the eye where the rays turn, none above
+/// `top`; the ground's layer holds eta0, the eye's eta(eye), the half-space over the top
+/// eta(infinity), the others the value midway between their boundaries.
+LayerStack corrected_camera_layers(const Profile& profile, double eye_y, int count, double top);
+
 /// Stage "design": the layers for the rays (the pixel centres).
 Result<Design> design_layers(const CompileContext& ctx, const CameraRays& centres);
 
@@ -183,6 +193,14 @@ double layers_reach(const CompileContext& ctx, const LayerStack& rendered, const
 /// ctx.layers_below_box.  Nothing otherwise.
 std::optional<double> layers_reach_below(const CompileContext& ctx, const LayerStack& rendered,
                                          const CameraRays& rays, double reach);
+
+/// Stage "camera": the corrected camera's aim for the check (compile/pixel_check.h): for ray
+/// i of `rays`, the direction as the camera has it and the direction whose path through the
+/// rendered layers passes through the point where the exact ray ends (for a ray that leaves
+/// the scene for the sky, its exact height at the scene's edge), each carried to the float
+/// precision of POV-Ray's mesh camera.  ctx and rays must outlive it.
+BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& rendered,
+                             const CameraRays& rays);
 
 /// The texts of the outputs, by file name.
 struct EmittedFiles {

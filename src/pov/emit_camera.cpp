@@ -1,0 +1,151 @@
+#include "pov/emit_camera.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "image/image_io.h"
+#include "layers/band_aim.h"
+#include "util/check.h"
+#include "util/format.h"
+
+namespace mirage {
+
+namespace {
+
+// 2^-40: the mesh's scale (exact in decimal to 17 digits: the nearest double is 2^-40).
+constexpr const char* kMeshScale = "9.0949470177292824e-13";
+
+void append_float(std::string& out, float v) {
+    char buf[32];
+    if (v == 0.0f) v = 0.0f;  // no "-0"
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    out.append(buf, r.ptr);
+}
+
+void append_int(std::string& out, long v) {
+    char buf[24];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    out.append(buf, r.ptr);
+}
+
+void append_vertex(std::string& out, const glm::vec3& p) {
+    out += '<';
+    append_float(out, p.x);
+    out += ',';
+    append_float(out, p.y);
+    out += ',';
+    append_float(out, p.z);
+    out += '>';
+}
+
+}  // namespace
+
+std::string mesh_camera_include(const MeshCameraSettings& st) {
+    MIRAGE_CHECK(st.width > 0 && st.height > 0 && !st.samples.empty());
+    const size_t faces = static_cast<size_t>(st.width) * st.height;
+    std::string out;
+    out.reserve(st.samples.size() * faces * 64 + 4096);
+    for (const auto& line : st.header) out += "// " + line + "\n";
+    out += "//\n// One mesh per sample of a pixel; face y * " + std::to_string(st.width) +
+           " + x is pixel (x, y)'s ray, along its flat normal from the eye.\n\n";
+    for (size_t m = 0; m < st.samples.size(); ++m) {
+        const std::vector<glm::dvec3>& dirs = st.samples[m];
+        MIRAGE_CHECK(dirs.size() == faces);
+        out += "#declare Mirage_Camera_Mesh_" + std::to_string(m) + " = mesh2 {\n";
+        out += "    vertex_vectors { ";
+        append_int(out, static_cast<long>(1 + 2 * faces));
+        out += ",\n<0,0,0>";
+        for (size_t f = 0; f < faces; ++f) {
+            const MeshFace face = mesh_face(mesh_direction(dirs[f]));
+            out += ',';
+            append_vertex(out, face.p2);
+            out += ',';
+            append_vertex(out, face.p3);
+            if (f % 4 == 3) out += '\n';
+        }
+        out += "\n    }\n    face_indices { ";
+        append_int(out, static_cast<long>(faces));
+        out += ",\n";
+        for (size_t f = 0; f < faces; ++f) {
+            out += "<0,";
+            append_int(out, static_cast<long>(1 + 2 * f));
+            out += ',';
+            append_int(out, static_cast<long>(2 + 2 * f));
+            out += f + 1 < faces ? ">," : ">";
+            if (f % 8 == 7) out += '\n';
+        }
+        out += "\n    }\n}\n\n";
+    }
+    out += "#declare Mirage_Camera = camera {\n    mesh_camera {\n        ";
+    out += std::to_string(st.samples.size()) + " 0\n";
+    const std::string eye = "<" + sig(st.eye.x, 17) + ", " + sig(st.eye.y, 17) + ", " +
+                            sig(st.eye.z, 17) + ">";
+    for (size_t m = 0; m < st.samples.size(); ++m)
+        out += "        mesh { Mirage_Camera_Mesh_" + std::to_string(m) + " scale " + kMeshScale +
+               " translate " + eye + " }\n";
+    out += "    }\n    location <0, 0, 0>\n    direction <0, 0, 1>\n}\n";
+    return out;
+}
+
+Result<std::string> pov_string_literal(const std::string& text) {
+    std::string out = "\"";
+    for (unsigned char c : text) {
+        if (c < 0x20 || c == 0x7f) {
+            std::string shown;
+            for (unsigned char d : text) {
+                if (d < 0x20 || d == 0x7f) {
+                    char hex[8];
+                    std::snprintf(hex, sizeof hex, "\\x%02x", d);
+                    shown += hex;
+                } else {
+                    shown += static_cast<char>(d);
+                }
+            }
+            return make_error(shown + ": a POV-Ray string cannot hold a control character");
+        }
+        if (c == '"' || c == '\\') out += '\\';
+        out += static_cast<char>(c);
+    }
+    return out + "\"";
+}
+
+std::string render_scene(const RenderSceneSettings& st) {
+    // The caller checked that the paths are POV-Ray strings.
+    const std::string scene = *pov_string_literal(st.scene);
+    const std::string camera = *pov_string_literal(st.camera_include);
+    std::string out;
+    for (const auto& line : st.header) out += "// " + line + "\n";
+    out += "#version 3.7;\n\n";
+    out += "#if (image_width != " + std::to_string(st.width) +
+           " | image_height != " + std::to_string(st.height + 1) + ")\n";
+    out += "    #error concat(\"mirage: this camera was solved for " + std::to_string(st.width) +
+           "x" + std::to_string(st.height) + " (rendered " + std::to_string(st.width) + "x" +
+           std::to_string(st.height + 1) +
+           ", the top row dropped after), not \", str(image_width, 0, 0), \"x\", "
+           "str(image_height, 0, 0), \": run mirage compile again for that size\")\n";
+    out += "#end\n\n";
+    out += "#declare Mirage_Corrected_Camera = 1;\n";
+    out += "#include " + scene + "\n\n";
+    out += "#ifndef (Mirage_Inc_Temp)\n";
+    out += "    #error concat(\"mirage: \", " + scene +
+           ", \" never includes mirage.inc: the atmosphere is missing (add #include "
+           "\\\"mirage.inc\\\" after its #version)\")\n";
+    out += "#end\n\n";
+    out += "// The scene's camera replaced by the corrected one.\n";
+    out += "#include " + camera + "\n";
+    out += "camera { Mirage_Camera }\n";
+    return out;
+}
+
+Status crop_mesh_camera_render(const std::string& png) {
+    auto im = read_image(png);
+    if (!im) return im.error();
+    if (im->height < 2) return make_error(png + ": not a mesh camera's render (one row)");
+    Image cropped(im->width, im->height - 1);
+    std::copy(im->pixels.begin() + static_cast<std::ptrdiff_t>(im->index(0, 1)), im->pixels.end(),
+              cropped.pixels.begin());
+    return write_png_codes(cropped, png);
+}
+
+}  // namespace mirage
