@@ -21,6 +21,7 @@
 #include "compare/compare.h"
 #include "compile/compile.h"
 #include "load/mirage_scene.h"
+#include "pov/emit_camera.h"
 #include "trace/object_query.h"
 #include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
@@ -465,6 +466,8 @@ Result<FrameRecord> render_frame(const Animation& a, int number) {
         if (run->exit_code != 0 || !fs::exists(rendered, ec))
             return failed("POV-Ray failed (exit " + std::to_string(run->exit_code) + ", " + log +
                           "): " + last_line(log));
+        if (compiled->camera == "corrected")
+            if (auto s = crop_mesh_camera_render(rendered); !s) return failed(s.message());
         const std::string undated = (work / "frame.png").string();
         if (auto s = copy_png_without_dates(rendered, undated); !s) return failed(s.message());
         fs::remove(rendered, ec);

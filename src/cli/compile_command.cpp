@@ -6,7 +6,6 @@
 #include "cli/commands.h"
 #include "compare/povray_render.h"
 #include "compile/compile.h"
-#include "pov/emit_camera.h"
 #include "util/format.h"
 
 namespace mirage {
@@ -101,6 +100,7 @@ void setup_compile_command(CLI::App& app) {
             rs.ini = report->ini_path;
             rs.work_dir = dir;
             rs.log = (fs::path(dir) / "povray.log").string();
+            if (report->camera == "corrected") rs.crop_top_row = report->image_path;
             auto r = render_povray(rs);
             if (!r) {
                 std::cerr << "mirage compile: " << r.message() << "\n";
@@ -111,12 +111,6 @@ void setup_compile_command(CLI::App& app) {
                           << report->ini_path << ":\n"
                           << log_tail(rs.log, 20);
                 throw CommandFailed{1};
-            }
-            if (report->camera == "corrected") {
-                if (auto s = crop_mesh_camera_render(report->image_path); !s) {
-                    std::cerr << "mirage compile: " << s.message() << "\n";
-                    throw CommandFailed{1};
-                }
             }
             if (!o->quiet && !o->json)
                 std::cout << "  rendered    " << report->image_path << " (POV-Ray "

@@ -141,8 +141,9 @@ struct CompiledRender : PovrayRender {
 
 /// Renders `ini` with POV-Ray.  An error when POV-Ray cannot be started or a file cannot be
 /// put in place; a render that fails is `ok == false`, with its reason.
-Result<CompiledRender> render_compiled(Sweep& sw, const std::string& ini, const fs::path& dir,
+Result<CompiledRender> render_compiled(Sweep& sw, const CompileReport& rep, const fs::path& dir,
                                        const std::string& image) {
+    const std::string& ini = rep.ini_path;
     PovrayRenderSettings ps;
     ps.povray = sw.opt.povray;
     ps.ini = ini;
@@ -152,6 +153,7 @@ Result<CompiledRender> render_compiled(Sweep& sw, const std::string& ini, const 
     ps.log = temporary_name_for(r.log_path);
     ps.output = temporary_image_name(image);
     ps.threads = sw.opt.threads;
+    if (rep.camera == "corrected") ps.crop_top_row = ps.output;
     auto run = render_povray(ps);
     if (!run) return run.error();
     static_cast<PovrayRender&>(r) = *run;
@@ -206,6 +208,7 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     // The renders compared are not antialiased: the check of the pixel centres is enough.
     c.samples_per_side = 1;
     c.progress = false;
+    c.camera = CameraModel::Perspective;
     if (model == CompareModel::UniformBands) {
         c.layers = LayerMode::Uniform;
         c.layer_count = static_cast<int>(std::lround(setting));
@@ -233,7 +236,7 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
         if (sw.compile_warnings.insert(w).second) sw.note(label + ": mirage compile: " + w);
     }
 
-    auto run = render_compiled(sw, rep->ini_path, dir, sw.staged(image).string());
+    auto run = render_compiled(sw, *rep, dir, sw.staged(image).string());
     if (!run) return run.error();
     if (!run->ok) {
         sw.note(label + ": skipped, " + run->failure + ":\n" + log_tail(run->log_path, 5));
@@ -343,7 +346,7 @@ Status run_straight(Sweep& sw) {
         sw.note("straight rays: not compared, mirage compile failed: " + rep.message());
         return Ok{};
     }
-    auto run = render_compiled(sw, rep->ini_path, dir, c.image);
+    auto run = render_compiled(sw, *rep, dir, c.image);
     if (!run) return run.error();
     if (!run->ok) {
         sw.note("straight rays: not compared, " + run->failure);

@@ -163,6 +163,9 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
     co.library_paths = opt.library_paths;
     co.progress = false;
     co.samples_per_side = 3;
+    // The designs below are those of the scene's own camera; the corrected camera is a row
+    // of its own.
+    co.camera = CameraModel::Perspective;
     auto ctx_r = compile_settings(co);
     if (!ctx_r) return ctx_r.error();
     CompileContext& ctx = *ctx_r;
@@ -261,6 +264,7 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
         ps.ini = rep->ini_path;
         ps.work_dir = c.out_dir;
         ps.log = c.out_dir + "/povray.log";
+        if (rep->camera == "corrected") ps.crop_top_row = rep->image_path;
         auto r = render_povray(ps);
         if (!r) return r.error();
         if (r->exit_code != 0) return make_error("POV-Ray failed: " + log_tail(ps.log, 5));

@@ -1,5 +1,7 @@
 #include "compare/povray_render.h"
 
+#include "pov/emit_camera.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -46,6 +48,8 @@ Result<PovrayRender> render_povray(const PovrayRenderSettings& st) {
     r.exit_code = run->exit_code;
     r.seconds = run->seconds;
     if (auto text = read_file(st.log)) r.log = parse_povray_log(*text);
+    if (r.exit_code == 0 && !st.crop_top_row.empty())
+        if (auto s = crop_mesh_camera_render(st.crop_top_row); !s) return s.error();
     return r;
 }
 

@@ -31,6 +31,9 @@ struct PovrayRenderSettings {
     std::string log;                // console output goes here (replaced)
     std::string output;             // overrides the .ini's image (+O); empty: the .ini's
     int threads = 0;                // render threads (+WT); 0: POV-Ray's default (all cores)
+    // After a render that succeeded, the image whose top row to drop: a corrected camera's
+    // .ini renders one row more (pov/emit_camera.h).  Empty: none.
+    std::string crop_top_row;
 };
 
 struct PovrayRender {

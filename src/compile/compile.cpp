@@ -169,9 +169,10 @@ std::vector<std::pair<int, int>> shot_samples(int per_side, bool antialias) {
 
 /// The mesh camera for the check's chosen directions, and the scene and .ini that render
 /// through it (files.ini is replaced); names the outputs in the report.
-Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const CameraRays& rays,
-                                          const PixelCheck& pc, const fs::path& dir,
-                                          CompileReport& rep, EmittedFiles& files) {
+Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const LayerStack& design_stack,
+                                          const CameraRays& rays, const PixelCheck& pc,
+                                          const fs::path& dir, CompileReport& rep,
+                                          EmittedFiles& files) {
     const CompileOptions& opt = ctx.options;
     const int W = rays.width, H = rays.height, k = rays.per_side, GW = rays.grid_width();
     const auto samples = shot_samples(k, opt.antialias);
@@ -204,6 +205,10 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Camer
                  "exact ray ends.",
                  "Do not edit: run mirage compile again."};
     rep.camera_samples = static_cast<int>(samples.size());
+    // The trace levels of the rays POV-Ray shoots now.
+    CameraRays shot;
+    for (const auto& d : ms.samples) shot.direction.insert(shot.direction.end(), d.begin(), d.end());
+    rep.max_trace_level = deepest_trace_level(ctx, ctx.rendered(design_stack), shot);
     rep.camera_path = (dir / "mirage_camera.inc").string();
     rep.render_scene_path = (dir / (rep.name + "_render.pov")).string();
     const std::string scene_abs = fs::absolute(opt.scene).string();
@@ -402,7 +407,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             rep.within_tolerance =
                 rep.within_tolerance && rep.max_seen_error_px_samples <= st.tolerance_px;
             clock.done("check");
-            auto cam = emit_corrected_camera(ctx, rays, pc, abs_dir, rep, files);
+            auto cam = emit_corrected_camera(ctx, stack, rays, pc, abs_dir, rep, files);
             if (!cam) return cam.error();
             camera_text = std::move(*cam);
         }

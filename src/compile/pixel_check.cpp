@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <thread>
+#include <cstdio>
+#include <cstdlib>
 
 #include "scene/camera.h"
 #include "trace/curved_propagator.h"
@@ -107,6 +109,7 @@ struct PixelEnds {
     glm::dvec3 band_seen{0.0}, exact_seen{0.0};
     double camera_error_rad = 0.0;
     double reflection_error_rad = 0.0;
+    RayEnd band;  // where the band ray ended
 };
 
 // The reflections a pixel's band and exact rays follow while they meet the same mirror, and
@@ -147,6 +150,7 @@ PixelEnds band_against_exact(const LayerStack& rendered, const Scene& scene,
     RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, band_dir, s.layers, s.layers_below);
     PixelEnds p;
     p.cut_off = b.cut_off;
+    p.band = b;
     p.band_seen = seen_from(s.eye, b);
     p.exact_seen = seen_from(s.eye, e);
     p.camera_error_rad = end_error_rad(s.eye, 0.0, b, e);
@@ -176,6 +180,8 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     PixelEnds best;
     bool have = false;
     for (const glm::dvec3& c : candidates) {
+        // The candidates come best first: one within a hundredth of a pixel is kept.
+        if (have && !best.cut_off && best.camera_error_rad <= same) break;
         const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
         if (p.cut_off && have) continue;
         const bool better =
@@ -193,8 +199,7 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     // A band path that meets something the exact path passes by (or passes what the exact
     // path meets): aimed again through the exact path's point at that distance, a few times.
     for (int round = 0; round < 4 && s.aim.through && best.camera_error_rad > same; ++round) {
-        const RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, *chosen, s.layers,
-                                  s.layers_below);
+        const RayEnd& b = best.band;
         const glm::dvec3 at = b.hit ? b.point : (e.hit ? e.point : glm::dvec3(0.0));
         if (!b.hit && !e.hit) break;
         double r = std::hypot(at.x - s.eye.x, at.z - s.eye.z);
@@ -209,6 +214,17 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
         if (p.cut_off || !(p.camera_error_rad < best.camera_error_rad - same)) break;
         best = p;
         *chosen = *c;
+    }
+    if (std::getenv("MIRAGE_DEBUG_AIM") && best.camera_error_rad > std::atof(std::getenv("MIRAGE_DEBUG_AIM")) * pixel_rad) {
+        std::fprintf(stderr, "ray %zu: exact hit %d at (%.9g %.9g %.9g) dir (%g %g %g); %zu candidates, best camera err %g px refl %g\n",
+                     i, e.hit, e.point.x, e.point.y, e.point.z, e.direction.x, e.direction.y, e.direction.z,
+                     candidates.size(), best.camera_error_rad/pixel_rad, best.reflection_error_rad/pixel_rad);
+        for (const auto& c : candidates) {
+            const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
+            RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, c, s.layers, s.layers_below);
+            std::fprintf(stderr, "   cand (%.9g %.9g %.9g): err %g px cut %d hit %d at (%.9g %.9g %.9g) prim %d dir (%g %g %g)\n", c.x, c.y, c.z,
+                         p.camera_error_rad/pixel_rad, p.cut_off, b.hit, b.point.x, b.point.y, b.point.z, b.primitive, b.direction.x, b.direction.y, b.direction.z);
+        }
     }
     return best;
 }

@@ -33,7 +33,8 @@ struct ExactEnd {
 /// `exact_direction`.  The check follows each through the layers and keeps the one whose
 /// end lies nearest the exact end (the camera ray's first, then its reflections').
 struct BandAim {
-    /// The first directions to try, given where the exact ray ends.
+    /// The first directions to try, given where the exact ray ends, the likeliest first (the
+    /// check stops at one that ends within a hundredth of a pixel of the exact end).
     std::function<void(size_t i, const glm::dvec3& exact_direction, const ExactEnd& end,
                        std::vector<glm::dvec3>& candidates)>
         candidates;

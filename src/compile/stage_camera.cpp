@@ -18,16 +18,26 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
     const glm::dvec3 eye = ctx.camera.location;
     // The direction in d's vertical plane whose band path passes through (r, y), if any near
     // ray i's own elevation.
-    auto through = [&rays, walk](size_t i, const glm::dvec3& d, double r,
-                                 double y) -> std::optional<glm::dvec3> {
+    // Each ray's aim as an offset from its own elevation, for its right-hand neighbour's
+    // search to start from (a row is aimed by one thread, left to right).
+    const int grid_width = rays.grid_width();
+    auto offsets = std::make_shared<std::vector<double>>(rays.size(), 0.0);
+    auto through = [&rays, walk, offsets, grid_width](size_t i, const glm::dvec3& d, double r,
+                                                      double y) -> std::optional<glm::dvec3> {
         const double hl = std::hypot(d.x, d.z);
         if (!(hl > 0.0) || !(r > 0.0) || !std::isfinite(y)) return std::nullopt;
         const double pixel = rays.pixel_rad[i];
         // A thousandth of a pixel, as a height at r.
         const double tolerance = std::max(1e-3 * pixel * r, 1e-12 * (1.0 + std::fabs(y)));
-        const auto e = elevation_through(*walk, r, y, rays.elevation[i], pixel, tolerance,
-                                         std::min(0.5, 2000.0 * pixel));
+        const double guess =
+            rays.elevation[i] + (i % grid_width != 0 ? (*offsets)[i - 1] : 0.0);
+        auto e = elevation_through(*walk, r, y, guess, pixel, tolerance,
+                                   std::min(0.5, 2000.0 * pixel));
+        if (!e && guess != rays.elevation[i])
+            e = elevation_through(*walk, r, y, rays.elevation[i], pixel, tolerance,
+                                  std::min(0.5, 2000.0 * pixel));
         if (!e) return std::nullopt;
+        (*offsets)[i] = *e - rays.elevation[i];
         const glm::dvec3 aimed(std::cos(*e) * d.x / hl, std::sin(*e), std::cos(*e) * d.z / hl);
         return mesh_camera_direction(aimed);
     };
@@ -39,21 +49,28 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
         return o.ground ? std::numeric_limits<double>::quiet_NaN() : o.y;
     };
     BandAim aim;
-    aim.candidates = [&rays, eye, through, exact_height](size_t i, const glm::dvec3& d,
+    aim.candidates = [&rays, eye, walk, through, exact_height](size_t i, const glm::dvec3& d,
                                                          const ExactEnd& end,
                                                          std::vector<glm::dvec3>& out) {
+        const double hl = std::hypot(d.x, d.z);
+        if (end.hit) {
+            // Through the surface the exact ray meets.
+            if (auto c = through(i, d, std::hypot(end.point.x - eye.x, end.point.z - eye.z),
+                                 end.point.y))
+                out.push_back(*c);
+        } else {
+            // Leaving for the sky in the exact ray's final direction: exact above the layers,
+            // whatever the float iors make of the index over the top.
+            const double final_elevation = std::asin(std::clamp(end.direction.y, -1.0, 1.0));
+            if (const auto e = walk->elevation_leaving_at(final_elevation); e && hl > 0.0)
+                out.push_back(mesh_camera_direction(
+                    glm::dvec3(std::cos(*e) * d.x / hl, std::sin(*e), std::cos(*e) * d.z / hl)));
+            // Through the exact path's point at the scene's edge.
+            const double r = rays.exit_dz[i];
+            if (auto c = through(i, d, r, exact_height(i, r))) out.push_back(*c);
+        }
         // As the camera has it, carried to the mesh's float precision.
         out.push_back(mesh_camera_direction(d));
-        // Through where the exact ray ends: the surface it meets, or where it leaves the
-        // scene for the sky (its height at the scene's edge).
-        std::optional<glm::dvec3> c;
-        if (end.hit) {
-            c = through(i, d, std::hypot(end.point.x - eye.x, end.point.z - eye.z), end.point.y);
-        } else {
-            const double r = rays.exit_dz[i];
-            c = through(i, d, r, exact_height(i, r));
-        }
-        if (c) out.push_back(*c);
     };
     aim.through = [through, exact_height](size_t i, const glm::dvec3& d, double r) {
         return through(i, d, r, exact_height(i, r));

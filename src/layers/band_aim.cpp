@@ -37,6 +37,17 @@ BandWalk::BandWalk(const RevolutionStack& s) : eye_y_(s.eye_y) {
         if (air(to)) return static_cast<double>(ior(from));
         return static_cast<double>(ior(from) / ior(to));
     };
+    // POV-Ray passes a ratio within 1e-10 of 1 freely (revolution.cpp does the same).
+    auto effective = [&](int from, int to) {
+        const double r = ratio(from, to);
+        return std::fabs(r - 1.0) < 1e-10 ? 1.0 : r;
+    };
+    ratio_down_.assign(N + 1, 1.0);
+    ratio_up_.assign(N + 1, 1.0);
+    for (int k = 0; k <= N; ++k) {
+        if (k > 0) ratio_down_[k] = effective(k, k - 1);
+        if (k < N) ratio_up_[k] = effective(k, k + 1);
+    }
     cos_factor_.assign(N + 1, 1.0);
     for (int k = k_cam_ - 1; k >= 0; --k) cos_factor_[k] = cos_factor_[k + 1] * ratio(k + 1, k);
     for (int k = k_cam_ + 1; k <= N; ++k) cos_factor_[k] = cos_factor_[k - 1] * ratio(k - 1, k);
@@ -76,7 +87,12 @@ BandWalk::Walk BandWalk::walk(double elevation, double r, int max_events) const 
             return w;
         }
         const int next = k + dir;
-        const double cn = cos_factor_[next] * c0;
+        const double ratio = dir < 0 ? ratio_down_[k] : ratio_up_[k];
+        if (ratio == 1.0) {  // passed freely
+            k = next;
+            continue;
+        }
+        const double cn = c * ratio;
         if (cn >= 1.0) {  // total internal reflection
             dir = -dir;
             ++w.turns;
@@ -86,6 +102,14 @@ BandWalk::Walk BandWalk::walk(double elevation, double r, int max_events) const 
         c = cn;
         sn = std::sqrt((1.0 - cn) * (1.0 + cn));
     }
+}
+
+std::optional<double> BandWalk::elevation_leaving_at(double final_elevation) const {
+    if (!(final_elevation > 0.0 && final_elevation < 0.5 * M_PI)) return std::nullopt;
+    const double c = std::cos(final_elevation) / cos_factor_.back();
+    if (!(c > 0.0 && c <= 1.0)) return std::nullopt;
+    // acos loses precision near 1: the angle from its sine.
+    return std::atan2(std::sqrt((1.0 - c) * (1.0 + c)), c);
 }
 
 double BandWalk::height_at(double elevation, double r, int max_events) const {

@@ -40,6 +40,11 @@ class BandWalk {
     /// the horizontal distance r.
     int turns_before(double elevation, double r, int max_events = 1024) const;
 
+    /// The elevation at the eye whose band path, once above the top boundary, rises at
+    /// `final_elevation` (rad, > 0): POV-Ray's ratios carry cos(elevation) to the half-space
+    /// over the layers multiplied by a fixed factor.  Nothing when no elevation does.
+    std::optional<double> elevation_leaving_at(double final_elevation) const;
+
     double eye_y() const { return eye_y_; }
 
   private:
@@ -49,6 +54,11 @@ class BandWalk {
     // Per layer, the factor POV-Ray's ratios multiply the camera layer's cos(elevation) by
     // there, reached from the camera's layer through the layers between.
     std::vector<double> cos_factor_;
+    // Per layer, POV-Ray's ratio into the layer below and into the one above (1 where it
+    // passes freely): a path multiplies its cosine by each as it crosses, as POV-Ray does
+    // (float quotients are not reciprocal: after a turn the way back differs in the last
+    // bits).
+    std::vector<double> ratio_down_, ratio_up_;
     struct Walk {
         double height = 0.0;
         int turns = 0;

@@ -8,6 +8,7 @@
 
 #include "../cli/run_tool.h"
 #include "image/image_io.h"
+#include "pov/emit_camera.h"
 #include "test_temp.h"
 #include "util/atomic_file.h"
 #include "util/csv.h"
@@ -220,6 +221,8 @@ TEST(Compile, PovRayRendersTheCompiledSceneWithinTheTraceLevelCeiling) {
     ASSERT_TRUE(r.ok()) << r.message();
     const std::string log = dir + "/povray.log";
     ASSERT_EQ(std::system(("povray " + r->ini_path + " >" + log + " 2>&1").c_str()), 0);
+    ASSERT_EQ(r->camera, "corrected");
+    ASSERT_TRUE(crop_mesh_camera_render(r->image_path).ok());
     const std::string text = *read_file(log);
     const auto at = text.find("Max Level: ");
     ASSERT_NE(at, std::string::npos) << text;

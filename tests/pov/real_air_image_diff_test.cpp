@@ -27,6 +27,7 @@
 #include "compile/compile.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
+#include "pov/emit_camera.h"
 #include "trace_scene/trace_scene.h"
 
 namespace mirage {
@@ -115,6 +116,8 @@ Result<Check> check_bands(const std::string& scene, const fs::path& dir, const s
                                 shell_quoted(dir / (stem + ".log")) + " 2>&1";
     if (std::system(command.c_str()) != 0)
         return make_error("povray failed: see " + (dir / (stem + ".log")).string());
+    if (report->camera == "corrected")
+        if (auto s = crop_mesh_camera_render(o.image); !s) return s.error();
     auto pov = read_image(o.image);
     if (!pov) return pov.error();
     std::vector<int> radius(report->pixel_shift_rows.size());
@@ -212,14 +215,18 @@ Result<CropRenders> render_crop(const std::string& scene, const fs::path& dir, c
     o.progress = false;
     auto report = compile_scene(o);
     if (!report) return report.error();
-    // POV-Ray's rows and columns count from 1.
+    // POV-Ray's rows and columns count from 1; a corrected camera renders one row more, at the
+    // top.
+    const int row0 = render.y + (report->camera == "corrected" ? 1 : 0);
     const std::string command =
         "cd " + shell_quoted(dir) + " && povray " + shell_quoted(report->ini_path) + " +SR" +
-        std::to_string(render.y + 1) + " +ER" + std::to_string(render.y + render.height) + " +SC" +
+        std::to_string(row0 + 1) + " +ER" + std::to_string(row0 + render.height) + " +SC" +
         std::to_string(render.x + 1) + " +EC" + std::to_string(render.x + render.width) + " > " +
         shell_quoted(dir / "bands.log") + " 2>&1";
     if (std::system(command.c_str()) != 0)
         return make_error("povray failed: see " + (dir / "bands.log").string());
+    if (report->camera == "corrected")
+        if (auto s = crop_mesh_camera_render(o.image); !s) return s.error();
     auto pov = read_image(o.image);
     if (!pov) return pov.error();
     return CropRenders{*pov, quantize_srgb8(traced->render.image)};
