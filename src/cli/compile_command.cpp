@@ -24,6 +24,7 @@ struct CompileCliOptions {
     std::string camera = "corrected";
     bool render = false;
     bool strict = false;
+    int check_samples = 0;
 };
 
 }  // namespace
@@ -73,9 +74,14 @@ void setup_compile_command(CLI::App& app) {
                   "then render it with POV-Ray (beside the .ini), the corrected camera's extra "
                   "top row dropped");
     sub->add_flag("--strict", o->strict, "exit 3 when the pixels miss the tolerance");
+    auto* samples =
+        sub->add_option("--check-samples", o->check_samples,
+                        "check a grid of N x N rays in every pixel (default: 1, the rays POV-Ray "
+                        "shoots, with the corrected camera and no antialiasing; else 3)")
+            ->check(CLI::Range(1, 5));
     sub->add_flag("--json", o->json, "print the report as JSON");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
-    sub->callback([o, tol, layers, count] {
+    sub->callback([o, tol, layers, count, samples] {
         CompileOptions c = o->compile;
         if (*tol) c.tolerance_px = o->tolerance;
         if (*layers)
@@ -84,6 +90,11 @@ void setup_compile_command(CLI::App& app) {
                                                     : LayerMode::Adaptive;
         if (*count) c.layer_count = o->count;
         c.camera = o->camera == "perspective" ? CameraModel::Perspective : CameraModel::Corrected;
+        // The corrected camera without antialiasing shoots the pixel centres only: those are
+        // the rays to check.  Antialiased it shoots samples of a 3 x 3 grid.
+        c.samples_per_side = *samples ? o->check_samples
+                             : (c.camera == CameraModel::Corrected && !c.antialias) ? 1
+                                                                                    : 3;
         auto report = compile_scene(c);
         if (!report) {
             std::cerr << "mirage compile: " << report.message() << "\n";

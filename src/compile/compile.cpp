@@ -209,6 +209,11 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Layer
     CameraRays shot;
     for (const auto& d : ms.samples) shot.direction.insert(shot.direction.end(), d.begin(), d.end());
     rep.max_trace_level = deepest_trace_level(ctx, ctx.rendered(design_stack), shot);
+    if (rep.max_trace_level > kMaxTraceLevel)
+        rep.warnings.push_back("some of the aimed rays reach POV-Ray's trace-level ceiling (" +
+                               std::to_string(rep.max_trace_level) +
+                               " levels with their reflections): they will render black; ask "
+                               "for fewer layers (--count)");
     rep.camera_path = (dir / "mirage_camera.inc").string();
     rep.render_scene_path = (dir / (rep.name + "_render.pov")).string();
     const std::string scene_abs = fs::absolute(opt.scene).string();
@@ -282,9 +287,14 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.max_trace_level = design.max_trace_level;
     for (const auto& l : design.left_out) rep.left_out.push_back(l);
     for (const auto& w : design.warnings) rep.warnings.push_back(w);
+    // The corrected camera: POV-Ray's rays aimed through the layers (stage "camera"), for a
+    // camera with one eye and layers to aim through.
+    const bool corrected = opt.camera == CameraModel::Corrected && !ctx.many_origins &&
+                           stack.boundaries() > 0;
     // (With many origins the design's errors are the check's at the pixel centres, below:
-    // the errors at the scene's edge are angles seen from one eye.)
-    if (!ctx.many_origins) {
+    // the errors at the scene's edge are angles seen from one eye.  With the corrected camera
+    // they are the check's too: the camera's own rays are not what POV-Ray shoots.)
+    if (!ctx.many_origins && !corrected) {
         const std::vector<double> err =
             stack.boundaries() > 0 ? design_errors(ctx, rendered, centres, &rep.max_crossings)
                                    : std::vector<double>(centres.size(), 0.0);
@@ -293,13 +303,22 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     clock.done("design");
 
     // The layers reach as far as the camera's rays still meet a boundary before they leave
-    // through the top or reach the ground, and at least past the scene: no farther.
-    const double reach = ctx.many_origins
-                             ? many_origins_reach(ctx, rendered, centres, &rep.max_crossings)
-                             : layers_reach(ctx, rendered, centres);
-    rep.layers_extent = reach;
-    const std::optional<double> reach_below =
-        ctx.many_origins ? std::nullopt : layers_reach_below(ctx, rendered, centres, reach);
+    // through the top or reach the ground, and at least past the scene: no farther.  The
+    // corrected camera's rays are aimed first, through layers as far as they may reach, and
+    // the layers then end where the aimed rays leave them.
+    const glm::dvec3 eye = ctx.camera.location;
+    double reach = 0.0;
+    std::optional<double> reach_below;
+    if (corrected) {
+        reach = ctx.layers_box.x1 - eye.x;
+        if (ctx.layers_below_box) reach_below = ctx.layers_below_box->x1 - eye.x;
+    } else {
+        reach = ctx.many_origins ? many_origins_reach(ctx, rendered, centres, &rep.max_crossings)
+                                 : layers_reach(ctx, rendered, centres);
+        reach_below =
+            ctx.many_origins ? std::nullopt : layers_reach_below(ctx, rendered, centres, reach);
+    }
+    clock.done("reach");
     const int k_cam = stack.layer_at(ctx.eye_y);
     rep.below_camera = k_cam;
     rep.above_camera = stack.boundaries() - k_cam;
@@ -315,11 +334,6 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
                                    ": the index is within 1% of eta(infinity), or no camera ray "
                                    "reaches higher");
-        rep.left_out.push_back(
-            "the layers beyond " + sig(reach, 4) + " units from the camera" +
-            (reach_below ? " (those below the camera's beyond " + sig(*reach_below, 4) + ")"
-                         : std::string()) +
-            ": every camera ray has left them by then");
     }
     if (ctx.many_origins && !(rep.layers > 0)) {
         // No layers: nothing bends, and no pixel errs.
@@ -352,13 +366,12 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                   sig(rep.p50_error_px, 3) + " px, p95 " + sig(rep.p95_error_px, 3) + " px, max " +
                   sig(rep.max_error_px, 3) + " px (tolerance " + sig(rep.tolerance_px, 3) + " px).",
         "Do not edit: run mirage compile again."};
-    EmittedFiles files =
-        emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path, header);
-    clock.done("emit");
-    // The corrected camera: POV-Ray's rays aimed through the layers (stage "camera"), for a
-    // camera with one eye and layers to aim through.
-    const bool corrected = opt.camera == CameraModel::Corrected && !ctx.many_origins &&
-                           stack.boundaries() > 0;
+    EmittedFiles files;
+    if (!corrected) {
+        files = emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path,
+                           header);
+        clock.done("emit");
+    }
     rep.camera = corrected ? "corrected" : "perspective";
 
     CameraTexts camera_text;
@@ -379,8 +392,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             ps.footprint = ctx.footprint;
             ps.far = ctx.extent;
         }
-        ps.layers = {ctx.camera.location.x - reach, ctx.camera.location.x + reach,
-                     ctx.camera.location.z - reach, ctx.camera.location.z + reach};
+        ps.layers = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
         if (reach_below) {
             const double r = *reach_below;
             ps.layers_below = HorizontalBox{ctx.camera.location.x - r, ctx.camera.location.x + r,
@@ -397,6 +409,16 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                          rays.direction, rays.pixel_rad, cut_off, ps);
         summarize_check(pc, rays, st.tolerance_px, rep);
         if (corrected) {
+            // The layers end where the aimed rays leave them.
+            const AimedReach a = aimed_reach(ctx, rendered, pc.band_direction);
+            rep.max_crossings = a.max_crossings;
+            reach = std::min(reach, std::max(1.1 * ctx.extent, 1.1 * a.last_event));
+            if (reach_below)
+                reach_below = 1.1 * a.last_event > reach
+                                  ? std::optional<double>(std::min(*reach_below, 1.1 * a.last_event))
+                                  : std::nullopt;
+            files = emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path,
+                               header);
             // The design's errors at the scene's edge are those of the camera's own rays:
             // what POV-Ray shows is what the check found.
             rep.rows_over.clear();
@@ -423,6 +445,13 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         rep.samples_per_side = rays.per_side;
     }
     clock.done(corrected ? "camera" : "check");
+    rep.layers_extent = reach;
+    if (rep.layers > 0)
+        rep.left_out.push_back(
+            "the layers beyond " + sig(reach, 4) + " units from the camera" +
+            (reach_below ? " (those below the camera's beyond " + sig(*reach_below, 4) + ")"
+                         : std::string()) +
+            ": every camera ray has left them by then");
 
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::vector<std::pair<std::string, std::string>> texts = {{rep.include_path, files.include},

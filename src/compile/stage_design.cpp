@@ -177,13 +177,19 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
     // POV-Ray ignores a hit closer than 1e-4 units to a ray's origin: along the steepest ray,
     // every layer (and gap) must be thicker than that.
     const double min_thickness = ctx.gaps ? 3.0 * ctx.gap : 1.5e-4 * ctx.steepest_sine;
-    int count = uniform ? st.layer_count : (st.layer_count > 0 ? st.layer_count : 64);
+    // The corrected camera aims every ray where its exact ray ends: the layers carry only the
+    // paths' smooth part, and its rays' trace levels are measured when they are aimed.
+    const bool corrected = ctx.options.camera == CameraModel::Corrected;
+    int count = uniform ? st.layer_count
+                        : (st.layer_count > 0 ? st.layer_count
+                                              : (corrected ? kCorrectedCameraLayers : 64));
     for (int attempt = 0; attempt < 12; ++attempt) {
         std::vector<double> h =
             uniform ? equal_height_boundaries(top, count)
                     : equal_turning_boundaries(air, top, ctx.eye_y, count, min_thickness);
         move_off_camera(h, ctx.eye_y);
         d.stack = merge_invisible_boundaries(air_layers_for_eye(air, h, ctx.eye_y), ctx.eye_y);
+        if (corrected) break;
         // No pixel's ray nearly level in a layer it enters (POV-Ray renders the pixel centres).
         d.stack = keep_layers_off_skimming_rays(air, d.stack, ctx.eye_y, rays.elevation);
         d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
@@ -194,7 +200,9 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
     d.left_out.push_back("layers above y = " + sig(top, 4) +
                          ": no camera ray reaches higher inside the scene, or the index no "
                          "longer changes");
-    if (auto l = turning_under_the_float_step(ctx, d.stack, rays)) d.left_out.push_back(*l);
+    // (Aimed rays turn where their exact rays do, float step or not.)
+    if (!corrected)
+        if (auto l = turning_under_the_float_step(ctx, d.stack, rays)) d.left_out.push_back(*l);
     return d;
 }
 
@@ -437,15 +445,10 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
         // only carry the paths' smooth bending, at equal steps of eta^2.
         d.mode = "index steps";
         const double top = corrected_camera_top(ctx, rays);
-        int count = st.layer_count > 0 ? st.layer_count : kCorrectedCameraLayers;
-        for (int attempt = 0; attempt < 12; ++attempt) {
-            d.stack = merge_invisible_boundaries(
-                corrected_camera_layers(ctx.profile, ctx.eye_y, count, top), ctx.eye_y);
-            d.max_trace_level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);
-            if (d.max_trace_level <= kMaxTraceLevel || count <= 2) break;
-            count = fewer_steps_for_trace_level(d, count, "steps");
-        }
-        warn_past_trace_level_ceiling(d);
+        // (The trace levels are those of the aimed rays, measured when they are aimed.)
+        const int count = st.layer_count > 0 ? st.layer_count : kCorrectedCameraLayers;
+        d.stack = merge_invisible_boundaries(
+            corrected_camera_layers(ctx.profile, ctx.eye_y, count, top), ctx.eye_y);
         d.left_out.push_back("layers above y = " + sig(top, 4) +
                              ": no camera ray reaches higher inside the scene, or a ray rising "
                              "from there turns by less than a tenth of a pixel more");
