@@ -6,6 +6,7 @@
 
 #include "compile/compile.h"
 #include "util/format.h"
+#include "util/json_text.h"
 
 namespace mirage {
 
@@ -80,7 +81,7 @@ std::string report_json(const CompileReport& r) {
     j["ini"] = r.ini_path;
     j["csv"] = r.csv_path;
     j["image"] = r.image_path;
-    return j.dump(2) + "\n";
+    return json_text(j) + "\n";
 }
 
 std::string report_text(const CompileReport& r) {
