@@ -19,14 +19,20 @@
 
 #include "animate/video.h"
 #include "compare/compare.h"
+#include "compare/povray_render.h"
 #include "compile/compile.h"
 #include "load/mirage_scene.h"
 #include "pov/emit_camera.h"
+#include "pov/povray_path.h"
 #include "trace/object_query.h"
 #include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
+#include "util/hex_args.h"
+#include "util/json_text.h"
+#include "util/new_directories.h"
 #include "util/process.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -212,7 +218,7 @@ Status run_slurm(const Animation& a, const std::vector<PlannedFrame>& todo, Prog
     if (auto s = write_file_atomic(script, slurm_script(a, numbers)); !s) return s;
     const std::string submit_log = (dir / "sbatch.log").string();
     fs::remove(submit_log, ec);
-    auto submit = run_process({st.sbatch, "--parsable", script}, "", submit_log);
+    auto submit = run_process(slurm_submit_argv(a, script), "", submit_log);
     if (!submit) return make_error("--slurm: " + submit.message());
     const std::string said = read_text(submit_log);
     if (submit->exit_code != 0)
@@ -252,31 +258,46 @@ Status run_slurm(const Animation& a, const std::vector<PlannedFrame>& todo, Prog
     return Ok{};
 }
 
-// ssh hosts: GNU parallel runs one task line per frame over --sshloginfile; the output
-// directory must be the same path on every host (a shared filesystem).
+// ssh hosts: GNU parallel runs one task per frame over --sshloginfile; the output directory
+// must be the same path on every host (a shared filesystem).  What parallel reads as input is
+// the frame numbers alone; the task's command is its arguments, quoted by parallel for each
+// host's shell (-q), with every option of the task in hex (hosts_task_argv), and each task
+// writes its own log (--task-log): no file name passes through a task line, a replacement
+// string or a redirection.
 Status run_hosts(const Animation& a, const std::vector<PlannedFrame>& todo, Progress& progress,
                  std::vector<std::string>& notes) {
     const fs::path dir = fs::path(a.options.out_dir) / "hosts";
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) return make_error(dir.string() + ": cannot create: " + ec.message());
-    std::string jobs;
-    for (const auto& f : todo)
-        jobs += join_command(a.task_argv(std::to_string(f.number))) + " > " +
-                shell_quote(a.frame_stem(f.number) + ".log") + " 2>&1\n";
-    const std::string job_file = (dir / "jobs.txt").string();
-    if (auto s = write_file_atomic(job_file, jobs); !s) return s;
+    std::string numbers;
+    for (const auto& f : todo) numbers += std::to_string(f.number) + "\n";
+    const std::string frames_file = (dir / "frames.txt").string();
+    if (auto s = write_file_atomic(frames_file, numbers); !s) return s;
     const std::string log = (dir / "parallel.log").string();
     fs::remove(log, ec);
-    auto run =
-        run_process({a.options.parallel, "--will-cite", "--sshloginfile", a.options.hosts_file,
-                     "--joblog", (dir / "joblog.txt").string(), "-a", job_file},
-                    "", log);
+    std::vector<std::string> argv = {a.options.parallel,
+                                     "--will-cite",
+                                     "-q",
+                                     "--sshloginfile",
+                                     a.options.hosts_file,
+                                     "--joblog",
+                                     (dir / "joblog.txt").string(),
+                                     "-a",
+                                     frames_file};
+    for (const auto& w : hosts_task_argv(a)) argv.push_back(w);
+    auto run = run_process(argv, "", log);
     if (!run) return make_error("--hosts: " + run.message());
     progress.set_done(count_done(a));
-    if (run->exit_code != 0)
+    if (run->exit_code != 0) {
+        // What parallel said (an unknown host, ssh refused) is in its log: said here too.
+        const std::string said = escape_control(last_line(log));
         notes.push_back("GNU parallel exited with " + std::to_string(run->exit_code) + " (" + log +
-                        ")");
+                        ")" + (said.empty() ? std::string() : ": " + said));
+        if (a.options.progress)
+            std::cerr << "mirage animate: --hosts: GNU parallel exited with " << run->exit_code
+                      << (said.empty() ? std::string() : ": " + said) << " (" << log << ")\n";
+    }
     return Ok{};
 }
 
@@ -338,6 +359,15 @@ std::vector<std::string> Animation::task_argv(const std::string& frame) const {
     return v;
 }
 
+std::vector<std::string> hosts_task_argv(const Animation& a) {
+    std::vector<std::string> task = a.task_argv("");
+    const std::string self = task.front();
+    task.erase(task.begin());
+    task.push_back("--task-log");
+    // GNU parallel appends the frame number read from its input after "--frame".
+    return {self, "--args-hex", args_to_hex(task), "--frame"};
+}
+
 Result<Animation> resolve_animation(const AnimateOptions& options) {
     Animation a;
     a.options = options;
@@ -389,6 +419,16 @@ Result<Animation> resolve_animation(const AnimateOptions& options) {
     if (o.threads < 1 || o.threads > 1024)
         return make_error("--threads " + std::to_string(o.threads) + ": must be 1 to 1024");
     if (o.jobs < 0) return make_error("--jobs " + std::to_string(o.jobs) + ": must be >= 0");
+    // They go into #SBATCH lines of the job's script: one word of Slurm's own characters.
+    for (const auto& [flag, value] :
+         {std::pair<const char*, const std::string&>{"--partition", o.slurm.partition},
+          {"--time", o.slurm.time},
+          {"--mem", o.slurm.mem}}) {
+        if (value.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                    "0123456789:._,+-") != std::string::npos)
+            return make_error(std::string(flag) + " '" + escape_control(value) +
+                              "': Slurm takes letters, digits and : . _ , + - here");
+    }
     if (!(o.fps > 0.0 && o.fps <= 240.0))
         return make_error("--fps " + shortest(o.fps) + ": must be above 0 and at most 240");
     if (o.preview_width < 16 || o.preview_width > 4096)
@@ -450,10 +490,11 @@ Result<FrameRecord> render_frame(const Animation& a, int number) {
         if (!compiled) return failed("compile: " + compiled.message());
         rec.compile_seconds = compiled->seconds;
         rec.layers = compiled->layers;
+        // POV-Ray splits an option at spaces unless its value is quoted (pov/povray_path.h).
         std::vector<std::string> argv = {o.povray, "-D", "+WT" + std::to_string(o.threads),
-                                         compiled->ini_path};
+                                         povray_quoted(compiled->ini_path)};
         for (const auto& s : povray_frame_switches(a, *frame)) argv.push_back(s);
-        argv.push_back("+O" + (work / "render.png").string());
+        argv.push_back("+O" + povray_quoted((work / "render.png").string()));
         const std::string log = (work / "povray.log").string();
         fs::remove(log, ec);
         auto run = run_process(argv, work.string(), log);
@@ -465,7 +506,7 @@ Result<FrameRecord> render_frame(const Animation& a, int number) {
         rendered = (work / ("render" + std::string(suffix) + ".png")).string();
         if (run->exit_code != 0 || !fs::exists(rendered, ec))
             return failed("POV-Ray failed (exit " + std::to_string(run->exit_code) + ", " + log +
-                          "): " + last_line(log));
+                          "): " + povray_failure_cause(log));
         if (compiled->camera == "corrected")
             if (auto s = crop_mesh_camera_render(rendered); !s) return failed(s.message());
         const std::string undated = (work / "frame.png").string();
@@ -497,7 +538,7 @@ Result<FrameRecord> render_frame(const Animation& a, int number) {
     j["render_seconds"] = rec.render_seconds;
     j["layers"] = rec.layers;
     j["command"] = join_command(a.task_argv(std::to_string(number)));
-    if (auto s = write_file_atomic(a.frame_stem(number) + ".json", j.dump(2) + "\n"); !s)
+    if (auto s = write_file_atomic(a.frame_stem(number) + ".json", json_text(j) + "\n"); !s)
         return failed(s.message());
     // Last: the image under its final name marks the frame done.
     if (auto s = commit_file(rendered, rec.image); !s) return failed(s.message());
@@ -520,26 +561,62 @@ std::string slurm_array_list(const std::vector<int>& frames) {
     return s;
 }
 
+namespace {
+
+/// A Slurm job name from the scene's name: letters, digits, '.', '_' and '-' (the rest '_').
+std::string slurm_job_name(const std::string& name) {
+    std::string s = "mirage-";
+    for (unsigned char c : name) s += std::isalnum(c) || c == '.' || c == '-' ? char(c) : '_';
+    return s;
+}
+
+/// A path in a Slurm file name pattern: '%' stands for itself as "%%".
+std::string slurm_literal(const std::string& path) {
+    std::string s;
+    for (char c : path) s += c == '%' ? std::string("%%") : std::string(1, c);
+    return s;
+}
+
+}  // namespace
+
 std::string slurm_script(const Animation& a, const std::vector<int>& frames) {
     const SlurmSettings& st = a.options.slurm;
-    const std::string log_pattern =
-        (fs::path(a.frames_dir) / ("frame_%" + std::to_string(a.width_digits) + "a.log")).string();
+    // Only numbers and the checked resources go into #SBATCH lines; the job's name, its log
+    // pattern and its directory, made of file names, are sbatch's arguments
+    // (slurm_submit_argv), and the task's options are in hex.
     std::ostringstream s;
     s << "#!/bin/sh\n"
-      << "# " << a.name << ": one task per frame, written by mirage animate --slurm.  Each task\n"
-      << "# runs the command a local frame runs; its log is beside its frame.\n"
-      << "#SBATCH --job-name=mirage-" << a.name << "\n"
+      << "# " << escape_control(a.name)
+      << ": one task per frame, written by mirage animate --slurm.  Each task\n"
+      << "# runs the command a local frame runs; its log is beside its frame (sbatch's --output).\n"
       << "#SBATCH --array=" << slurm_array_list(frames) << "\n"
       << "#SBATCH --ntasks=1\n"
       << "#SBATCH --cpus-per-task=" << a.options.threads << "\n"
       << "#SBATCH --mem=" << st.mem << "\n"
-      << "#SBATCH --time=" << st.time << "\n"
-      << "#SBATCH --output=" << log_pattern << "\n";
+      << "#SBATCH --time=" << st.time << "\n";
     if (!st.partition.empty()) s << "#SBATCH --partition=" << st.partition << "\n";
-    std::error_code ec;
-    s << "#SBATCH --chdir=" << fs::current_path(ec).string() << "\n";
-    s << "exec " << join_command(a.task_argv("")) << " --frame \"$SLURM_ARRAY_TASK_ID\"\n";
+    // The task's options in hex (as for --hosts): a line end in a name would otherwise be a
+    // line of the script, which sbatch reads for #SBATCH directives of its own.
+    std::vector<std::string> task = a.task_argv("");
+    const std::string self = task.front();
+    task.erase(task.begin());
+    s << "# The task: " << escape_control(join_command(a.task_argv("")))
+      << " --frame \"$SLURM_ARRAY_TASK_ID\"\n"
+      << "exec " << shell_quote(self) << " --args-hex " << args_to_hex(task)
+      << " --frame \"$SLURM_ARRAY_TASK_ID\"\n";
     return s.str();
+}
+
+std::vector<std::string> slurm_submit_argv(const Animation& a, const std::string& script) {
+    const std::string log_pattern = slurm_literal((fs::path(a.frames_dir) / "frame_").string()) +
+                                    "%" + std::to_string(a.width_digits) + "a.log";
+    std::error_code ec;
+    return {a.options.slurm.sbatch,
+            "--parsable",
+            "--job-name=" + slurm_job_name(a.name),
+            "--output=" + log_pattern,
+            "--chdir=" + fs::current_path(ec).string(),
+            script};
 }
 
 Result<std::vector<VanishingRow>> vanishing_rows(const Animation& a) {
@@ -570,6 +647,13 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
     std::error_code ec;
 
     // Everything that could stop the run before a frame is rendered is checked first.
+    if (o.model == FrameModel::Bands) {
+        // Every frame's .ini names these for POV-Ray: refused at once if it cannot take one.
+        if (auto s = check_povray_path(o.scene, "the scene"); !s) return s.error();
+        if (auto s = check_povray_path(o.out_dir, "the output folder (-o)"); !s) return s.error();
+        for (const auto& l : o.library_paths)
+            if (auto s = check_povray_path(l, "-L"); !s) return s.error();
+    }
     if (o.model == FrameModel::Bands && !find_program(o.povray))
         return make_error(o.povray +
                           " is not on PATH: the band model renders with POV-Ray "
@@ -592,9 +676,27 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
                               " (GNU parallel) is not on PATH (apt-get install parallel)");
         if (!fs::is_regular_file(o.hosts_file, ec))
             return make_error("--hosts " + o.hosts_file + ": no such file");
+        // GNU parallel runs an empty list of hosts on this machine, without a word.
+        bool any = false;
+        {
+            std::istringstream lines(read_text(o.hosts_file));
+            std::string line;
+            while (!any && std::getline(lines, line)) {
+                const auto at = line.find_first_not_of(" \t\r");
+                any = at != std::string::npos && line[at] != '#';
+            }
+        }
+        if (!any)
+            return make_error("--hosts " + o.hosts_file +
+                              ": names no host (one ssh login a line, ':' for this machine)");
+        if (o.self.find('{') != std::string::npos)
+            return make_error("--hosts: the path of mirage, " + o.self +
+                              ", holds '{', which GNU parallel would replace");
     }
-    fs::create_directories(a.frames_dir, ec);
-    if (ec) return make_error(o.out_dir + ": cannot create the output directory: " + ec.message());
+    // Taken away again (if empty) when the run is refused before animation.json is written.
+    NewDirectories folders;
+    if (auto s = folders.make(a.frames_dir); !s)
+        return make_error(o.out_dir + ": cannot create the output directory: " + s.message());
     {
         const std::string probe = temporary_name_for((fs::path(a.frames_dir) / "probe").string());
         std::ofstream p(probe);
@@ -612,6 +714,8 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
     nlohmann::json clocks = nlohmann::json::array();
     for (const auto& f : a.plan.frames) clocks.push_back({f.number, f.clock.clock});
     what["frames"] = clocks;
+    // As it reads back from the file (a name that is not UTF-8 is written with U+FFFD).
+    what = nlohmann::json::parse(json_text(what));
     const std::string what_path = (fs::path(o.out_dir) / "animation.json").string();
     if (fs::exists(what_path, ec)) {
         nlohmann::json before;
@@ -621,15 +725,16 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
         }
         for (const char* key : {"scene", "scene_fingerprint", "frame_command"}) {
             if (before.value(key, nlohmann::json()) != what[key])
-                return make_error(o.out_dir + " holds the frames of another animation (its " + key +
-                                  (std::string(key) == "scene_fingerprint"
-                                       ? ": the scene has changed since"
-                                       : " was " + before.value(key, nlohmann::json()).dump()) +
-                                  "): choose another -o, or remove " + a.frames_dir +
-                                  " to render them again");
+                return make_error(
+                    o.out_dir + " holds the frames of another animation (its " + key +
+                    (std::string(key) == "scene_fingerprint"
+                         ? ": the scene has changed since"
+                         : " was " + json_text(before.value(key, nlohmann::json()), -1)) +
+                    "): choose another -o, or remove " + a.frames_dir + " to render them again");
         }
     }
-    if (auto s = write_file_atomic(what_path, what.dump(2) + "\n"); !s) return s.error();
+    if (auto s = write_file_atomic(what_path, json_text(what) + "\n"); !s) return s.error();
+    folders.keep();
     for (const auto& i : a.ignored) rep.notes.push_back(i + ": not an animation option, ignored");
 
     std::vector<PlannedFrame> todo;

@@ -127,6 +127,15 @@ Result<std::vector<VanishingRow>> vanishing_rows(const Animation& animation);
 /// The Slurm batch script of an array job rendering `frames` (one task per frame).
 std::string slurm_script(const Animation& animation, const std::vector<int>& frames);
 
+/// How the script is submitted: sbatch with the job's name, its log pattern and its directory
+/// as arguments (file names never go into a line of the script).
+std::vector<std::string> slurm_submit_argv(const Animation& animation, const std::string& script);
+
+/// The command GNU parallel starts for a frame on an ssh host, the frame number to be
+/// appended: `mirage --args-hex HEX --frame`, HEX the task's arguments (task_argv) and
+/// `--task-log` (the task writes its output to its frame's log itself).
+std::vector<std::string> hosts_task_argv(const Animation& animation);
+
 /// "1-4,7,9-10": the --array list of frame numbers (sorted, distinct).
 std::string slurm_array_list(const std::vector<int>& frames);
 

@@ -9,6 +9,7 @@
 #include "animate/frame_plan.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
+#include "util/json_text.h"
 #include "util/process.h"
 
 namespace mirage {
@@ -215,7 +216,7 @@ Result<ReportFiles> write_animation_report(const AnimationSummary& s,
                           {"mirrored", r.view.mirrored},
                           {"angular_size_deg", r.view.angular_size_deg}});
     j["marked"] = marked;
-    if (auto w = write_file_atomic(f.json, j.dump(2) + "\n"); !w) return w.error();
+    if (auto w = write_file_atomic(f.json, json_text(j) + "\n"); !w) return w.error();
     return f;
 }
 

@@ -89,6 +89,10 @@ Result<FramePlan> plan_frames(const AnimationRange& r) {
         if (r.clock) {
             still.clock = as_float(*r.clock);
             still.clock_on = true;
+            if (!std::isfinite(still.clock))
+                return make_error("Clock " + shortest(*r.clock) +
+                                  ": beyond the range of POV-Ray's clock (a float, at most "
+                                  "3.4e+38)");
         }
         plan.frames.push_back({0, still});
         return plan;
@@ -143,6 +147,14 @@ Result<FramePlan> plan_frames(const AnimationRange& r) {
         AnimationClock c;
         c.clock = static_cast<float>(double(clock_delta * double(frame - initial)) +
                                      double(initial_clock));
+        // POV-Ray keeps the clocks in floats: 1e39, or two clocks 3e38 apart, are infinite.
+        if (!std::isfinite(c.clock) || !std::isfinite(clock_delta))
+            return make_error("the clock of frame " + std::to_string(frame) +
+                              " is not a number: Initial_Clock " +
+                              shortest(r.initial_clock.value_or(0.0)) + " and Final_Clock " +
+                              shortest(r.final_clock.value_or(1.0)) +
+                              " and their difference must be within the range of POV-Ray's "
+                              "clock (a float, at most 3.4e+38)");
         c.clock_on = true;
         c.clock_delta = declared(clock_delta);
         c.initial_clock = declared(initial_clock);

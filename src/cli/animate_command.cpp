@@ -1,11 +1,17 @@
 // `mirage animate SCENE.pov --frames N`: every frame of an animated scene rendered (locally,
 // on a Slurm cluster or on ssh hosts), the video assembled, the vanishing reported.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <memory>
 
 #include "animate/animate.h"
 #include "cli/commands.h"
 #include "util/format.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -18,11 +24,12 @@ struct AnimateCliOptions {
     double tolerance = 0.0;
     std::string model = "bands";
     bool slurm = false, quiet = false;
-    int frame = 0;  // the task of one frame (what every runner starts)
+    int frame = 0;          // the task of one frame (what every runner starts)
+    bool task_log = false;  // the task writes its output into its frame's log
 };
 
 [[noreturn]] void fail(const std::string& message) {
-    std::cerr << "mirage animate: " << message << "\n";
+    std::cerr << "mirage animate: " << escape_terminal(message) << "\n";
     throw CommandFailed{1};
 }
 
@@ -50,7 +57,8 @@ void setup_animate_command(CLI::App& app) {
         ->check(CLI::IsMember({"bands", "trace"}))
         ->capture_default_str();
     sub->add_option("-o,--output", o->animate.out_dir,
-                    "output directory (default build/animate/NAME)");
+                    "output directory (default build/animate/NAME)")
+        ->check(non_empty_name());
     auto* tol = sub->add_option("--tolerance", o->tolerance,
                                 "largest path error, pixels (default: the scene's)");
     sub->add_option("-L,--library-path", o->animate.library_paths,
@@ -79,10 +87,12 @@ void setup_animate_command(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--hosts", o->animate.hosts_file,
                     "run the frames on these hosts with GNU parallel (--sshloginfile; the output "
-                    "directory must be shared)");
+                    "directory must be shared)")
+        ->check(non_empty_name());
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     auto* frame = sub->add_option("--frame", o->frame, "render this frame only (a task)");
     frame->group("");  // hidden: what the runners start
+    sub->add_flag("--task-log", o->task_log, "write the frame's output into its log")->group("");
     sub->callback([o, sub, frames, tol, frame] {
         AnimateOptions a = o->animate;
         if (o->args.empty()) fail("give the scene: mirage animate SCENE.pov --frames N");
@@ -101,6 +111,16 @@ void setup_animate_command(CLI::App& app) {
         if (*frame) {
             auto anim = resolve_animation(a);
             if (!anim) fail(anim.message());
+            if (o->task_log) {
+                // Started by GNU parallel (--hosts): no shell redirects the output.
+                const std::string log = anim->frame_stem(o->frame) + ".log";
+                const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+                if (fd < 0) fail(log + ": cannot write: " + std::strerror(errno));
+                std::cout.flush();
+                ::dup2(fd, STDOUT_FILENO);
+                ::dup2(fd, STDERR_FILENO);
+                ::close(fd);
+            }
             auto rec = render_frame(*anim, o->frame);
             if (!rec) fail(rec.message());
             std::cout << "frame " << rec->number << " (clock " << clock_text(rec->clock) << "): ";

@@ -7,6 +7,7 @@
 #include "compare/compare.h"
 #include "compare/compare_report.h"
 #include "util/format.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -57,7 +58,8 @@ void setup_compare_command(CLI::App& app) {
     sub->add_option("-W,--width", c.width, "image width, pixels")->capture_default_str();
     sub->add_option("-H,--height", c.height, "image height, pixels")->capture_default_str();
     sub->add_option("-o,--output", c.out_dir,
-                    "directory for the results (default build/compare/SCENE)");
+                    "directory for the results (default build/compare/SCENE)")
+        ->check(non_empty_name());
     sub->add_option("--reference-tolerance", c.reference_tolerance_px,
                     "path tolerance of the reference, pixels (finer than every setting)")
         ->capture_default_str();
@@ -98,7 +100,7 @@ void setup_compare_command(CLI::App& app) {
             options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
         auto result = run_comparison(options);
         if (!result) {
-            std::cerr << "mirage compare: " << result.message() << "\n";
+            std::cerr << "mirage compare: " << escape_terminal(result.message()) << "\n";
             throw CommandFailed{1};
         }
         if (!o->quiet) print_headlines(*result);

@@ -7,6 +7,7 @@
 #include "compare/povray_render.h"
 #include "compile/compile.h"
 #include "util/format.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -40,17 +41,19 @@ void setup_compile_command(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("-o,--output", o->compile.out_dir,
                     "directory for mirage_layers.inc, SCENE.ini, layers.csv, report.json "
-                    "(default build/render/SCENE)");
+                    "(default build/render/SCENE)")
+        ->check(non_empty_name());
     sub->add_option("--image", o->compile.image,
-                    "the image the .ini renders (default SCENE.png in the output directory)");
+                    "the image the .ini renders (default SCENE.png in the output directory)")
+        ->check(non_empty_name());
     auto* tol = sub->add_option("--tolerance", o->tolerance,
                                 "largest path error, pixels (default: Mirage_Tolerance, else 0.5)");
     auto* layers = sub->add_option("--layers", o->layers,
                                    "adaptive (default), uniform (Berger's equal layers) or "
                                    "index-steps (equal steps of the index: real air's design)")
                        ->check(CLI::IsMember({"adaptive", "uniform", "index-steps"}));
-    auto* count = sub->add_option("--count", o->count,
-                                  "number of uniform layers, or of index steps");
+    auto* count =
+        sub->add_option("--count", o->count, "number of uniform layers, or of index steps");
     sub->add_option("-L,--library-path", o->compile.library_paths,
                     "extra include directory (searched first)");
     sub->add_flag("--antialias", o->compile.antialias, "antialias the render (+A0.3)");
@@ -64,7 +67,8 @@ void setup_compile_command(CLI::App& app) {
         ->check(CLI::IsMember({"auto", "nested", "gaps"}))
         ->capture_default_str();
     sub->add_option("--error-map", o->compile.error_map,
-                    "also write every pixel centre's path error, pixels, as a float image (.exr)");
+                    "also write every pixel centre's path error, pixels, as a float image (.exr)")
+        ->check(non_empty_name());
     sub->add_option("--camera", o->camera,
                     "corrected (every pixel's ray aimed through the layers to where its exact "
                     "ray ends: a mesh camera) or perspective (the scene's own camera)")
@@ -97,7 +101,7 @@ void setup_compile_command(CLI::App& app) {
                                                                                     : 3;
         auto report = compile_scene(c);
         if (!report) {
-            std::cerr << "mirage compile: " << report.message() << "\n";
+            std::cerr << "mirage compile: " << escape_terminal(report.message()) << "\n";
             throw CommandFailed{1};
         }
         if (o->json) {

@@ -1,12 +1,12 @@
 // `mirage path`: one exact ray (class, invariant, turning point, ground hit, samples), a ray
 // diagram as SVG, or a batch of rays from a CSV.
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <iostream>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "atmosphere/exact_path.h"
@@ -22,7 +22,9 @@
 #include "report/transfer_diagram.h"
 #include "util/csv.h"
 #include "util/format.h"
+#include "util/json_text.h"
 #include "util/output_set.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -80,7 +82,7 @@ std::vector<std::string> input_files(const PathOptions& o) {
 }
 
 [[noreturn]] void fail(const std::string& message) {
-    std::cerr << "mirage path: " << message << "\n";
+    std::cerr << "mirage path: " << escape_terminal(message) << "\n";
     throw CommandFailed{1};
 }
 
@@ -245,7 +247,7 @@ void run_single(const PathOptions& o) {
         j["samples"] = pts;
         j["end"] = end_name;
         if (path.end != PathEnd::Ground) j["end_slope"] = path.end_slope;
-        std::cout << j.dump(2) << "\n";
+        std::cout << json_text(j) << "\n";
     } else {
         std::cout << "profile     " << label << ": eta0 = " << shortest(profile.eta0)
                   << ", eta1 = " << shortest(profile.eta1)
@@ -486,7 +488,7 @@ void run_transfer(const PathOptions& o, const AirChoice& c) {
                 pts.push_back({p.apparent_rad, nullptr, nullptr});
         }
         j["points"] = pts;
-        std::cout << j.dump(1) << "\n";
+        std::cout << json_text(j, 1) << "\n";
         return;
     }
     print_air(c);
@@ -561,7 +563,7 @@ void run_vanishing(const PathOptions& o) {
             j["object_distance"] = o.object_distance;
             j["mirrored"] = seen;
         }
-        std::cout << j.dump(2) << "\n";
+        std::cout << json_text(j) << "\n";
         return;
     }
     if (profile) {
@@ -600,7 +602,7 @@ void run_general(const PathOptions& o) {
     }
     if (o.ducts && std::isnan(o.eye_height)) {
         if (o.json) {
-            std::cout << air_json(c).dump(2) << "\n";
+            std::cout << json_text(air_json(c)) << "\n";
         } else {
             print_air(c);
         }
@@ -655,7 +657,7 @@ void run_general(const PathOptions& o) {
         j["samples"] = pts;
         j["end"] = end_name;
         if (poly.end != PathEnd::Ground) j["end_slope"] = poly.end_slope;
-        std::cout << j.dump(2) << "\n";
+        std::cout << json_text(j) << "\n";
     } else {
         print_air(c);
         std::cout << "eye         y0 = " << g(o.eye_height) << " m, elevation " << g(elev_deg)
@@ -709,14 +711,16 @@ void setup_path_command(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--max-distance", o->max_distance, "follow the ray this far, m");
     sub->add_flag("--json", o->json, "print the result as JSON");
-    sub->add_option("--svg", o->svg, "draw a ray diagram (a fan of rays) to this SVG file");
+    sub->add_option("--svg", o->svg, "draw a ray diagram (a fan of rays) to this SVG file")
+        ->check(non_empty_name());
     sub->add_option("--fan-from-deg", o->fan_from_deg, "first elevation of the fan, degrees");
     sub->add_option("--fan-to-deg", o->fan_to_deg, "last elevation of the fan, degrees");
     sub->add_option("--fan-count", o->fan_count, "rays in the fan")
         ->check(CLI::Range(1, kMaxFanRays))
         ->capture_default_str();
     sub->add_option("--batch", o->batch,
-                    "evaluate the rays of a CSV (reference columns) and print a CSV");
+                    "evaluate the rays of a CSV (reference columns) and print a CSV")
+        ->check(non_empty_name());
     sub->add_option("--air-temperature-c", o->air_temperature_c,
                     "real air: temperature at the ground of the base profile, degC (default 15)");
     sub->add_option("--lapse-k-per-km", o->lapse_k_per_km,
@@ -767,7 +771,8 @@ void setup_path_command(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--transfer-count", o->transfer_count, "rays of the transfer curve")
         ->capture_default_str();
-    sub->add_option("--png", o->png, "draw the transfer diagram to this PNG file");
+    sub->add_option("--png", o->png, "draw the transfer diagram to this PNG file")
+        ->check(non_empty_name());
     sub->add_option("--object-height", o->object_height,
                     "height of an object point, m: the eye distances at which it has a "
                     "mirrored image (the vanishing of the inferior mirage)");

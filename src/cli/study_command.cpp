@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "compare/design_study.h"
 #include "util/format.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -18,7 +19,8 @@ void setup_study_command(CLI::App& app) {
     sub->add_option("-W,--width", o->width, "image width, pixels")->capture_default_str();
     sub->add_option("-H,--height", o->height, "image height, pixels")->capture_default_str();
     sub->add_option("-o,--output", o->out_dir,
-                    "directory for the results (default build/study/SCENE)");
+                    "directory for the results (default build/study/SCENE)")
+        ->check(non_empty_name());
     sub->add_option("--counts", o->uniform_counts, "equal-layer counts")->delimiter(',');
     sub->add_option("--graded-levels", o->graded_levels, "graded designs: levels per index range")
         ->delimiter(',');
@@ -40,7 +42,7 @@ void setup_study_command(CLI::App& app) {
         s.progress = [](const std::string& line) { std::cerr << "study: " << line << "\n"; };
         auto r = run_design_study(s);
         if (!r) {
-            std::cerr << "mirage study: " << r.message() << "\n";
+            std::cerr << "mirage study: " << escape_terminal(r.message()) << "\n";
             throw CommandFailed{1};
         }
         std::cout << "wrote " << r->csv_path << "\n      " << r->summary_path << "\n";

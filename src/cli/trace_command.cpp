@@ -5,6 +5,7 @@
 
 #include "cli/commands.h"
 #include "trace_scene/trace_scene.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -26,7 +27,8 @@ void setup_trace_command(CLI::App& app) {
     sub->add_option("scene", o->trace.scene, "the .pov scene")->required();
     sub->add_option("-o,--output", o->trace.output,
                     "the image: .png (as POV-Ray writes it) or .exr (linear)")
-        ->required();
+        ->required()
+        ->check(non_empty_name());
     sub->add_option("-W,--width", o->trace.width, "image width, pixels")->capture_default_str();
     sub->add_option("-H,--height", o->trace.height, "image height, pixels")->capture_default_str();
     auto* tol = sub->add_option(
@@ -52,7 +54,7 @@ void setup_trace_command(CLI::App& app) {
         t.progress = !o->quiet;
         auto report = trace_scene(t);
         if (!report) {
-            std::cerr << "mirage trace: " << report.message() << "\n";
+            std::cerr << "mirage trace: " << escape_terminal(report.message()) << "\n";
             throw CommandFailed{1};
         }
         if (!o->quiet) std::cout << trace_summary(*report);

@@ -20,11 +20,13 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "load/mirage_scene.h"
+#include "pov/povray_path.h"
 #include "report/contact_sheet.h"
 #include "trace/object_query.h"
 #include "trace_scene/trace_scene.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
+#include "util/new_directories.h"
 #include "util/output_set.h"
 #include "util/process.h"
 
@@ -35,8 +37,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMaxCount = kMaxLayerCount;  // the largest uniform layer count a sweep tries
-constexpr int kMaxSteps = 256;   // the largest count of index steps the default sweep tries
-constexpr int kFirstCount = 8;             // the default doubling starts here
+constexpr int kMaxSteps = 256;  // the largest count of index steps the default sweep tries
+constexpr int kFirstCount = 8;  // the default doubling starts here
 
 std::string list_text(const std::vector<double>& values) {
     std::string s;
@@ -90,6 +92,7 @@ std::string temporary_image_name(const fs::path& path) {
 /// into place together at the end, all or none; work/ holds what POV-Ray reads while the
 /// sweep runs (each design's compiled scene) and the logs, written as it goes.
 struct Sweep {
+    NewDirectories folders;  // the output folders made by this run; first, so that it goes last
     CompareOptions opt;
     fs::path out, stage, renders, work;  // renders: the staged renders/
     OutputSet outputs;                   // knows the scene's files: no result replaces one
@@ -99,6 +102,7 @@ struct Sweep {
     std::string povray_version;
     std::set<std::string> compile_warnings;  // noted once each
     bool redesigned = false;  // the last design compiled was refitted with fewer layers or steps
+    std::vector<std::string> render_failures;  // POV-Ray's failed renders, with their cause
 
     void say(const std::string& line) const {
         if (opt.progress) opt.progress(line);
@@ -161,8 +165,9 @@ Result<CompiledRender> render_compiled(Sweep& sw, const CompileReport& rep, cons
     std::error_code ec;
     if (run->exit_code != 0 || !fs::exists(ps.output, ec)) {
         fs::remove(ps.output, ec);
-        r.failure =
-            "POV-Ray failed (exit " + std::to_string(run->exit_code) + "; " + r.log_path + ")";
+        r.failure = "POV-Ray failed (exit " + std::to_string(run->exit_code) + "; " + r.log_path +
+                    "): " + povray_failure_cause(r.log_path);
+        sw.render_failures.push_back(r.failure);
         return r;
     }
     if (auto s = commit_file(ps.output, image); !s) return s.error();
@@ -533,10 +538,15 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     sw.out = fs::absolute(opt.out_dir.empty() ? fs::path("build/compare") / r.name
                                               : fs::path(opt.out_dir));
     sw.work = sw.out / "work";
-    for (const auto& d : {sw.out, sw.out / "renders", sw.work}) {
-        fs::create_directories(d, ec);
-        if (ec) return make_error(d.string() + ": cannot create: " + ec.message());
-    }
+    // POV-Ray renders every design from an .ini that names these: refused at once if it
+    // cannot take one, before the reference is traced.
+    if (auto s = check_povray_path(fs::absolute(opt.scene).string(), "the scene"); !s)
+        return s.error();
+    if (auto s = check_povray_path(sw.out.string(), "the output folder (-o)"); !s) return s.error();
+    for (const auto& l : opt.library_paths)
+        if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s.error();
+    for (const auto& d : {sw.out, sw.out / "renders", sw.work})
+        if (auto s = sw.folders.make(d.string()); !s) return s.error();
     sw.stage = sw.out / (".staging" + std::to_string(::getpid()));
     sw.renders = sw.stage / "renders";
     fs::create_directories(sw.renders, ec);
@@ -624,16 +634,19 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
             }
         }
     } else if (!opt.steps.empty()) {
-        sw.note("index-step-bands: not run: index steps are the design for real air, and this "
-                "scene's atmosphere is " + r.atmosphere);
+        sw.note(
+            "index-step-bands: not run: index steps are the design for real air, and this "
+            "scene's atmosphere is " +
+            r.atmosphere);
     }
 
     // The fit to the camera's rays needs the exponential profiles' closed forms: for real air
     // one note, not one refusal per tolerance.
     if (loaded->settings.air && !opt.tolerances.empty()) {
-        sw.note("adaptive-bands: not run: the fit to the camera's rays needs the exponential "
-                "profiles' closed forms, and this scene's atmosphere is real air; its own "
-                "design is index-step-bands");
+        sw.note(
+            "adaptive-bands: not run: the fit to the camera's rays needs the exponential "
+            "profiles' closed forms, and this scene's atmosphere is real air; its own "
+            "design is index-step-bands");
         opt.tolerances.clear();
     }
     for (double tol : opt.tolerances) {
@@ -679,6 +692,13 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     }
     if (ec) return make_error(sw.stage.string() + ": " + ec.message());
     if (auto s = sw.outputs.commit(); !s) return s.error();
+    sw.folders.keep();
+    // The results are written (they say which designs were skipped), but a sweep whose
+    // renders failed did not do what it was asked.
+    if (!sw.render_failures.empty())
+        return make_error(std::to_string(sw.render_failures.size()) +
+                          " POV-Ray render(s) failed; the results in " + sw.out.string() +
+                          " leave them out.  The first: " + sw.render_failures.front());
     return r;
 }
 

@@ -16,8 +16,10 @@
 #include "compile/stages.h"
 #include "layers/graded.h"
 #include "layers/revolution.h"
+#include "pov/povray_path.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
+#include "util/new_directories.h"
 #include "util/output_set.h"
 #include "util/parallel.h"
 #include "util/process.h"
@@ -179,10 +181,13 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
     res.height = opt.height;
     const fs::path dir = fs::absolute(opt.out_dir.empty() ? fs::path("build/study") / ctx.name
                                                           : fs::path(opt.out_dir));
+    if (auto s = check_povray_path(dir.string(), "the output folder (-o)"); !s) return s.error();
     std::error_code ec;
-    fs::create_directories(dir / "curves", ec);
-    fs::create_directories(dir / "work", ec);
-    if (ec) return make_error(dir.string() + ": cannot create: " + ec.message());
+    // Taken away again (if empty) when the study fails: declared before the staging folder
+    // and the outputs, so that they go first.
+    NewDirectories folders;
+    for (const char* sub : {"curves", "work"})
+        if (auto s = folders.make((dir / sub).string()); !s) return s.error();
     res.out_dir = dir.string();
     // The results (curves, table, plots, summary) are written into a staging directory and
     // renamed into place together at the end: all of them or none.
@@ -245,6 +250,7 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
         return put(row.curve, c.str());
     };
 
+    std::vector<std::string> render_failures;  // POV-Ray's, with their cause
     // A plane design compiled, checked and rendered as `mirage compile` and `make render` do.
     auto compile_and_render = [&](StudyRow& row, CompileOptions c) -> Status {
         c.out_dir = (dir / "work" / slug(row.design)).string();
@@ -267,7 +273,12 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
         if (rep->camera == "corrected") ps.crop_top_row = rep->image_path;
         auto r = render_povray(ps);
         if (!r) return r.error();
-        if (r->exit_code != 0) return make_error("POV-Ray failed: " + log_tail(ps.log, 5));
+        if (r->exit_code != 0) {
+            render_failures.push_back(row.design + ": POV-Ray failed (exit " +
+                                      std::to_string(r->exit_code) + "; " + ps.log +
+                                      "): " + povray_failure_cause(ps.log));
+            return make_error("POV-Ray failed: " + log_tail(ps.log, 5));
+        }
         row.povray_seconds = r->seconds;
         row.povray_trace_seconds = r->log.trace_seconds.value_or(-1.0);
         return Ok{};
@@ -469,6 +480,13 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
     }
     if (ec) return make_error(staging.string() + ": cannot list: " + ec.message());
     if (auto s = outputs.commit(); !s) return s.error();
+    folders.keep();
+    // The results are written (their notes say what failed), but a study whose renders failed
+    // did not do what it was asked.
+    if (!render_failures.empty())
+        return make_error(std::to_string(render_failures.size()) +
+                          " POV-Ray render(s) failed; the results in " + dir.string() +
+                          " leave them out.  The first: " + render_failures.front());
     return res;
 }
 

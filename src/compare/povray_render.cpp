@@ -9,8 +9,10 @@
 #include <sstream>
 #include <vector>
 
+#include "pov/povray_path.h"
 #include "util/atomic_file.h"
 #include "util/process.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -38,8 +40,9 @@ PovrayLog parse_povray_log(std::string_view text) {
 Result<PovrayRender> render_povray(const PovrayRenderSettings& st) {
     std::vector<std::string> argv = {st.povray, "-D"};
     if (st.threads > 0) argv.push_back("+WT" + std::to_string(st.threads));
-    argv.push_back(st.ini);
-    if (!st.output.empty()) argv.push_back("+O" + st.output);
+    // POV-Ray splits an option at spaces unless its value is quoted (pov/povray_path.h).
+    argv.push_back(povray_quoted(st.ini));
+    if (!st.output.empty()) argv.push_back("+O" + povray_quoted(st.output));
     std::error_code ec;
     std::filesystem::remove(st.log, ec);
     auto run = run_process(argv, st.work_dir, st.log);
@@ -69,6 +72,27 @@ std::string log_tail(const std::string& path, int lines) {
     const size_t first = all.size() > static_cast<size_t>(lines) ? all.size() - lines : 0;
     for (size_t i = first; i < all.size(); ++i) out += all[i] + "\n";
     return out;
+}
+
+std::string povray_failure_cause(const std::string& log_path) {
+    auto text = read_file(log_path);
+    if (!text) return "no log (" + log_path + ")";
+    std::string line, last;
+    std::istringstream in(*text);
+    // POV-Ray's progress is one long line of carriage returns: split there too.
+    while (std::getline(in, line)) {
+        std::istringstream parts(line);
+        std::string part;
+        while (std::getline(parts, part, '\r')) {
+            if (part.find_first_not_of(" \t") == std::string::npos) continue;
+            if (part.find("Error") != std::string::npos ||
+                part.find("Failed to") != std::string::npos ||
+                part.find("Problem with") != std::string::npos)
+                return escape_control(part.substr(part.find_first_not_of(" \t")));
+            last = part;
+        }
+    }
+    return last.empty() ? "an empty log (" + log_path + ")" : escape_control(last);
 }
 
 }  // namespace mirage

@@ -48,6 +48,10 @@ struct PovrayRender {
 /// does not end in it.
 Result<PovrayRender> render_povray(const PovrayRenderSettings& settings);
 
+/// Why a render failed, from its log: POV-Ray's first error line ("Parse Error: Cannot open
+/// input file."), else the log's last line.
+std::string povray_failure_cause(const std::string& log_path);
+
 /// The last `lines` lines of a log file, for a message about a failed render.
 std::string log_tail(const std::string& path, int lines);
 

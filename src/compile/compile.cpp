@@ -12,7 +12,9 @@
 #include "pov/emit_camera.h"
 #include "pov/emit_layers.h"
 #include "util/format.h"
+#include "util/new_directories.h"
 #include "util/output_set.h"
+#include "util/text_escape.h"
 
 namespace fs = std::filesystem;
 
@@ -257,6 +259,9 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     const CompileContext& ctx = *ctx_r;
     // Every output is written at the end, all or none, and none over a file the scene was
     // read from (those the options name were refused by compile_settings already).
+    // The output folder is made when the outputs are written, and taken away again (if empty)
+    // when the run fails; declared first, so that the staged files go before it.
+    NewDirectories folders;
     OutputSet outputs(ctx.scene.files);
     const AtmosphereSettings& st = ctx.settings;
     rep.scene = opt.scene;
@@ -342,9 +347,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     }
     const fs::path dir =
         opt.out_dir.empty() ? fs::path("build/render") / rep.name : fs::path(opt.out_dir);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) return make_error(dir.string() + ": cannot create: " + ec.message());
+    if (auto s = folders.make(dir.string()); !s) return s.error();
     const fs::path abs_dir = fs::absolute(dir);
     rep.include_path = (abs_dir / "mirage_layers.inc").string();
     rep.csv_path = (abs_dir / "layers.csv").string();
@@ -354,10 +357,10 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                                        : fs::absolute(opt.image).string();
     if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
     const std::vector<std::string> header = {
-        "mirage_layers.inc: the banded atmosphere of " + rep.name + " at " +
+        "mirage_layers.inc: the banded atmosphere of " + escape_control(rep.name) + " at " +
             std::to_string(opt.width) + "x" + std::to_string(opt.height) +
             ", written by mirage compile.",
-        "Atmosphere: " + rep.atmosphere + "; " + rep.mode + " layers.",
+        "Atmosphere: " + escape_control(rep.atmosphere) + "; " + rep.mode + " layers.",
         ctx.many_origins
             ? "The camera's rays start at different points: every pixel's error, from its own "
               "origin, is in report.json (tolerance " +
@@ -468,6 +471,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         if (auto s = write_exr(error_map_image(rep), opt.error_map, &outputs); !s) return s.error();
     }
     if (auto s = outputs.commit(); !s) return s.error();
+    folders.keep();
     clock.done("report");
     return rep;
 }

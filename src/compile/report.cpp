@@ -6,6 +6,7 @@
 
 #include "compile/compile.h"
 #include "util/format.h"
+#include "util/json_text.h"
 
 namespace mirage {
 
@@ -114,7 +115,7 @@ std::string report_json(const CompileReport& r) {
         j["max_camera_error_px_samples"] = num(r.max_camera_error_px_samples);
     }
     j["verdict"] = report_verdict(r);
-    return j.dump(2) + "\n";
+    return json_text(j) + "\n";
 }
 
 std::string report_text(const CompileReport& r) {

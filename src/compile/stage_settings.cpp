@@ -6,6 +6,7 @@
 
 #include "compile/stages.h"
 #include "load/mirage_scene.h"
+#include "pov/povray_path.h"
 #include "scene/camera.h"
 #include "scene/ground.h"
 #include "trace/curved_propagator.h"
@@ -75,6 +76,24 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     CompileContext ctx;
     ctx.options = opt;
     ctx.name = fs::path(opt.scene).stem().string();
+    // What the .ini names for POV-Ray (pov/emit_layers.h): the scene, the image, the include
+    // folders, the output folder among them; refused before any work if POV-Ray cannot take
+    // one (compile_scene derives the same defaults).
+    {
+        const fs::path out_dir = fs::absolute(
+            opt.out_dir.empty() ? fs::path("build/render") / ctx.name : fs::path(opt.out_dir));
+        const std::string image = opt.image.empty()
+                                      ? (out_dir.parent_path() / (ctx.name + ".png")).string()
+                                      : fs::absolute(opt.image).string();
+        if (auto s = check_povray_path(fs::absolute(opt.scene).string(), "the scene"); !s)
+            return s.error();
+        if (auto s = check_povray_path(out_dir.string(), "the output folder (-o)"); !s)
+            return s.error();
+        if (auto s = check_povray_path(image, opt.image.empty() ? "the image" : "--image"); !s)
+            return s.error();
+        for (const auto& l : opt.library_paths)
+            if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s.error();
+    }
 
     // The image size, the include paths, the parse, the Mirage_ settings with the options'
     // replacements and the camera's place: load/mirage_scene.h.
@@ -95,8 +114,11 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
             if (!named.empty())
                 if (auto s = inputs.check(named); !s) return s.error();
     }
-    for (const auto& p : loaded->parse_options.library_paths)
+    for (const auto& p : loaded->parse_options.library_paths) {
         ctx.library_paths.push_back(fs::absolute(p).string());
+        if (auto s = check_povray_path(ctx.library_paths.back(), "the include folder"); !s)
+            return s.error();
+    }
     ctx.settings = loaded->settings;
     // Heights above the atmosphere's ground from here on (scene/ground.h).
     const double ground = ctx.settings.ground_height;
@@ -213,8 +235,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
             if (near > kMaxCurvedSkyRad * R) {
                 const double km = ctx.settings.unit_m / 1000.0;
                 return make_error(
-                    opt.scene +
-                    ": on the curved Earth POV-Ray sees the sky up to " +
+                    opt.scene + ": on the curved Earth POV-Ray sees the sky up to " +
                     "the layers' reach over the Earth's radius off (" + sig(near * km, 3) +
                     " km / " + shortest(R * km) + " km = " + sig(1e3 * near / R, 3) +
                     " mrad), more than the " + shortest(1e3 * kMaxCurvedSkyRad) +

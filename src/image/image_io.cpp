@@ -5,13 +5,16 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <vector>
 
 #include "util/check.h"
+#include "util/output_path.h"
 
 namespace mirage {
 
@@ -26,52 +29,49 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-/// A temporary name in the same directory as `path`, so the rename stays on one file system.
-/// OpenImageIO picks the format from the extension, so the extension is kept last.
-std::string temporary_name(const std::string& path) {
-    const std::filesystem::path p(path);
-    std::string name(".");
-    name.append(p.stem().string())
-        .append(".tmp")
-        .append(std::to_string(::getpid()))
-        .append(p.extension().string());
-    return (p.parent_path() / name).string();
+/// OpenImageIO's message about the temporary file, told of the output it stands for, with the
+/// system's reason when there is one.
+std::string write_message(const std::string& path, const std::string& tmp, std::string said,
+                          int err) {
+    for (std::size_t at = said.find(tmp); at != std::string::npos; at = said.find(tmp, at))
+        said.replace(at, tmp.size(), path);
+    std::string m = path + ": cannot write";
+    if (err != 0) m += std::string(": ") + std::strerror(err);
+    if (!said.empty()) m += " (" + said + ")";
+    return m;
 }
 
-// Writes to `outputs`' temporary name for `path` (renamed when the set is committed), or
-// without a set to a temporary name of its own, renamed at once.
-Status write_through_temporary(const std::string& path, const OIIO::ImageSpec& spec,
-                               const OIIO::TypeDesc& format, const void* data, OutputSet* outputs) {
-    std::string tmp;
-    if (outputs) {
-        auto staged = outputs->stage(path);
-        if (!staged) return staged.error();
-        tmp = *staged;
-    } else {
-        tmp = temporary_name(path);
+// Writes to `outputs`' temporary name for `path` (renamed, or written into a device or a
+// FIFO, when the set is committed), or without a set through a set of its own, committed at
+// once.
+// `kind` is OpenImageIO's name of the format ("png", "openexr"): a device or a FIFO named
+// without an extension still gets one.
+Status write_through_temporary(const std::string& path, const char* kind,
+                               const OIIO::ImageSpec& spec, const OIIO::TypeDesc& format,
+                               const void* data, OutputSet* outputs) {
+    if (!outputs) {
+        OutputSet own;
+        if (auto s = write_through_temporary(path, kind, spec, format, data, &own); !s) return s;
+        return own.commit();
     }
-    auto out = OIIO::ImageOutput::create(path);
+    auto staged = outputs->stage(path);
+    if (!staged) return staged.error();
+    const std::string tmp = *staged;
+    auto out = OIIO::ImageOutput::create(kind);
     if (!out) return make_error(path + ": cannot write images of this type: " + OIIO::geterror());
-    if (!out->open(tmp, spec)) {
-        return make_error(path + ": cannot open for writing: " + out->geterror());
-    }
+    errno = 0;
+    if (!out->open(tmp, spec)) return make_error(write_message(path, tmp, out->geterror(), errno));
     if (!out->write_image(format, data)) {
-        std::string message = path + ": write failed: " + out->geterror();
+        const int err = errno;
+        std::string message = write_message(path, tmp, out->geterror(), err);
         out->close();
         std::remove(tmp.c_str());
         return make_error(message);
     }
     if (!out->close()) {
-        std::string message = path + ": write failed: " + out->geterror();
+        std::string message = write_message(path, tmp, out->geterror(), errno);
         std::remove(tmp.c_str());
         return make_error(message);
-    }
-    if (outputs) return Ok{};
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        return make_error(path + ": cannot rename the written file into place: " + ec.message());
     }
     return Ok{};
 }
@@ -126,7 +126,7 @@ Status write_png(const Image& linear, const std::string& path, OutputSet* output
     OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("Software", "mirage");
-    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
+    return write_through_temporary(path, "png", spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
 }
 
 Status write_png_codes(const Image& codes, const std::string& path, OutputSet* outputs) {
@@ -138,7 +138,7 @@ Status write_png_codes(const Image& codes, const std::string& path, OutputSet* o
     OIIO::ImageSpec spec(codes.width, codes.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("Software", "mirage");
-    return write_through_temporary(path, spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
+    return write_through_temporary(path, "png", spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
 }
 
 Status write_exr(const Image& linear, const std::string& path, OutputSet* outputs) {
@@ -146,15 +146,26 @@ Status write_exr(const Image& linear, const std::string& path, OutputSet* output
     OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::FLOAT);
     spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("compression", "zip");
-    return write_through_temporary(path, spec, OIIO::TypeDesc::FLOAT, linear.pixels.data(),
-                                   outputs);
+    return write_through_temporary(path, "openexr", spec, OIIO::TypeDesc::FLOAT,
+                                   linear.pixels.data(), outputs);
+}
+
+Status check_image_name(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".png" || ext == ".exr") return Ok{};
+    if (ext.empty()) {
+        auto out = resolve_output_path(path);
+        if (!out) return out.error();
+        if (out->stream && out->target != "-") return Ok{};  // a device or a FIFO: PNG
+    }
+    return make_error(path + ": unknown image type '" + ext +
+                      "' (use .png or .exr)");
 }
 
 Status write_image(const Image& linear, const std::string& path, OutputSet* outputs) {
-    const std::string ext = lower_extension(path);
-    if (ext == ".png") return write_png(linear, path, outputs);
-    if (ext == ".exr") return write_exr(linear, path, outputs);
-    return make_error(path + ": unknown image type '" + ext + "' (use .png or .exr)");
+    if (auto s = check_image_name(path); !s) return s;
+    if (lower_extension(path) == ".exr") return write_exr(linear, path, outputs);
+    return write_png(linear, path, outputs);
 }
 
 Result<Image> read_image(const std::string& path) {

@@ -41,7 +41,12 @@ Status write_png_codes(const Image& codes, const std::string& path, OutputSet* o
 /// Writes linear pixels as a float RGB OpenEXR (no encoding), through a temporary name.
 Status write_exr(const Image& linear, const std::string& path, OutputSet* outputs = nullptr);
 
-/// Writes by extension: .png as `write_png`, .exr as `write_exr`; anything else is refused.
+/// Whether write_image takes `path`: .png, .exr, or a device or a FIFO without an extension
+/// (written as PNG).  An error names it.
+Status check_image_name(const std::string& path);
+
+/// Writes by extension: .png as `write_png`, .exr as `write_exr`, a device or a FIFO without
+/// an extension as PNG; anything else is refused (check_image_name).
 Status write_image(const Image& linear, const std::string& path, OutputSet* outputs = nullptr);
 
 /// Reads the first three channels of an image as stored: an 8-bit PNG gives code / 255

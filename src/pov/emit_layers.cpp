@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <sstream>
 
+#include "pov/povray_path.h"
 #include "util/check.h"
 #include "util/format.h"
+#include "util/text_escape.h"
 
 namespace mirage {
 
@@ -143,9 +145,11 @@ std::string layers_csv(const LayerStack& s, double camera_y) {
 }
 
 std::string render_ini(const IniSettings& st) {
-    auto quote = [](const std::string& p) { return "\"" + p + "\""; };
+    // The paths were checked by compile_settings (pov/povray_path.h): none holds a line end
+    // or a '"'.  The comment is escaped all the same.
+    auto quote = [](const std::string& p) { return povray_quoted(p); };
     std::ostringstream out;
-    out << "; Renders " << st.scene << " with its compiled mirage atmosphere.\n"
+    out << "; Renders " << escape_control(st.scene) << " with its compiled mirage atmosphere.\n"
         << "; Written by mirage compile; run: povray <this file>\n"
         << "Input_File_Name=" << quote(st.scene) << "\n"
         << "Output_File_Name=" << quote(st.output_image) << "\n"

@@ -5,6 +5,7 @@
 
 #include "scene/keywords.h"
 #include "scene/scene_parser.h"
+#include "util/text_escape.h"
 
 namespace mirage::scene_detail {
 namespace {
@@ -223,7 +224,9 @@ void SceneParser::directive_version(const Token& keyword) {
 }
 
 void SceneParser::directive_message(const Token& hash, const Token& keyword) {
-    std::string text = parse_string(false);
+    // The scene's own words, printed on a terminal: NULs and escape sequences as escapes
+    // (its line ends kept: "#debug concat(..., \"\\n\")" ends its own lines).
+    std::string text = escape_terminal(parse_string(false));
     if (keyword.is_word("error")) fail(hash, "#error: " + text);
     add_message(hash, keyword.is_word("warning") ? "warning" : "debug", text);
 }

@@ -20,17 +20,6 @@
 
 namespace mirage {
 
-namespace {
-
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
-}  // namespace
-
 void apply_output_gamma(Image& image, const GlobalSettings& global) {
     const bool legacy = global.language_version < 3.7 - 1e-9 && !global.assumed_gamma_given;
     if (!legacy && global.assumed_gamma == 1.0) return;
@@ -61,12 +50,8 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         return make_error("--threads " + std::to_string(opt.threads) +
                           ": must be 0 (all cores) or more");
     }
-    if (!opt.output.empty()) {
-        const std::string ext = lower_extension(opt.output);
-        if (ext != ".png" && ext != ".exr") {
-            return make_error(opt.output + ": unknown image type '" + ext + "' (use .png or .exr)");
-        }
-    }
+    if (!opt.output.empty())
+        if (auto s = check_image_name(opt.output); !s) return s.error();
 
     SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
     lo.strict = true;  // the tracer renders every object: none may be left out silently

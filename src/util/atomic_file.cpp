@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "util/output_path.h"
+
 namespace mirage {
 
 std::string temporary_name_for(const std::string& path) {
@@ -15,7 +17,13 @@ std::string temporary_name_for(const std::string& path) {
 }
 
 Status commit_file(const std::string& from, const std::string& to) {
-    if (std::rename(from.c_str(), to.c_str()) != 0) {
+    auto out = resolve_output_path(to);
+    if (!out) {
+        std::remove(from.c_str());
+        return out.error();
+    }
+    if (out->stream) return copy_to_stream(from, *out);
+    if (std::rename(from.c_str(), out->target.c_str()) != 0) {
         const std::string reason = std::strerror(errno);
         std::remove(from.c_str());
         return make_error(to + ": cannot write: " + reason);
@@ -24,15 +32,19 @@ Status commit_file(const std::string& from, const std::string& to) {
 }
 
 Status write_file_atomic(const std::string& path, std::string_view content) {
-    const std::string tmp = temporary_name_for(path);
+    auto out = resolve_output_path(path);
+    if (!out) return out.error();
+    if (out->stream) return write_stream(*out, content);
+    const std::string tmp = temporary_for(*out);
     {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return make_error(path + ": cannot write: " + std::strerror(errno));
-        out.write(content.data(), static_cast<std::streamsize>(content.size()));
-        out.flush();
-        if (!out) {
+        std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
+        if (!file) return make_error(path + ": cannot write: " + std::strerror(errno));
+        file.write(content.data(), static_cast<std::streamsize>(content.size()));
+        file.flush();
+        if (!file) {
+            const std::string reason = std::strerror(errno);
             std::remove(tmp.c_str());
-            return make_error(path + ": write failed: " + std::strerror(errno));
+            return make_error(path + ": cannot write: " + reason);
         }
     }
     return commit_file(tmp, path);

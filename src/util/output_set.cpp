@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "util/output_path.h"
+
 namespace mirage {
 
 namespace fs = std::filesystem;
@@ -52,9 +54,7 @@ void OutputSet::protect(const std::vector<std::string>& inputs) {
 }
 
 Status OutputSet::check(const std::string& path) const {
-    std::error_code ec;
-    if (fs::is_directory(path, ec))
-        return make_error(path + ": is a directory; an output must be a file");
+    if (auto out = resolve_output_path(path); !out) return out.error();
     for (const std::string& input : inputs_) {
         if (same_file(input, path) || normal(input) == normal(path)) {
             return make_error(path + ": the output would overwrite " +
@@ -63,7 +63,7 @@ Status OutputSet::check(const std::string& path) const {
         }
     }
     for (const Staged& s : staged_) {
-        if (same_file(s.target, path) || normal(s.target) == normal(path))
+        if (same_file(s.out.name, path) || normal(s.out.name) == normal(path))
             return make_error(path + ": named for two outputs of this command");
     }
     return Ok{};
@@ -71,16 +71,19 @@ Status OutputSet::check(const std::string& path) const {
 
 Result<std::string> OutputSet::stage(const std::string& path) {
     if (auto s = check(path); !s) return s.error();
-    staged_.push_back({path, sibling_name(path, ".tmp")});
+    auto out = resolve_output_path(path);
+    if (!out) return out.error();
+    staged_.push_back({*out, temporary_for(*out)});
     return staged_.back().temporary;
 }
 
 Status OutputSet::adopt(const std::string& temporary, const std::string& target) {
-    if (auto s = check(target); !s) {
+    auto out = resolve_output_path(target);
+    if (auto s = out ? check(target) : Status(out.error()); !s) {
         std::remove(temporary.c_str());
         return s;
     }
-    staged_.push_back({target, temporary});
+    staged_.push_back({*out, temporary});
     return Ok{};
 }
 
@@ -100,31 +103,42 @@ Status OutputSet::commit() {
         std::string backup;  // the target's old content, kept under another name; "" if none
         bool existed = false;
     };
-    std::vector<Done> done;
+    // Streams first: what went into a device or a pipe cannot be taken back, so it goes
+    // before any file is replaced, and a failed stream leaves every file as it was.
     for (const Staged& s : staged_) {
+        if (!s.out.stream) continue;
+        if (auto c = copy_to_stream(s.temporary, s.out); !c) return c;
+    }
+    std::vector<const Staged*> files;
+    for (const Staged& s : staged_)
+        if (!s.out.stream) files.push_back(&s);
+    std::vector<Done> done;
+    for (const Staged* f : files) {
+        const Staged& s = *f;
+        const std::string& target = s.out.target;
         Done d;
         std::error_code ec;
-        d.existed = fs::exists(fs::symlink_status(s.target, ec));
+        d.existed = fs::exists(fs::symlink_status(target, ec));
         if (d.existed) {
             // A second name for the old file, so that it can come back if a later rename fails.
-            d.backup = sibling_name(s.target, ".old");
-            if (::link(s.target.c_str(), d.backup.c_str()) != 0) d.backup.clear();
+            d.backup = sibling_name(target, ".old");
+            if (::link(target.c_str(), d.backup.c_str()) != 0) d.backup.clear();
         }
-        if (std::rename(s.temporary.c_str(), s.target.c_str()) != 0) {
+        if (std::rename(s.temporary.c_str(), target.c_str()) != 0) {
             const std::string reason = std::strerror(errno);
             if (!d.backup.empty()) std::remove(d.backup.c_str());
             bool restored = true;
             for (std::size_t k = done.size(); k-- > 0;) {
-                const std::string& target = staged_[k].target;
+                const std::string& old = files[k]->out.target;
                 if (!done[k].backup.empty()) {
-                    restored = std::rename(done[k].backup.c_str(), target.c_str()) == 0 && restored;
+                    restored = std::rename(done[k].backup.c_str(), old.c_str()) == 0 && restored;
                 } else if (!done[k].existed) {
-                    std::remove(target.c_str());
+                    std::remove(old.c_str());
                 } else {
                     restored = false;  // no second name could be made for it
                 }
             }
-            return make_error(s.target + ": cannot write: " + reason +
+            return make_error(s.out.name + ": cannot write: " + reason +
                               (restored ? " (no output of this command was changed)" : ""));
         }
         done.push_back(d);
@@ -137,7 +151,7 @@ Status OutputSet::commit() {
 
 std::vector<std::string> OutputSet::targets() const {
     std::vector<std::string> t;
-    for (const Staged& s : staged_) t.push_back(s.target);
+    for (const Staged& s : staged_) t.push_back(s.out.name);
     return t;
 }
 

@@ -4,13 +4,15 @@
 // renames them all into place, and if one rename fails the ones done are undone.  An output
 // that would replace an input (compared as files: through links and any spelling of the
 // path), another output or a directory is refused when it is staged, before anything is
-// written.
+// written.  A device, a FIFO or "-" named as an output is written as a stream when the set
+// is committed, before any file is renamed (util/output_path.h).
 #pragma once
 
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "util/output_path.h"
 #include "util/result.h"
 
 namespace mirage {
@@ -50,7 +52,8 @@ class OutputSet {
 
   private:
     struct Staged {
-        std::string target, temporary;
+        OutputPath out;
+        std::string temporary;
     };
     std::vector<std::string> inputs_;
     std::vector<Staged> staged_;

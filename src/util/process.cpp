@@ -1,6 +1,7 @@
 #include "util/process.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -72,6 +73,11 @@ Result<ProcessRun> run_process(const std::vector<std::string>& argv, const std::
     }
     if (pid == 0) {
         ::close(status_pipe[0]);
+        // mirage ignores SIGPIPE (cli/main.cpp); an ignored signal stays ignored across exec,
+        // and the programs run from here expect the default.
+        struct sigaction dfl {};
+        dfl.sa_handler = SIG_DFL;
+        ::sigaction(SIGPIPE, &dfl, nullptr);
         int err = 0;
         if (!work_dir.empty() && ::chdir(work_dir.c_str()) != 0) {
             err = errno;

@@ -20,6 +20,7 @@
 #include "load/atmosphere_settings.h"
 #include "scene/camera.h"
 #include "scene/parser.h"
+#include "util/hex_args.h"
 #include "util/process.h"
 
 namespace mirage {
@@ -494,14 +495,29 @@ TEST(Animate, SlurmScriptStatesTheResourcesPerTask) {
     const std::string s = slurm_script(*a, {1, 2, 3, 5});
     for (const char* line :
          {"#SBATCH --array=1-3,5\n", "#SBATCH --ntasks=1\n", "#SBATCH --cpus-per-task=2\n",
-          "#SBATCH --mem=3G\n", "#SBATCH --time=00:20:00\n", "#SBATCH --partition=render\n",
-          "#SBATCH --output=/shared/walk/frames/frame_%4a.log\n"})
+          "#SBATCH --mem=3G\n", "#SBATCH --time=00:20:00\n", "#SBATCH --partition=render\n"})
         EXPECT_NE(s.find(line), std::string::npos) << line << " in\n" << s;
-    EXPECT_NE(s.find("exec /opt/mirage/bin/mirage animate " + kWalk +
+    // The names of files go to sbatch as arguments, never into a line of the script.
+    const auto argv = slurm_submit_argv(*a, "job.sbatch");
+    ASSERT_EQ(argv.size(), 6u);
+    EXPECT_EQ(argv[1], "--parsable");
+    EXPECT_EQ(argv[2], "--job-name=mirage-walk");
+    EXPECT_EQ(argv[3], "--output=/shared/walk/frames/frame_%4a.log");
+    EXPECT_EQ(argv[5], "job.sbatch");
+    EXPECT_NE(s.find("# The task: /opt/mirage/bin/mirage animate " + kWalk +
                      " --frames 12 -W 320 -H 240 --model bands -o /shared/walk --threads 2 "
                      "--frame \"$SLURM_ARRAY_TASK_ID\"\n"),
               std::string::npos)
         << s;
+    // The task itself, its options in hex.
+    const std::string exec = "exec /opt/mirage/bin/mirage --args-hex ";
+    const auto at = s.find(exec);
+    ASSERT_NE(at, std::string::npos) << s;
+    const auto hex = s.substr(at + exec.size(), s.find(' ', at + exec.size()) - at - exec.size());
+    std::vector<std::string> task = a->task_argv("");
+    task.erase(task.begin());
+    EXPECT_EQ(args_from_hex(hex), task);
+    EXPECT_NE(s.find(hex + " --frame \"$SLURM_ARRAY_TASK_ID\"\n"), std::string::npos) << s;
 }
 
 TEST(Animate, FramesOverGnuParallelAreByteIdenticalToLocalOnes) {
