@@ -27,6 +27,12 @@ void print_headlines(const CompareResult& r) {
                   << " s, adaptive layers " << sig(e.b.seconds, 3) << " s (x" << sig(e.speedup(), 3)
                   << ")\n";
     }
+    if (h.corrected_vs_uniform) {
+        const EqualError& e = *h.corrected_vs_uniform;
+        std::cout << "at RMSE " << sig(e.error, 3) << ": uniform layers " << sig(e.a.seconds, 3)
+                  << " s, the corrected camera " << sig(e.b.seconds, 3) << " s (x"
+                  << sig(e.speedup(), 3) << ")\n";
+    }
     if (h.tracer_vs_steps) {
         const EqualError& e = *h.tracer_vs_steps;
         std::cout << "at RMSE " << sig(e.error, 3) << ": POV-Ray with index steps "
@@ -52,8 +58,8 @@ void setup_compare_command(CLI::App& app) {
     auto* sub = app.add_subcommand(
         "compare",
         "Error against run time: uniform and adaptive layers (for real air, index steps) "
-        "rendered by POV-Ray and the tracer's polylines, each against a finely traced "
-        "reference");
+        "and the corrected camera rendered by POV-Ray, and the tracer's polylines, each "
+        "against a finely traced reference");
     sub->add_option("scene", c.scene, "the .pov scene")->required();
     sub->add_option("-W,--width", c.width, "image width, pixels")->capture_default_str();
     sub->add_option("-H,--height", c.height, "image height, pixels")->capture_default_str();
@@ -75,6 +81,11 @@ void setup_compare_command(CLI::App& app) {
         ->allow_extra_args(false);
     sub->add_option("--tolerances", c.tolerances,
                     "adaptive layers' tolerances, pixels, comma-separated")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->capture_default_str();
+    sub->add_option("--corrected-counts", c.corrected_counts,
+                    "layer counts of the corrected camera, comma-separated (empty: none)")
         ->delimiter(',')
         ->allow_extra_args(false)
         ->capture_default_str();

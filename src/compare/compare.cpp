@@ -195,9 +195,10 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     row.model = model;
     row.setting = setting;
     const std::string id = row_id(model, setting_text(row));
-    const std::string label = (model == CompareModel::UniformBands    ? "uniform "
-                               : model == CompareModel::AdaptiveBands ? "adaptive "
-                                                                      : "index-step-bands ") +
+    const std::string label = (model == CompareModel::UniformBands     ? "uniform "
+                               : model == CompareModel::AdaptiveBands  ? "adaptive "
+                               : model == CompareModel::CorrectedBands ? "corrected "
+                                                                       : "index-step-bands ") +
                               setting_label(row);
     const fs::path dir = sw.work / id;
     const fs::path image = sw.out / "renders" / (id + ".png");
@@ -214,7 +215,11 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     c.samples_per_side = 1;
     c.progress = false;
     c.camera = CameraModel::Perspective;
-    if (model == CompareModel::UniformBands) {
+    if (model == CompareModel::CorrectedBands) {
+        // The default design under the corrected camera, at the count asked for.
+        c.camera = CameraModel::Corrected;
+        c.layer_count = static_cast<int>(std::lround(setting));
+    } else if (model == CompareModel::UniformBands) {
         c.layers = LayerMode::Uniform;
         c.layer_count = static_cast<int>(std::lround(setting));
     } else if (model == CompareModel::IndexStepBands) {
@@ -422,6 +427,8 @@ std::string model_name(CompareModel model) {
             return "adaptive-bands";
         case CompareModel::IndexStepBands:
             return "index-step-bands";
+        case CompareModel::CorrectedBands:
+            return "corrected-bands";
         case CompareModel::Polyline:
             return "polyline";
         case CompareModel::Scanline:
@@ -463,6 +470,8 @@ Status validate_compare_options(const CompareOptions& o) {
         if (auto s = check_layer_count(n, "--counts"); !s) return s;
     for (int n : o.steps)
         if (auto s = check_layer_count(n, "--steps"); !s) return s;
+    for (int n : o.corrected_counts)
+        if (auto s = check_layer_count(n, "--corrected-counts"); !s) return s;
     const std::pair<const char*, const std::vector<double>*> lists[] = {
         {"--tolerances", &o.tolerances}, {"--trace-tolerances", &o.trace_tolerances}};
     for (const auto& [flag, values] : lists)
@@ -491,6 +500,7 @@ std::string compare_command_line(const CompareOptions& o) {
     if (!o.counts.empty()) s << " --counts " << list_text(o.counts);
     if (!o.tolerances.empty()) s << " --tolerances " << list_text(o.tolerances);
     if (!o.steps.empty()) s << " --steps " << list_text(o.steps);
+    s << " --corrected-counts " << list_text(o.corrected_counts);
     if (!o.trace_tolerances.empty()) s << " --trace-tolerances " << list_text(o.trace_tolerances);
     if (o.scanline) s << " --scanline-paths";
     s << " --threshold " << shortest(o.threshold);
@@ -505,7 +515,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     sw.opt = options;
     CompareOptions& opt = sw.opt;
     // From coarse to fine, each setting once.
-    for (auto* list : {&opt.counts, &opt.steps}) {
+    for (auto* list : {&opt.counts, &opt.steps, &opt.corrected_counts}) {
         std::sort(list->begin(), list->end());
         list->erase(std::unique(list->begin(), list->end()), list->end());
     }
@@ -659,6 +669,17 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
                     "reflections needs trace level " +
                     std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
                     std::to_string(kPovrayMaxTraceLevel));
+    }
+
+    // The corrected camera (mirage compile's default) at a few layer counts.
+    for (int n : opt.corrected_counts) {
+        CompileReport over;
+        auto outcome = run_band(sw, CompareModel::CorrectedBands, n, &over);
+        if (!outcome) return outcome.error();
+        if (*outcome == BandOutcome::OverBudget) {
+            sw.note(over_budget_note("corrected-bands", n, "layers", over));
+            break;
+        }
     }
 
     for (double tol : opt.trace_tolerances)

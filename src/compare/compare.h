@@ -19,11 +19,13 @@ enum class CompareModel {
     UniformBands,   // Berger, Trout & Levit's equal layers, rendered by POV-Ray
     AdaptiveBands,  // layers fitted to the scene's rays, rendered by POV-Ray
     IndexStepBands, // real air's layers at equal steps of the index, rendered by POV-Ray
+    CorrectedBands, // the corrected camera: every pixel aimed through N layers (POV-Ray)
     Polyline,       // the tracer along every ray's own path
     Scanline,       // the tracer along one path per image row (Khote & Howard)
 };
 
-/// "uniform-bands", "adaptive-bands", "index-step-bands", "polyline", "scanline": the `model`
+/// "uniform-bands", "adaptive-bands", "index-step-bands", "corrected-bands", "polyline",
+/// "scanline": the `model`
 /// column.
 std::string model_name(CompareModel model);
 
@@ -41,6 +43,7 @@ struct CompareOptions {
     std::vector<double> tolerances = {4, 2, 1, 0.5, 0.25, 0.1};        // adaptive layers, px
     std::vector<int> steps;  // index steps (real air only); empty: 8, 16, ... 256 doubling
                              // while a design stays within the trace-level budget
+    std::vector<int> corrected_counts = {6, 12, 24, 48};  // layers of the corrected camera
     std::vector<double> trace_tolerances = {4, 2, 1, 0.5, 0.25, 0.1};  // polylines, px
     bool scanline = false;    // also the per-scanline tracer at trace_tolerances
     double threshold = 0.05;  // a pixel is "over" when a channel differs by more (code / 255)

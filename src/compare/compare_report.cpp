@@ -11,18 +11,19 @@ namespace mirage {
 
 namespace {
 
-const CompareModel kModels[] = {CompareModel::UniformBands, CompareModel::AdaptiveBands,
-                                CompareModel::IndexStepBands, CompareModel::Polyline,
-                                CompareModel::Scanline};
+const CompareModel kModels[] = {CompareModel::UniformBands,   CompareModel::AdaptiveBands,
+                                CompareModel::IndexStepBands, CompareModel::CorrectedBands,
+                                CompareModel::Polyline,       CompareModel::Scanline};
 
 bool is_band(CompareModel m) {
     return m == CompareModel::UniformBands || m == CompareModel::AdaptiveBands ||
-           m == CompareModel::IndexStepBands;
+           m == CompareModel::IndexStepBands || m == CompareModel::CorrectedBands;
 }
 
 // Settings that are counts (finer: larger), not tolerances (finer: smaller).
 bool counted(CompareModel m) {
-    return m == CompareModel::UniformBands || m == CompareModel::IndexStepBands;
+    return m == CompareModel::UniformBands || m == CompareModel::IndexStepBands ||
+           m == CompareModel::CorrectedBands;
 }
 
 std::string csv_number(double v, int digits) {
@@ -100,6 +101,7 @@ std::string setting_text(const CompareRow& row) {
 std::string setting_label(const CompareRow& row) {
     if (row.model == CompareModel::UniformBands) return setting_text(row) + " layers";
     if (row.model == CompareModel::IndexStepBands) return setting_text(row) + " steps";
+    if (row.model == CompareModel::CorrectedBands) return setting_text(row) + " layers";
     return setting_text(row) + " px";
 }
 
@@ -118,7 +120,10 @@ Headlines compute_headlines(const std::vector<CompareRow>& rows, TimeBasis basis
     const auto adaptive = model_front(rows, CompareModel::AdaptiveBands, basis);
     const auto steps = model_front(rows, CompareModel::IndexStepBands, basis);
     const auto polyline = model_front(rows, CompareModel::Polyline, basis);
+    const auto corrected = model_front(rows, CompareModel::CorrectedBands, basis);
     Headlines h;
+    h.corrected_vs_uniform = compare_at_equal_error(uniform, corrected);
+    h.corrected_vs_adaptive = compare_at_equal_error(adaptive, corrected);
     h.adaptive_vs_uniform = compare_at_equal_error(uniform, adaptive);
     h.tracer_vs_adaptive = compare_at_equal_error(adaptive, polyline);
     h.tracer_vs_uniform = compare_at_equal_error(uniform, polyline);
@@ -209,6 +214,7 @@ std::string gnuplot_script(const CompareResult& result) {
         {CompareModel::UniformBands, {"#d62728", "7"}},   // red, filled circles
         {CompareModel::AdaptiveBands, {"#1f77b4", "5"}},  // blue, filled squares
         {CompareModel::IndexStepBands, {"#ff7f0e", "13"}}, // orange, filled diamonds
+        {CompareModel::CorrectedBands, {"#17becf", "15"}}, // cyan, filled pentagons
         {CompareModel::Polyline, {"#2ca02c", "9"}},       // green, filled triangles
         {CompareModel::Scanline, {"#9467bd", "11"}},      // purple, filled triangles down
     };
@@ -216,6 +222,7 @@ std::string gnuplot_script(const CompareResult& result) {
         {CompareModel::UniformBands, "uniform-bands (POV-Ray, N equal layers)"},
         {CompareModel::AdaptiveBands, "adaptive-bands (POV-Ray, tolerance px)"},
         {CompareModel::IndexStepBands, "index-step-bands (POV-Ray, N equal index steps)"},
+        {CompareModel::CorrectedBands, "corrected-bands (POV-Ray, corrected camera, N layers)"},
         {CompareModel::Polyline, "polyline (tracer, tolerance px)"},
         {CompareModel::Scanline, "scanline (tracer, per-row paths, px)"},
     };
@@ -297,6 +304,22 @@ std::string summary_markdown(const CompareResult& r) {
     } else {
         md << "- Adaptive against uniform layers: not compared (a model has no rendered "
               "setting).\n";
+    }
+    if (h.corrected_vs_uniform) {
+        const EqualError& e = *h.corrected_vs_uniform;
+        md << "- **The corrected camera against uniform layers:** at RMSE " << rmse_text(e.error)
+           << ", uniform layers take " << describe_time(e.a) << " and the corrected camera "
+           << describe_time(e.b) << ": " << describe_ratio(e, "the corrected camera is")
+           << ".\n";
+        render_line(hr.corrected_vs_uniform, "the corrected camera");
+    }
+    if (h.corrected_vs_adaptive) {
+        const EqualError& e = *h.corrected_vs_adaptive;
+        md << "- **The corrected camera against adaptive layers:** at RMSE "
+           << rmse_text(e.error) << ", adaptive layers take " << describe_time(e.a)
+           << " and the corrected camera " << describe_time(e.b) << ": "
+           << describe_ratio(e, "the corrected camera is") << ".\n";
+        render_line(hr.corrected_vs_adaptive, "the corrected camera");
     }
     if (h.tracer_vs_adaptive) {
         const EqualError& e = *h.tracer_vs_adaptive;

@@ -34,6 +34,8 @@ struct Headlines {
     std::optional<EqualError> tracer_vs_uniform;    // a: uniform, b: polyline
     std::optional<EqualError> steps_vs_uniform;     // a: uniform, b: index steps
     std::optional<EqualError> tracer_vs_steps;      // a: index steps, b: polyline
+    std::optional<EqualError> corrected_vs_uniform;   // a: uniform, b: corrected camera
+    std::optional<EqualError> corrected_vs_adaptive;  // a: adaptive, b: corrected camera
 };
 Headlines compute_headlines(const std::vector<CompareRow>& rows, TimeBasis basis = TimeBasis::Wall);
 
