@@ -89,7 +89,8 @@ TEST(Sounding, BadSoundingsAreRefusedWithFileLineAndColumn) {
 TEST(Sounding, MissingFileIsNamed) {
     auto s = read_sounding("/nonexistent/sounding.csv");
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.message(), "/nonexistent/sounding.csv: cannot open: No such file or directory");
+    EXPECT_EQ(s.message(),
+              "/nonexistent/sounding.csv: cannot be opened: No such file or directory");
 }
 
 // The spline passes through every row, has one slope at every knot, and keeps monotone data
