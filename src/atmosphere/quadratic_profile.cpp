@@ -483,21 +483,23 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
             return sp.max_beta_sq > 0.0;
         };
         // Spans of 1, 2, 4, 8, ... fine intervals, so that a ray can step over as many as its
-        // direction allows wherever it is: those of up to kSpanStarts intervals from every node
-        // (the fine intervals' ends), longer ones of len intervals from every (len /
-        // kSpanStarts)-th node.  A ray crosses a long stretch in a few more steps, and the
-        // spans cost O(kSpanStarts) checks of each fine interval per length, O(m log m) in all
-        // (from every node they cost O(m^2): 10^4 sounding rows took minutes).
+        // direction allows wherever it is: from every node (the fine intervals' ends) in a
+        // model of up to kSpansFromEveryNode intervals.  In a larger one those of up to
+        // kSpanStarts intervals start at every node, longer ones of len intervals at every (len /
+        // kSpanStarts)-th: a ray crosses a long stretch in a few more steps, and the spans cost
+        // O(kSpanStarts) checks of each fine interval per length, O(m log m) in all (from every
+        // node they cost O(m^2): 10^4 sounding rows took minutes).
         std::vector<int> nodes;
         for (int k = 0; k <= m; k += 2) nodes.push_back(k);
         const int intervals = static_cast<int>(nodes.size()) - 1;
         std::vector<int> edges_before(nodes.size(), 0);  // edges among nodes[1..i]
         for (size_t i = 1; i < nodes.size(); ++i)
             edges_before[i] = edges_before[i - 1] + (i + 1 < nodes.size() && edge[nodes[i]]);
-        constexpr int kSpanStarts = 8;
+        constexpr int kSpansFromEveryNode = 2048, kSpanStarts = 8;
         for (int len = 1; len <= intervals; len *= 2) {
             bool any = false;
-            const int stride = std::max(1, len / kSpanStarts);
+            const int stride =
+                intervals <= kSpansFromEveryNode ? 1 : std::max(1, len / kSpanStarts);
             for (int i = 0; i + len <= intervals; i += stride) {
                 // No corner strictly inside.
                 if (edges_before[i + len - 1] - edges_before[i] > 0) continue;
