@@ -199,8 +199,7 @@ TEST(GeneralProfile, FittingASoundingCostsAboutItsRows) {
     const FitReport large = fit_smooth_sounding(6000);
     ASSERT_GT(small.checks, 0);
     EXPECT_GT(large.pieces, 3 * small.pieces);
-    EXPECT_LT(double(large.checks) / small.checks, 6.0)
-        << small.checks << " then " << large.checks;
+    EXPECT_LT(double(large.checks) / small.checks, 6.0) << small.checks << " then " << large.checks;
 }
 
 // A fit that fails on a sounding names the file and the rows around the height where it

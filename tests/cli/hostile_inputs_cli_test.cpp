@@ -156,14 +156,14 @@ TEST(HostileInputs, PathOptionsAreNumbersInTheirRanges) {
 
 TEST(HostileInputs, LibraryPathsAreDirectories) {
     const auto dir = test_dir("hostile_inputs", "library_paths");
-    auto r = run_tool("trace " + quoted(fs::path(kDesert)) + " -W 16 -H 12 -L " + quoted(fs::path(kDesert)) + " -o " +
-                      quoted(dir / "d.png"));
+    auto r = run_tool("trace " + quoted(fs::path(kDesert)) + " -W 16 -H 12 -L " +
+                      quoted(fs::path(kDesert)) + " -o " + quoted(dir / "d.png"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage trace: -L " + kDesert +
                          ": is not a directory: -L names a directory to look for include files "
                          "in\n");
-    r = run_tool("compile " + quoted(fs::path(kDesert)) + " -W 16 -H 12 -L " + quoted(dir / "none") + " -o " +
-                 quoted(dir / "outc"));
+    r = run_tool("compile " + quoted(fs::path(kDesert)) + " -W 16 -H 12 -L " +
+                 quoted(dir / "none") + " -o " + quoted(dir / "outc"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage compile: -L " + (dir / "none").string() +
                          ": no such directory: -L names a directory to look for include files "
