@@ -150,8 +150,19 @@ Result<Sounding> parse_sounding(std::string_view text, const std::string& source
             if (!(v[kTemperature] > -273.15))
                 return bad(kTemperature, "temperature " + shortest(v[kTemperature]) +
                                              " degC is at or below absolute zero");
-            if (col[kPressure] >= 0 && !(v[kPressure] > 0.0))
-                return bad(kPressure, "pressure " + shortest(v[kPressure]) + " hPa must be > 0");
+            // The scenes' range of air temperatures: 3.7e6 degC in one row made the fit follow
+            // it with a million pieces (48 s, 935 MB) before it gave up.
+            if (!(v[kTemperature] >= kMinSoundingTemperatureC &&
+                  v[kTemperature] <= kMaxSoundingTemperatureC))
+                return bad(kTemperature, "temperature " + shortest(v[kTemperature]) +
+                                             " degC must be from " +
+                                             shortest(kMinSoundingTemperatureC) + " to " +
+                                             shortest(kMaxSoundingTemperatureC) + " degC");
+            if (col[kPressure] >= 0 &&
+                !(v[kPressure] >= kMinSoundingPressureHpa && v[kPressure] <= kMaxSoundingPressureHpa))
+                return bad(kPressure, "pressure " + shortest(v[kPressure]) + " hPa must be from " +
+                                          shortest(kMinSoundingPressureHpa) + " to " +
+                                          shortest(kMaxSoundingPressureHpa) + " hPa");
             if (col[kHumidity] >= 0 && !(v[kHumidity] >= 0.0 && v[kHumidity] <= 100.0))
                 return bad(kHumidity, "relative humidity " + shortest(v[kHumidity]) +
                                           " % must lie in [0, 100]");

@@ -49,6 +49,9 @@ inline void check_sounding_input(std::string_view text) {
         FitSettings fit;
         fit.tolerance_n = 1e-10;
         fit.coarse_spans = true;
+        // Fewer pieces than a command allows (2^20), so that each input takes milliseconds:
+        // reaching a command's limit takes tens of seconds.
+        fit.max_pieces = 20000;
         auto q = fit_air(spec, fit);
         if (!q) {
             check_message(q.message());
