@@ -22,7 +22,8 @@
 #   make fuzz            libFuzzer on the scene parser and the Mirage_ settings reader for
 #                        FUZZ_SECONDS (default 600) in FUZZ_JOBS processes (default 1), in
 #                        build-fuzz/ with clang; installs FUZZ_PACKAGES first (make test
-#                        needs none of them)
+#                        needs none of them).  FUZZ_TARGET=csv, sounding or truetype for the
+#                        other readers; FUZZ_SANITIZERS=0 for the faster plain build
 #   make clean
 
 BUILD   ?= build
@@ -94,23 +95,38 @@ study: build
 bench: build
 	$(BUILD)/mirage_bench
 
-# The corpus grows in $(FUZZ_BUILD)/corpus from run to run; a crashing input is written to
-# $(FUZZ_BUILD)/artifacts/ (and belongs in tests/fuzz/crashes/ once fixed).  The stack is
-# 1 GiB: with AddressSanitizer a level of the parser's nesting takes up to about 140 KiB, and in
-# the default 8 MiB the parse would stop at its stack (with its message) some 50 levels deep,
-# short of the 256 levels it allows.
+# The corpus grows in $(FUZZ_BUILD)/corpus-$(FUZZ_TARGET) from run to run; a crashing input is
+# written to $(FUZZ_BUILD)/artifacts/ (and belongs in tests/fuzz/crashes/ once fixed).  The stack
+# is 1 GiB: with AddressSanitizer a level of the parser's nesting takes up to about 140 KiB, and
+# in the default 8 MiB the parse would stop at its stack (with its message) some 50 levels deep,
+# short of the 256 levels it allows.  FUZZ_SANITIZERS=0 builds in $(FUZZ_BUILD)-plain without
+# the sanitizers (libFuzzer's coverage alone): several times the executions a second.
+FUZZ_TARGET     ?= scene
+FUZZ_SANITIZERS ?= 1
+FUZZ_DIR        := $(FUZZ_BUILD)$(if $(filter 0,$(FUZZ_SANITIZERS)),-plain)
+FUZZ_SEEDS_scene    := $(FUZZ_DIR)/seeds -dict=$(FUZZ_DIR)/scene.dict
+FUZZ_SEEDS_csv      := tests/data tests/fuzz/crashes/csv
+FUZZ_SEEDS_sounding := $(FUZZ_DIR)/seeds-sounding tests/fuzz/crashes/sounding
+FUZZ_SEEDS_truetype := $(FUZZ_DIR)/seeds-truetype tests/fuzz/crashes/truetype
+FUZZ_SEED_FILES_sounding := scenes/hot_road.csv docs/sounding_example.csv
+FUZZ_SEED_FILES_truetype := $(wildcard /usr/share/povray-3.7/include/*.ttf)
+FUZZ_MAX_LEN_truetype := 65536
 fuzz: deps
 	@sh tools/install-deps.sh $(FUZZ_PACKAGES)
-	@test -f $(FUZZ_BUILD)/CMakeCache.txt || cmake -S . -B $(FUZZ_BUILD) \
-	    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 -DMIRAGE_FUZZ=ON
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target mirage_scene_fuzzer
-	@mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
-	python3 tools/fuzz_corpus.py $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/scene.dict
-	ulimit -s 1048576 && $(FUZZ_BUILD)/mirage_scene_fuzzer $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds \
-	    -dict=$(FUZZ_BUILD)/scene.dict -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	@test -f $(FUZZ_DIR)/CMakeCache.txt || cmake -S . -B $(FUZZ_DIR) \
+	    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 -DMIRAGE_FUZZ=ON \
+	    -DMIRAGE_FUZZ_SANITIZERS=$(if $(filter 0,$(FUZZ_SANITIZERS)),OFF,ON)
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target mirage_$(FUZZ_TARGET)_fuzzer
+	@mkdir -p $(FUZZ_DIR)/corpus-$(FUZZ_TARGET) $(FUZZ_DIR)/artifacts
+	python3 tools/fuzz_corpus.py $(FUZZ_DIR)/seeds $(FUZZ_DIR)/scene.dict
+	@mkdir -p $(FUZZ_DIR)/seeds-$(FUZZ_TARGET)
+	$(if $(FUZZ_SEED_FILES_$(FUZZ_TARGET)),cp $(FUZZ_SEED_FILES_$(FUZZ_TARGET)) $(FUZZ_DIR)/seeds-$(FUZZ_TARGET)/)
+	ulimit -s 1048576 && $(FUZZ_DIR)/mirage_$(FUZZ_TARGET)_fuzzer $(FUZZ_DIR)/corpus-$(FUZZ_TARGET) \
+	    $(FUZZ_SEEDS_$(FUZZ_TARGET)) -max_total_time=$(FUZZ_SECONDS) \
+	    -max_len=$(or $(FUZZ_MAX_LEN_$(FUZZ_TARGET)),4096) \
 	    -timeout=60 -rss_limit_mb=2048 -print_final_stats=1 \
 	    $(if $(filter-out 1,$(FUZZ_JOBS)),-fork=$(FUZZ_JOBS)) \
-	    -artifact_prefix=$(FUZZ_BUILD)/artifacts/
+	    -artifact_prefix=$(FUZZ_DIR)/artifacts/
 
 clean:
-	rm -rf $(BUILD) $(FUZZ_BUILD)
+	rm -rf $(BUILD) $(FUZZ_BUILD) $(FUZZ_BUILD)-plain

@@ -112,27 +112,10 @@ Status validate_column(const AirColumn& c) {
     if (!std::isfinite(c.lapse_k_per_m))
         return make_error("lapse rate " + shortest(1000.0 * c.lapse_k_per_m) +
                           " K/km must be finite");
-    for (const auto& l : c.layers) {
-        if (!std::isfinite(l.delta_k))
-            return make_error("surface layer: temperature excess " + shortest(l.delta_k) +
-                              " K must be finite");
-        if (!(std::isfinite(l.scale_m) && l.scale_m > 0.0))
-            return make_error("surface layer: scale height " + shortest(l.scale_m) +
-                              " m must be > 0");
-    }
-    for (const auto& v : c.inversions) {
-        if (!(std::isfinite(v.bottom_m) && v.bottom_m >= 0.0))
-            return make_error("inversion: bottom " + shortest(v.bottom_m) + " m must be >= 0");
-        if (!(std::isfinite(v.top_m) && v.top_m > v.bottom_m))
-            return make_error("inversion: top " + shortest(v.top_m) +
-                              " m must lie above its bottom " + shortest(v.bottom_m) + " m");
-        if (!std::isfinite(v.delta_k))
-            return make_error("inversion: temperature rise " + shortest(v.delta_k) +
-                              " K must be finite");
-        if (!(std::isfinite(v.smoothing_m) && v.smoothing_m >= 0.0))
-            return make_error("inversion: smoothing " + shortest(v.smoothing_m) +
-                              " m must be >= 0");
-    }
+    for (const auto& l : c.layers)
+        if (auto s = check_surface_layer(l); !s) return make_error("surface layer: " + s.message());
+    for (const auto& v : c.inversions)
+        if (auto s = check_inversion(v); !s) return make_error("inversion: " + s.message());
     return Ok{};
 }
 
@@ -145,6 +128,34 @@ double column_features_top(const AirColumn& c) {
 }
 
 }  // namespace
+
+Status check_surface_layer(const SurfaceLayer& l) {
+    const double dt = kMaxFormDeltaK, h = kMaxFormHeightM;
+    if (!(std::abs(l.delta_k) <= dt))
+        return make_error("temperature excess " + shortest(l.delta_k) + " K must be from " +
+                          shortest(-dt) + " to " + shortest(dt) + " K");
+    if (!(l.scale_m >= kMinScaleHeightM && l.scale_m <= h))
+        return make_error("scale height " + shortest(l.scale_m) + " m must be from " +
+                          shortest(kMinScaleHeightM) + " to " + shortest(h) + " m");
+    return Ok{};
+}
+
+Status check_inversion(const Inversion& v) {
+    const double dt = kMaxFormDeltaK, h = kMaxFormHeightM;
+    if (!(v.bottom_m >= 0.0 && v.bottom_m < h))
+        return make_error("bottom " + shortest(v.bottom_m) + " m must be >= 0 and below " +
+                          shortest(h) + " m");
+    if (!(v.top_m > v.bottom_m && v.top_m <= h))
+        return make_error("top " + shortest(v.top_m) + " m must lie above its bottom " +
+                          shortest(v.bottom_m) + " m and at most " + shortest(h) + " m");
+    if (!(std::abs(v.delta_k) <= dt))
+        return make_error("temperature rise " + shortest(v.delta_k) + " K must be from " +
+                          shortest(-dt) + " to " + shortest(dt) + " K");
+    if (!(v.smoothing_m >= 0.0 && v.smoothing_m <= kMaxSmoothingM))
+        return make_error("smoothing " + shortest(v.smoothing_m) + " m must be from 0 to " +
+                          shortest(kMaxSmoothingM) + " m");
+    return Ok{};
+}
 
 double column_temperature(const AirColumn& c, double y) {
     double T = c.ground_temperature_k - c.lapse_k_per_m * y;
@@ -401,8 +412,23 @@ Result<std::shared_ptr<const QuadraticProfile>> fit_air(const AirSpec& spec,
     }
     ProfileFunction f =
         R > 0.0 ? flatten(model->physical, R, spec.earth_extension_m) : model->physical;
+    FitReport own_report;
+    if (!report) report = &own_report;
     auto q = fit_quadratic_profile(f, settings, report);
-    if (!q) return q.error();
+    if (!q) {
+        const Sounding& s = spec.sounding;
+        if (spec.source != AirSpec::Source::Sounding || s.line.size() != s.height_m.size() ||
+            !std::isfinite(report->failure_height))
+            return q.error();
+        // The sounding's rows around the height where the fit stopped.
+        const double h = height_above_sphere(report->failure_height, R);
+        const auto above = std::upper_bound(s.height_m.begin(), s.height_m.end(), h);
+        const size_t k = std::clamp<size_t>(above - s.height_m.begin(), 1, s.height_m.size() - 1);
+        return make_error(s.source + ":" + std::to_string(s.line[k - 1]) + ": the rows at " +
+                          shortest(s.height_m[k - 1]) + " m (line " +
+                          std::to_string(s.line[k - 1]) + ") and " + shortest(s.height_m[k]) +
+                          " m (line " + std::to_string(s.line[k]) + "): " + q.message());
+    }
     return std::make_shared<const QuadraticProfile>(std::move(*q));
 }
 

@@ -47,6 +47,18 @@ struct Inversion {
     double smoothing_m = 0.0;  // standard deviation of the Gaussian that rounds the corners
 };
 
+/// The ranges of the temperature forms, for the command line and the scene settings alike:
+/// beyond them no air is physical, and the fit would follow a form over heights without end.
+constexpr double kMaxFormHeightM = 1e4;    // inversions' heights, Mirage_Top
+constexpr double kMaxFormDeltaK = 100.0;   // |temperature steps| of inversions and layers
+constexpr double kMaxSmoothingM = 100.0;   // an inversion's smoothing
+constexpr double kMinScaleHeightM = 1e-3;  // a surface layer's scale height, up to the top's
+
+/// A surface layer's or an inversion's values against their ranges: the error says which value
+/// ("temperature excess 1e+308 K must be from -100 to 100 K").
+Status check_surface_layer(const SurfaceLayer& layer);
+Status check_inversion(const Inversion& inversion);
+
 /// Air described by temperature forms that add up.
 struct AirColumn {
     double ground_temperature_k = 288.15;  // the base at y = 0

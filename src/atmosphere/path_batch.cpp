@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <tuple>
+#include <vector>
 
 #include "atmosphere/exact_ray.h"
 #include "atmosphere/general_profile.h"
@@ -85,75 +88,148 @@ Result<std::string> run_path_batch(const CsvTable& table) {
     return out;
 }
 
-Result<std::string> run_path_batch(const CsvTable& table, const Atmosphere& atmosphere) {
+namespace {
+
+// One row of the general engine's batch: the columns of kPathBatchColumns, or an error naming
+// the row's place.  col: case_id, y0, i_rad, d1, d2, d3.
+Result<std::string> general_row(const CsvTable& table, const CsvRow& row, const int* col,
+                                const Atmosphere& atmosphere) {
+    const double R = atmosphere.earth_radius();
+    auto place = [&](int j) { return to_string(row.places.at(static_cast<size_t>(col[j]))); };
+    double v[5];
+    for (int j = 0; j < 5; ++j) {
+        auto x = csv_number(table, row, col[j + 1]);
+        if (!x) return x.error();
+        v[j] = *x;
+    }
+    if (!(v[0] > 0.0 && v[0] <= kMaxHeight))
+        return make_error(place(1) + ": y0 = " + g17(v[0]) +
+                          " m: the eye must be above the ground and at most 1e+09 m");
+    const double y0 = flattened_height(v[0], R);
+    auto path = ExactPath::make(atmosphere, y0, v[1]);
+    if (!path) return make_error(place(2) + ": i_rad: " + path.message());
+    for (int j = 0; j < 3; ++j)
+        if (!(v[2 + j] >= 0.0 && std::isfinite(v[2 + j])))
+            return make_error(place(3 + j) + ": d" + std::to_string(j + 1) + " = " + g17(v[2 + j]) +
+                              ": a distance must be finite and >= 0 (m)");
+    // The turning point behind the eye is the first one ahead of the reversed ray.
+    double y_turn = NAN, dz_turn = NAN;
+    std::string turn_kind = "none";
+    if (path->turning_point_count() != 0 && path->turning_point(0).dz > 0.0) {
+        const TurningPoint t = path->turning_point(0);
+        if (!(path->hits_ground() && t.dz > path->dz_ground())) {
+            y_turn = height_above_sphere(t.y, R);
+            dz_turn = t.dz;
+            turn_kind = "ahead";
+        }
+    } else {
+        auto back = ExactPath::make(atmosphere, y0, M_PI - v[1]);
+        if (back && back->turning_point_count() != 0) {
+            const TurningPoint t = back->turning_point(0);
+            y_turn = height_above_sphere(t.y, R);
+            dz_turn = -t.dz;
+            turn_kind = "behind";
+        }
+    }
+    std::string line = quoted(row.fields[col[0]]);
+    auto add = [&](const std::string& s) { line += "," + s; };
+    add("nan");
+    add("nan");
+    add(g17(y_turn));
+    add(g17(dz_turn));
+    add(turn_kind);
+    add(path->class_name());
+    auto beyond = [&](double d) { return path->hits_ground() && d > path->dz_ground(); };
+    for (int j = 0; j < 3; ++j) {
+        const double d = v[2 + j];
+        add(g17(beyond(d) ? NAN : height_above_sphere(path->height_at(d), R)));
+    }
+    for (int j = 0; j < 3; ++j) {
+        const double d = v[2 + j];
+        // d(h)/dx = (dh/dy) (dy/dx), dh/dy = exp(y / R) in the flattened frame.
+        const double scale = R > 0.0 ? std::exp(path->height_at(d) / R) : 1.0;
+        add(g17(beyond(d) ? NAN : scale * path->slope_at(d)));
+    }
+    add(path->hits_ground() ? "1" : "0");
+    add(g17(path->hits_ground() ? path->dz_ground() : NAN));
+    return line + "\n";
+}
+
+Result<std::vector<int>> general_columns(const CsvTable& table) {
     static const char* const required[] = {"case_id", "y0", "i_rad", "d1", "d2", "d3"};
-    int col[6];
+    std::vector<int> col(6);
     for (int j = 0; j < 6; ++j) {
         col[j] = table.column(required[j]);
         if (col[j] < 0)
             return make_error(table.source + ":1: missing column '" + required[j] + "'");
     }
-    const double R = atmosphere.earth_radius();
+    return col;
+}
+
+}  // namespace
+
+Result<std::string> run_path_batch(const CsvTable& table, const Atmosphere& atmosphere) {
+    auto col = general_columns(table);
+    if (!col) return col.error();
     std::string out = std::string(kPathBatchColumns) + "\n";
     for (const auto& row : table.rows) {
-        auto place = [&](int j) { return to_string(row.places.at(static_cast<size_t>(col[j]))); };
-        double v[5];
-        for (int j = 0; j < 5; ++j) {
-            auto x = csv_number(table, row, col[j + 1]);
+        auto line = general_row(table, row, col->data(), atmosphere);
+        if (!line) return line.error();
+        out += *line;
+    }
+    return out;
+}
+
+bool batch_rows_give_profiles(const CsvTable& table) {
+    const int c = table.column("profile");
+    if (c < 0) return false;
+    for (const auto& row : table.rows)
+        if (!row.fields[static_cast<size_t>(c)].empty()) return true;
+    return false;
+}
+
+Result<std::string> run_path_batch(const CsvTable& table, const AirSpec& base,
+                                   const FitSettings& fit) {
+    static const char* const profile_columns[] = {"profile", "eta0", "eta1", "alpha"};
+    int pc[4];
+    for (int j = 0; j < 4; ++j) {
+        pc[j] = table.column(profile_columns[j]);
+        if (pc[j] < 0)
+            return make_error(table.source + ":1: missing column '" + profile_columns[j] + "'");
+    }
+    auto col = general_columns(table);
+    if (!col) return col.error();
+    // One fitted model per profile, shared by the rows that give it.
+    std::map<std::tuple<int, double, double, double>, Atmosphere> models;
+    std::string out = std::string(kPathBatchColumns) + "\n";
+    for (const auto& row : table.rows) {
+        auto place = [&](int j) { return to_string(row.places.at(static_cast<size_t>(pc[j]))); };
+        auto kind = parse_profile_kind(row.fields[pc[0]]);
+        if (!kind) return make_error(table.where(row, pc[0]) + ": " + kind.message());
+        Profile profile;
+        profile.kind = *kind;
+        double* values[3] = {&profile.eta0, &profile.eta1, &profile.alpha};
+        for (int j = 0; j < 3; ++j) {
+            auto x = csv_number(table, row, pc[j + 1]);
             if (!x) return x.error();
-            v[j] = *x;
+            *values[j] = *x;
         }
-        if (!(v[0] > 0.0 && v[0] <= kMaxHeight))
-            return make_error(place(1) + ": y0 = " + g17(v[0]) +
-                              " m: the eye must be above the ground and at most 1e+09 m");
-        const double y0 = flattened_height(v[0], R);
-        auto path = ExactPath::make(atmosphere, y0, v[1]);
-        if (!path) return make_error(place(2) + ": i_rad: " + path.message());
-        for (int j = 0; j < 3; ++j)
-            if (!(v[2 + j] >= 0.0 && std::isfinite(v[2 + j])))
-                return make_error(place(3 + j) + ": d" + std::to_string(j + 1) + " = " +
-                                  g17(v[2 + j]) + ": a distance must be finite and >= 0 (m)");
-        // The turning point behind the eye is the first one ahead of the reversed ray.
-        double y_turn = NAN, dz_turn = NAN;
-        std::string turn_kind = "none";
-        if (path->turning_point_count() != 0 && path->turning_point(0).dz > 0.0) {
-            const TurningPoint t = path->turning_point(0);
-            if (!(path->hits_ground() && t.dz > path->dz_ground())) {
-                y_turn = height_above_sphere(t.y, R);
-                dz_turn = t.dz;
-                turn_kind = "ahead";
-            }
-        } else {
-            auto back = ExactPath::make(atmosphere, y0, M_PI - v[1]);
-            if (back && back->turning_point_count() != 0) {
-                const TurningPoint t = back->turning_point(0);
-                y_turn = height_above_sphere(t.y, R);
-                dz_turn = -t.dz;
-                turn_kind = "behind";
-            }
+        const ProfileNames names{place(1) + ": eta0", place(2) + ": eta1", place(3) + ": alpha"};
+        if (auto s = validate(profile, names); !s) return s.error();
+        const auto key = std::make_tuple(static_cast<int>(profile.kind), profile.eta0, profile.eta1,
+                                         profile.alpha);
+        auto it = models.find(key);
+        if (it == models.end()) {
+            AirSpec spec = base;
+            spec.source = AirSpec::Source::Exponential;
+            spec.exponential = profile;
+            auto q = fit_air(spec, fit);
+            if (!q) return make_error(table.where(row, pc[0]) + ": " + q.message());
+            it = models.emplace(key, Atmosphere::quadratic(*q)).first;
         }
-        std::string line = quoted(row.fields[col[0]]);
-        auto add = [&](const std::string& s) { line += "," + s; };
-        add("nan");
-        add("nan");
-        add(g17(y_turn));
-        add(g17(dz_turn));
-        add(turn_kind);
-        add(path->class_name());
-        auto beyond = [&](double d) { return path->hits_ground() && d > path->dz_ground(); };
-        for (int j = 0; j < 3; ++j) {
-            const double d = v[2 + j];
-            add(g17(beyond(d) ? NAN : height_above_sphere(path->height_at(d), R)));
-        }
-        for (int j = 0; j < 3; ++j) {
-            const double d = v[2 + j];
-            // d(h)/dx = (dh/dy) (dy/dx), dh/dy = exp(y / R) in the flattened frame.
-            const double scale = R > 0.0 ? std::exp(path->height_at(d) / R) : 1.0;
-            add(g17(beyond(d) ? NAN : scale * path->slope_at(d)));
-        }
-        add(path->hits_ground() ? "1" : "0");
-        add(g17(path->hits_ground() ? path->dz_ground() : NAN));
-        out += line + "\n";
+        auto line = general_row(table, row, col->data(), it->second);
+        if (!line) return line.error();
+        out += *line;
     }
     return out;
 }

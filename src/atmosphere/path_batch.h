@@ -4,6 +4,8 @@
 #include <string>
 
 #include "atmosphere/exact_path.h"
+#include "atmosphere/general_profile.h"
+#include "atmosphere/quadratic_profile.h"
 #include "util/csv.h"
 #include "util/result.h"
 
@@ -27,5 +29,15 @@ Result<std::string> run_path_batch(const CsvTable& table);
 /// are the first turning point ahead (turn_kind "ahead"), else the last one behind the eye
 /// ("behind", dz_turn < 0), else nan ("none").
 Result<std::string> run_path_batch(const CsvTable& table, const Atmosphere& atmosphere);
+
+/// Whether some row of `table` names a profile (a non-empty `profile` field).
+bool batch_rows_give_profiles(const CsvTable& table);
+
+/// Every row traced in its own profile (the columns of run_path_batch(table)) through the
+/// general engine, with the Earth radius and the top of `base` (each profile fitted once, as
+/// `mirage path --profile ... --earth-radius R` fits it for one ray); the output as the
+/// general engine's above.
+Result<std::string> run_path_batch(const CsvTable& table, const AirSpec& base,
+                                   const FitSettings& fit);
 
 }  // namespace mirage

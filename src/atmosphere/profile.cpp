@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "util/format.h"
+#include "util/input_file.h"
 
 namespace mirage {
 
@@ -70,7 +71,7 @@ Result<ProfileKind> parse_profile_kind(std::string_view name) {
     if (name == "inferior") return ProfileKind::Inferior;
     if (name == "superior") return ProfileKind::Superior;
     if (name == "none") return ProfileKind::None;
-    return make_error("unknown profile '" + std::string(name) +
+    return make_error("unknown profile '" + quote_cut(std::string(name)) +
                       "' (expected inferior, superior or none)");
 }
 

@@ -310,6 +310,20 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
     std::vector<double> knots{0.0}, slopes, curvatures;
     std::vector<int> edge_knots{0};  // the knots at the ends of the smooth stretches
     double worst = 0.0, worst_y = 0.0;
+    // The fit's work for the report: every evaluation of the profile goes through here, and
+    // every comparison with a value evaluated before is counted too.
+    long checks = 0;
+    auto excess = [&](double y) {
+        ++checks;
+        return f.excess(y);
+    };
+    auto failed = [&](double y, const std::string& why) {
+        if (report) {
+            report->checks = checks;
+            report->failure_height = y;
+        }
+        return make_error(why);
+    };
     auto n_of = [&](double e) { return std::sqrt(f.n0_sq + e); };
     // The largest error of the interval's two quadratics at the checked heights, in n.
     struct Trial {
@@ -332,7 +346,7 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
                 const double y = (side == 0 ? a : mid) + u;
                 const double fit = side == 0 ? fa + (sa + t.c_left * u) * u
                                              : f_mid + (t.s_mid + t.c_right * u) * u;
-                const double truth = f.excess(y);
+                const double truth = excess(y);
                 if (!std::isfinite(truth)) {
                     t.finite = false;
                     break;
@@ -353,25 +367,26 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
     const double accept = 0.9 * settings.tolerance_n;
     for (size_t k = 0; k + 1 < edges.size(); ++k) {
         const double A = edges[k], B = edges[k + 1];
-        double a = A, fa = f.excess(A), sa = f.excess_slope(A, +1);
+        double a = A, fa = excess(A), sa = f.excess_slope(A, +1);
         double h = B - A;
         while (a < B) {
             double b = a + h;
             if (b > B - 0.1 * h) b = B;
-            const double fb = f.excess(b);
+            const double fb = excess(b);
             const double sb = b == B ? f.excess_slope(B, -1) : f.excess_slope(b, +1);
             const Trial t = trial(a, b, fa, sa, fb, sb);
             if (!t.finite)
-                return make_error("the profile is not finite near " + shortest(0.5 * (a + b)) +
-                                  " m");
+                return failed(0.5 * (a + b),
+                              "the profile is not finite near " + shortest(0.5 * (a + b)) + " m");
             const double hb = b - a;
             const double ratio = t.err > 0.0 ? std::cbrt(0.7 * settings.tolerance_n / t.err) : 2.0;
             if (t.err > accept) {
                 if (hb * 0.5 < settings.min_interval)
-                    return make_error("the profile changes too fast near " + sig(t.err_y, 6) +
-                                      " m to be fitted within " + shortest(settings.tolerance_n) +
-                                      " in n (intervals of " + sig(hb, 3) + " m still miss by " +
-                                      sig(t.err, 3) + ")");
+                    return failed(t.err_y, "the profile changes too fast near " + sig(t.err_y, 6) +
+                                               " m to be fitted within " +
+                                               shortest(settings.tolerance_n) +
+                                               " in n (intervals of " + sig(hb, 3) +
+                                               " m still miss by " + sig(t.err, 3) + ")");
                 h = hb * std::clamp(ratio, 0.1, 0.9);
                 continue;
             }
@@ -386,9 +401,10 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
                 worst_y = t.err_y;
             }
             if (static_cast<int>(slopes.size()) > settings.max_pieces)
-                return make_error(
-                    "the profile needs more than " + std::to_string(settings.max_pieces) +
-                    " pieces to be fitted within " + shortest(settings.tolerance_n) + " in n");
+                return failed(b, "the profile needs more than " +
+                                     std::to_string(settings.max_pieces) +
+                                     " pieces to be fitted within " +
+                                     shortest(settings.tolerance_n) + " in n");
             a = b;
             fa = fb;
             sa = b == B ? sa : sb;
@@ -416,10 +432,15 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
         const double bound = settings.span_allowance * M_PI * std::sqrt(eps);
         q.span_up_.assign(m + 1, -1);
         q.span_down_.assign(m + 1, -1);
+        // The profile at every fine knot and halfway between them, once: a span checks its
+        // error at those inside it.
+        std::vector<double> at_knot(m + 1), at_middle(m);
+        for (int k = 0; k <= m; ++k) at_knot[k] = excess(q.y_[k]);
+        for (int k = 0; k < m; ++k) at_middle[k] = excess(0.5 * (q.y_[k] + q.y_[k + 1]));
         // The span over the fine knots lo..hi, or none when it is no use to any ray.
         auto make_span = [&](int lo, int hi, CoarseSpan& sp) {
             const double a = q.y_[lo], h = q.y_[hi] - a;
-            const double fa = q.e_[lo], fb = q.e_[hi], fm = f.excess(a + 0.5 * h);
+            const double fa = q.e_[lo], fb = q.e_[hi], fm = excess(a + 0.5 * h);
             if (!std::isfinite(fm)) return false;
             sp.lo = lo;
             sp.hi = hi;
@@ -432,19 +453,22 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
             // breakpoint where only the slope is continuous).
             double err = 0.0;
             bool finite = true;
-            auto check = [&](double y) {
+            auto check = [&](double y, double truth) {
                 const double u = y - a;
                 const double fit = fa + (sp.b + sp.c * u) * u;
-                const double truth = f.excess(y);
                 if (!std::isfinite(truth)) finite = false;
                 err = std::max(err, std::fabs(fit - truth) / (n_of(fit) + n_of(truth)));
             };
             constexpr int kChecks = 24;
-            for (int k = 1; k < kChecks; ++k) check(a + h * k / kChecks);
-            for (int j = lo; j < hi; ++j) {
-                if (j > lo) check(q.y_[j]);
-                check(0.5 * (q.y_[j] + q.y_[j + 1]));
+            for (int k = 1; k < kChecks; ++k) {
+                const double y = a + h * k / kChecks;
+                check(y, excess(y));
             }
+            for (int j = lo; j < hi; ++j) {
+                if (j > lo) check(q.y_[j], at_knot[j]);
+                check(0.5 * (q.y_[j] + q.y_[j + 1]), at_middle[j]);
+            }
+            checks += 2 * (hi - lo);
             if (!finite) return false;
             // Within 0.9 of the bound, as the fine fit's intervals; never below the rounding of n.
             sp.error_n = std::max(err / 0.9, 8.0 * std::numeric_limits<double>::epsilon());
@@ -458,17 +482,25 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
             sp.max_beta_sq = std::min(direction, share);
             return sp.max_beta_sq > 0.0;
         };
-        // Spans of 1, 2, 4, 8, ... fine intervals from every node (the fine intervals' ends),
-        // so that a ray can step over as many as its direction allows wherever it is.
+        // Spans of 1, 2, 4, 8, ... fine intervals, so that a ray can step over as many as its
+        // direction allows wherever it is: from every node (the fine intervals' ends) in a
+        // model of up to kSpansFromEveryNode intervals.  In a larger one those of up to
+        // kSpanStarts intervals start at every node, longer ones of len intervals at every (len /
+        // kSpanStarts)-th: a ray crosses a long stretch in a few more steps, and the spans cost
+        // O(kSpanStarts) checks of each fine interval per length, O(m log m) in all (from every
+        // node they cost O(m^2): 10^4 sounding rows took minutes).
         std::vector<int> nodes;
         for (int k = 0; k <= m; k += 2) nodes.push_back(k);
         const int intervals = static_cast<int>(nodes.size()) - 1;
         std::vector<int> edges_before(nodes.size(), 0);  // edges among nodes[1..i]
         for (size_t i = 1; i < nodes.size(); ++i)
             edges_before[i] = edges_before[i - 1] + (i + 1 < nodes.size() && edge[nodes[i]]);
+        constexpr int kSpansFromEveryNode = 2048, kSpanStarts = 8;
         for (int len = 1; len <= intervals; len *= 2) {
             bool any = false;
-            for (int i = 0; i + len <= intervals; ++i) {
+            const int stride =
+                intervals <= kSpansFromEveryNode ? 1 : std::max(1, len / kSpanStarts);
+            for (int i = 0; i + len <= intervals; i += stride) {
                 // No corner strictly inside.
                 if (edges_before[i + len - 1] - edges_before[i] > 0) continue;
                 CoarseSpan sp;
@@ -498,6 +530,7 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
         report->pieces = model->piece_count();
         report->max_error_n = worst;
         report->worst_height = worst_y;
+        report->checks = checks;
     }
     return model;
 }

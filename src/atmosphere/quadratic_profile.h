@@ -171,6 +171,8 @@ struct FitReport {
     int pieces = 0;
     double max_error_n = 0.0;  // the largest |n_fit - n| found at the checked heights
     double worst_height = 0.0;
+    long checks = 0;  // the fit's work: evaluations of the profile and comparisons with it
+    double failure_height = std::numeric_limits<double>::quiet_NaN();  // where a failed fit stopped
 };
 
 /// Fits the C^1 piecewise-quadratic model (C^0 at breakpoints where the slope jumps): Hermite
@@ -179,7 +181,9 @@ struct FitReport {
 /// errors between the checked heights; the tests check the bound densely).
 ///
 /// With coarse_spans, spans of 1, 2, 4, 8, ... fine intervals start at every fine interval's end
-/// (never across a corner of the profile), each the quadratic through the profile at its ends
+/// (never across a corner of the profile; in a model of more than 2048 intervals those longer
+/// than 8 at every (length / 8)-th end, O(m log m) checks for m pieces), each the quadratic
+/// through the profile at its ends
 /// and its middle, its error checked at 23 heights and at every fine knot inside it and halfway
 /// between them (error_n: the largest checked error over 0.9, at least 8 ulps).  The rays that
 /// may cross a span: the fine model keeps a ray's direction within B = pi sqrt(eps) of the true

@@ -11,6 +11,7 @@
 
 #include "util/csv.h"
 #include "util/format.h"
+#include "util/input_file.h"
 
 namespace mirage {
 
@@ -28,10 +29,10 @@ std::vector<std::string_view> split_lines(std::string_view text) {
     std::vector<std::string_view> lines;
     size_t start = 0;
     for (size_t i = 0; i <= text.size(); ++i) {
-        if (i == text.size() || text[i] == '\n') {
-            std::string_view l = text.substr(start, i - start);
-            if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-            lines.push_back(l);
+        // LF, CRLF or a lone CR ends a line, as parse_csv reads them.
+        if (i == text.size() || text[i] == '\n' || text[i] == '\r') {
+            lines.push_back(text.substr(start, i - start));
+            if (i + 1 < text.size() && text[i] == '\r' && text[i + 1] == '\n') ++i;
             start = i + 1;
         }
     }
@@ -64,6 +65,10 @@ constexpr const char* kLayout =
 
 Result<Sounding> parse_sounding(std::string_view text, const std::string& source,
                                 const SoundingRules& rules) {
+    if (!(rules.max_gap_m > 0.0 && rules.max_gap_m <= kMaxSoundingGapM))
+        return make_error(source + ": the largest gap between rows " + shortest(rules.max_gap_m) +
+                          " m must be more than 0 and at most " + shortest(kMaxSoundingGapM) +
+                          " m");
     if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     auto table = parse_csv(text, source);
     if (!table) return table.error();
@@ -80,8 +85,10 @@ Result<Sounding> parse_sounding(std::string_view text, const std::string& source
         int which = -1;
         for (int c = 0; c < kColumns; ++c)
             if (name == kNames[c]) which = c;
-        if (which < 0) return make_error(place(1, k) + "unknown column '" + name + "' " + kLayout);
-        if (col[which] >= 0) return make_error(place(1, k) + "column '" + name + "' appears twice");
+        if (which < 0)
+            return make_error(place(1, k) + "unknown column '" + quote_cut(name) + "' " + kLayout);
+        if (col[which] >= 0)
+            return make_error(place(1, k) + "column '" + quote_cut(name) + "' appears twice");
         col[which] = static_cast<int>(k);
     }
     auto header_error = [&](const std::string& what) {
@@ -114,9 +121,9 @@ Result<Sounding> parse_sounding(std::string_view text, const std::string& source
             errno = 0;
             const double x = std::strtod(field.c_str(), &end);
             if (end != field.c_str() + field.size())
-                return make_error(where + "'" + field + "' is not a number");
+                return make_error(where + "'" + quote_cut(field) + "' is not a number");
             if (!std::isfinite(x))
-                return make_error(where + "'" + field + "' is not a finite number");
+                return make_error(where + "'" + quote_cut(field) + "' is not a finite number");
             v[c] = x;
         }
         auto bad = [&](int c, const std::string& why) {
@@ -143,8 +150,19 @@ Result<Sounding> parse_sounding(std::string_view text, const std::string& source
             if (!(v[kTemperature] > -273.15))
                 return bad(kTemperature, "temperature " + shortest(v[kTemperature]) +
                                              " degC is at or below absolute zero");
-            if (col[kPressure] >= 0 && !(v[kPressure] > 0.0))
-                return bad(kPressure, "pressure " + shortest(v[kPressure]) + " hPa must be > 0");
+            // The scenes' range of air temperatures: 3.7e6 degC in one row made the fit follow
+            // it with a million pieces (48 s, 935 MB) before it gave up.
+            if (!(v[kTemperature] >= kMinSoundingTemperatureC &&
+                  v[kTemperature] <= kMaxSoundingTemperatureC))
+                return bad(kTemperature, "temperature " + shortest(v[kTemperature]) +
+                                             " degC must be from " +
+                                             shortest(kMinSoundingTemperatureC) + " to " +
+                                             shortest(kMaxSoundingTemperatureC) + " degC");
+            if (col[kPressure] >= 0 &&
+                !(v[kPressure] >= kMinSoundingPressureHpa && v[kPressure] <= kMaxSoundingPressureHpa))
+                return bad(kPressure, "pressure " + shortest(v[kPressure]) + " hPa must be from " +
+                                          shortest(kMinSoundingPressureHpa) + " to " +
+                                          shortest(kMaxSoundingPressureHpa) + " hPa");
             if (col[kHumidity] >= 0 && !(v[kHumidity] >= 0.0 && v[kHumidity] <= 100.0))
                 return bad(kHumidity, "relative humidity " + shortest(v[kHumidity]) +
                                           " % must lie in [0, 100]");
@@ -157,6 +175,7 @@ Result<Sounding> parse_sounding(std::string_view text, const std::string& source
             s.index.push_back(v[kIndex]);
         }
         s.height_m.push_back(h);
+        s.line.push_back(row.line);
         previous_line = row.line;
     }
     if (static_cast<int>(s.height_m.size()) < rules.min_rows)
@@ -166,26 +185,9 @@ Result<Sounding> parse_sounding(std::string_view text, const std::string& source
 }
 
 Result<Sounding> read_sounding(const std::string& path, const SoundingRules& rules) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!ec && fs::exists(status) && !fs::is_regular_file(status))
-        return make_error(path +
-                          ": is not a regular file (a directory, a device or a pipe?): "
-                          "soundings are read from files");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return make_error(path + ": cannot open: " + std::strerror(errno));
-    // Read in pieces, cut at the limit (a file that grows meanwhile included).
-    std::string text;
-    char piece[1 << 16];
-    while (in) {
-        in.read(piece, sizeof piece);
-        text.append(piece, static_cast<std::size_t>(in.gcount()));
-        if (text.size() > kMaxSoundingBytes)
-            return make_error(path + ": more than the " + std::to_string(kMaxSoundingBytes >> 20) +
-                              " MiB a sounding may hold");
-    }
-    return parse_sounding(text, path, rules);
+    auto text = read_input_file(path, InputKind{"a sounding", "soundings", kMaxSoundingBytes});
+    if (!text) return text.error();
+    return parse_sounding(*text, path, rules);
 }
 
 double QuadraticSpline::value(double x) const {

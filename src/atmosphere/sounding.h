@@ -32,13 +32,21 @@ struct Sounding {
     std::vector<double> pressure_pa;        // Temperature, optional (empty when not given)
     std::vector<double> relative_humidity;  // Temperature, optional, 0 to 1
     std::vector<double> index;              // Index: n
+    std::vector<int> line;                  // the file's line of each row, for messages
 };
 
 /// The largest sounding file read, bytes (a million rows of four columns fit in it).
 constexpr std::size_t kMaxSoundingBytes = std::size_t{64} << 20;
 
+/// A row's temperature and pressure: the scenes' ranges of air (100 to 400 K, 1 to 2000 hPa).
+constexpr double kMinSoundingTemperatureC = -173.15, kMaxSoundingTemperatureC = 126.85;
+constexpr double kMinSoundingPressureHpa = 1.0, kMaxSoundingPressureHpa = 2000.0;
+
+/// The largest gap between rows that may be allowed, m (SoundingRules::max_gap_m).
+constexpr double kMaxSoundingGapM = 1e4;
+
 struct SoundingRules {
-    double max_gap_m = 1000.0;  // largest allowed distance between consecutive rows
+    double max_gap_m = 1000.0;  // largest allowed distance between consecutive rows, > 0
     int min_rows = 2;
 };
 

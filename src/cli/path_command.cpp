@@ -2,11 +2,13 @@
 // diagram as SVG, or a batch of rays from a CSV.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "atmosphere/exact_path.h"
@@ -335,6 +337,9 @@ AirChoice resolve_air(const PathOptions& o) {
                            shortest(p.eta1) + ", alpha = " + shortest(p.alpha) + " /m");
     } else if (!o.sounding.empty()) {
         if (forms) fail("--sounding gives the whole profile: leave out the temperature forms");
+        if (!(o.sounding_max_gap > 0.0 && o.sounding_max_gap <= kMaxSoundingGapM))
+            fail("--sounding-max-gap " + g(o.sounding_max_gap) +
+                 ": must be more than 0 and at most " + g(kMaxSoundingGapM) + " m");
         SoundingRules rules;
         rules.max_gap_m = o.sounding_max_gap;
         auto s = read_sounding(o.sounding, rules);
@@ -357,12 +362,16 @@ AirChoice resolve_air(const PathOptions& o) {
         for (const auto& v : o.surface_layers) {
             const auto n = numbers("--surface-layer", v, 2, 2, "DT_K,SCALE_M");
             col.layers.push_back({n[0], n[1]});
+            if (auto s = check_surface_layer(col.layers.back()); !s)
+                fail("--surface-layer " + v + ": " + s.message());
             c.legend.push_back("surface layer " + shortest(n[0]) + " K, scale " + shortest(n[1]) +
                                " m");
         }
         for (const auto& v : o.inversions) {
             const auto n = numbers("--inversion", v, 3, 4, "BOTTOM_M,TOP_M,DT_K[,SMOOTHING_M]");
             col.inversions.push_back({n[0], n[1], n[2], n.size() > 3 ? n[3] : 0.0});
+            if (auto s = check_inversion(col.inversions.back()); !s)
+                fail("--inversion " + v + ": " + s.message());
             c.legend.push_back(
                 "inversion " + shortest(n[2]) + " K, " + shortest(n[0]) + " to " + shortest(n[1]) +
                 " m" + (n.size() > 3 && n[3] > 0.0 ? ", smoothing " + shortest(n[3]) + " m" : ""));
@@ -588,9 +597,39 @@ void run_vanishing(const PathOptions& o) {
             << "\n";
 }
 
+// Whether the options say what the air is (else it is the default: air at 15 degC).
+bool air_given(const PathOptions& o) {
+    return !o.preset.empty() || !o.profile.empty() || !std::isnan(o.air_temperature_c) ||
+           !std::isnan(o.lapse_k_per_km) || !o.surface_layers.empty() || !o.inversions.empty() ||
+           !o.sounding.empty() || !std::isnan(o.pressure_hpa) || o.isobaric ||
+           !std::isnan(o.humidity_pct) || !o.index.empty() || !std::isnan(o.gladstone_dale) ||
+           !std::isnan(o.wavelength_nm) || !std::isnan(o.co2_ppm);
+}
+
 void run_general(const PathOptions& o) {
     if (!o.png.empty() && std::isnan(o.transfer))
         fail("--png draws the transfer diagram: give --transfer DIST");
+    if (!o.batch.empty() && !air_given(o)) {
+        auto table = read_csv_file(o.batch);
+        if (!table) fail(table.message());
+        if (batch_rows_give_profiles(*table)) {
+            // Each row's own profile, on the curved Earth of --earth-radius: as the single-ray
+            // command traces `--profile ... --earth-radius R` (not the default air).
+            if (!(o.fit_tolerance > 0.0))
+                fail("--fit-tolerance " + g(o.fit_tolerance) + ": must be > 0");
+            AirSpec base;
+            if (!std::isnan(o.earth_radius)) base.earth_radius_m = o.earth_radius;
+            if (!std::isnan(o.top)) base.top_m = o.top;
+            if (!(std::isfinite(base.earth_radius_m) && base.earth_radius_m >= 0.0))
+                fail("--earth-radius " + g(base.earth_radius_m) + ": must be finite and >= 0");
+            FitSettings fs;
+            fs.tolerance_n = o.fit_tolerance;
+            auto out = run_path_batch(*table, base, fs);
+            if (!out) fail(out.message());
+            std::cout << *out;
+            return;
+        }
+    }
     const AirChoice c = resolve_air(o);
     if (!o.batch.empty()) {
         auto table = read_csv_file(o.batch);
@@ -778,7 +817,31 @@ void setup_path_command(CLI::App& app) {
                     "mirrored image (the vanishing of the inferior mirage)");
     sub->add_option("--object-distance", o->object_distance,
                     "horizontal distance from the eye to that point, m: is it mirrored from here?");
+    // A number option's "nan" would read as the option not given (its default is NaN), or
+    // turn its check off: refused as the option is read.
+    const CLI::Validator number(
+        [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end != text.c_str() && std::isnan(v)) return "'" + text + "' is not a number";
+            return "";
+        },
+        "NUMBER", "number");
+    for (CLI::Option* opt : sub->get_options()) {
+        static const std::set<std::string> kNotNumbers = {
+            "--help",     "--preset",   "--profile",       "--json",
+            "--svg",      "--batch",    "--surface-layer", "--inversion",
+            "--sounding", "--isobaric", "--index",         "--general",
+            "--ducts",    "--png",      "--fan-count",     "--transfer-count"};
+        if (!opt->get_name().empty() && !kNotNumbers.count(opt->get_name()) &&
+            opt->get_type_size() != 0)
+            opt->check(number);
+    }
     sub->callback([o] {
+        if (!o->batch.empty() && (!o->svg.empty() || !o->png.empty()))
+            fail(std::string(!o->svg.empty() ? "--svg" : "--png") +
+                 " draws one ray's diagram: it does not go with --batch, which prints a CSV of "
+                 "its rows");
         if (!std::isnan(o->object_height) || !std::isnan(o->object_distance)) {
             if (std::isnan(o->object_height))
                 fail("--object-distance needs the point's height: --object-height M");

@@ -17,6 +17,7 @@
 #include "layers/graded.h"
 #include "layers/revolution.h"
 #include "pov/povray_path.h"
+#include "load/atmosphere_settings.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
 #include "util/new_directories.h"
@@ -157,7 +158,20 @@ std::string slug(const std::string& s) {
 
 }  // namespace
 
+Status validate_study_options(const StudyOptions& o) {
+    for (int n : o.uniform_counts)
+        if (auto s = check_layer_count(n, "--counts"); !s) return s;
+    for (int n : o.graded_levels)
+        if (auto s = check_layer_count(n, "--graded-levels"); !s) return s;
+    for (double steps : o.graded_steps)
+        if (!(steps >= 0.0 && steps <= kMaxGradedSteps))
+            return make_error("--graded-steps " + shortest(steps) + ": must be from 0 to " +
+                              shortest(kMaxGradedSteps) + " levels");
+    return Ok{};
+}
+
 Result<StudyResult> run_design_study(const StudyOptions& opt) {
+    if (auto s = validate_study_options(opt); !s) return s.error();
     CompileOptions co;
     co.scene = opt.scene;
     co.width = opt.width;
@@ -357,8 +371,13 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
             std::vector<double> lv;
             // Levels on a grid with the eye's index in the middle of a layer.
             const double c0 = n_eye + 0.5 * dn - dn * std::ceil((n_eye - ir.lo) / dn);
-            for (double c = c0; c < ir.hi; c += dn)
+            for (double c = c0; c < ir.hi && lv.size() <= kMaxGradedLevels; c += dn)
                 if (c > ir.lo) lv.push_back(c);
+            if (lv.size() > kMaxGradedLevels) {
+                res.notes.push_back(row.design + ": more than " + std::to_string(kMaxGradedLevels) +
+                                    " levels over the graded index range: left out");
+                continue;
+            }
             auto g = graded_stack(ctx.profile, ctx.eye_y, res.elevation_lo, res.elevation_hi,
                                   std::min(reach, 1.2 * zone_hi), top, st, lv);
             if (!g) {

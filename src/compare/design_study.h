@@ -12,6 +12,7 @@
 // rendered by POV-Ray for their time.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,6 +20,11 @@
 #include "util/result.h"
 
 namespace mirage {
+
+/// The most levels a graded design's grading may add (--graded-steps), and the most levels a
+/// graded design may have in all: its levels are laid over the index range the grading widens.
+constexpr double kMaxGradedSteps = 4096.0;
+constexpr std::size_t kMaxGradedLevels = 16384;
 
 struct StudyOptions {
     std::string scene;
@@ -64,6 +70,10 @@ struct StudyResult {
     std::string csv_path, summary_path, plot_elevation, plot_crossings;
     bool plotted = false;
 };
+
+/// Checks the options' values before any work: every count and level count a whole number from
+/// 1 to kMaxLayerCount, every grading from 0 to kMaxGradedSteps.
+Status validate_study_options(const StudyOptions& options);
 
 /// Runs the study and writes study.csv, summary.md, the curves and their plots.
 Result<StudyResult> run_design_study(const StudyOptions& options);

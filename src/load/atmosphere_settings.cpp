@@ -423,7 +423,14 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
                               shortest(kMaxAlpha));
     }
     MIRAGE_TRY(ground, r.number("Mirage_Ground_Height"));
-    if (ground) s.ground_height = *ground;
+    if (ground) {
+        // The scene is moved by it (the tracer lowers every object to the ground).
+        if (!(std::abs(*ground) <= kMaxCoordinate))
+            return make_error(r.at("Mirage_Ground_Height") + "Mirage_Ground_Height = " +
+                              shortest(*ground) + " must be from " + shortest(-kMaxCoordinate) +
+                              " to " + shortest(kMaxCoordinate) + " (scene units)");
+        s.ground_height = *ground;
+    }
     MIRAGE_TRY(mode, r.text("Mirage_Layers", "adaptive"));
     if (mode) {
         if (*mode == "adaptive") {

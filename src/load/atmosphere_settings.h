@@ -38,10 +38,7 @@ constexpr double kEarthRadiusM = 6371000.0;  // the default of real-air scenes
 constexpr double kMinEarthRadiusM = 1e5;     // Mirage_Earth_Radius: 0 (flat) or from this
 constexpr double kMaxEarthRadiusM = 1e9;     // to this
 constexpr double kMaxLapseKPerKm = 100.0;    // |Mirage_Lapse|
-constexpr double kMaxFormHeightM = 1e4;      // inversions, Mirage_Top
-constexpr double kMaxFormDeltaK = 100.0;     // |temperature steps| of inversions, layers
-constexpr double kMaxSmoothingM = 100.0;     // Mirage_Inversion_Smoothing
-constexpr double kMinScaleHeightM = 1e-3;    // a surface layer's scale height
+// kMaxFormHeightM, kMaxFormDeltaK, kMaxSmoothingM, kMinScaleHeightM: atmosphere/general_profile.h
 constexpr int kMaxInversions = 8;            // Mirage_Inversion, Mirage_Inversion_2, ...
 // The fitted model's |n_fit - n| bound: chosen from the path tolerance so that ray directions
 // stay within half of it (pi sqrt(eps) <= tolerance / 2), within these limits.

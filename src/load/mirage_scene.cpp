@@ -20,7 +20,7 @@ Status check_options(const SceneLoadOptions& o) {
     if (o.layer_count) {
         if (auto s = check_layer_count(*o.layer_count, "--count"); !s) return s;
     }
-    return Ok{};
+    return check_library_paths(o.library_paths);
 }
 
 }  // namespace
@@ -33,6 +33,19 @@ SceneLoadOptions scene_load_options(const std::string& scene, int width, int hei
     o.height = height;
     o.library_paths = library_paths;
     return o;
+}
+
+Status check_library_paths(const std::vector<std::string>& paths) {
+    namespace fs = std::filesystem;
+    for (const std::string& p : paths) {
+        std::error_code ec;
+        const fs::file_status status = fs::status(p, ec);
+        if (fs::is_directory(status)) continue;
+        return make_error("-L " + p + ": " +
+                          (fs::exists(status) ? "is not a directory" : "no such directory") +
+                          ": -L names a directory to look for include files in");
+    }
+    return Ok{};
 }
 
 Status check_image_size(int width, int height) {

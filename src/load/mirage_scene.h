@@ -54,6 +54,9 @@ SceneLoadOptions scene_load_options(const std::string& scene, int width, int hei
 /// Checks an image size: 1 to kMaxImageSide pixels each way.
 Status check_image_size(int width, int height);
 
+/// Checks the user's include directories (-L): each must be a directory.
+Status check_library_paths(const std::vector<std::string>& paths);
+
 /// Reads the scene file: checks the size, parses with the user's include directories, then
 /// the scene's own directory, the project's pov_includes and POV-Ray's, reads and checks the
 /// Mirage_ settings, applies the options' replacements and checks the camera.  An error

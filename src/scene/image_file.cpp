@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 #include <png.h>
 
+#include <algorithm>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
@@ -18,6 +19,18 @@ struct FloatPixels {
     std::vector<float> data;  // width * height * spec.nchannels, top row first
 };
 
+}  // namespace
+
+Status check_image_pixels(const std::string& path, long long width, long long height) {
+    if (width <= kMaxImagePixels / std::max(height, 1LL)) return Ok{};
+    return make_error(path + ": the image is " + std::to_string(width) + "x" +
+                      std::to_string(height) + " pixels, more than the " +
+                      std::to_string(kMaxImagePixels) +
+                      " pixels (4096x4096) mirage reads for an image map or a height field");
+}
+
+namespace {
+
 Result<FloatPixels> read_float_pixels(const std::string& path) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) return make_error(path + ": cannot read image: " + OIIO::geterror());
@@ -26,6 +39,9 @@ Result<FloatPixels> read_float_pixels(const std::string& path) {
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
         return make_error(path + ": not a 2D image with pixels");
     }
+    // The size the header gives, before any pixel is decoded.
+    if (auto s = check_image_pixels(path, spec.width, spec.height); !s) return s.error();
+    if (spec.nchannels > 64) return make_error(path + ": an image of more than 64 channels");
     f.data.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, f.data.data())) {
         return make_error(path + ": cannot read pixels: " + in->geterror());
@@ -114,6 +130,11 @@ Result<HeightImage> read_png_heights(const std::string& path) {
     if (setjmp(png_jmpbuf(f.png))) return make_error(path + ": not a readable PNG file: " + error);
     png_init_io(f.png, f.file);
     png_read_info(f.png, f.info);
+    // The size the header gives, before any pixel is decoded.
+    if (auto s = check_image_pixels(path, png_get_image_width(f.png, f.info),
+                                    png_get_image_height(f.png, f.info));
+        !s)
+        return s.error();
     colour_type = png_get_color_type(f.png, f.info);
     depth = png_get_bit_depth(f.png, f.info);
     if (colour_type == PNG_COLOR_TYPE_PALETTE) {

@@ -20,6 +20,13 @@ struct RgbaImage {
     double file_gamma = 0.0;  // the file's own decoding gamma; 0: none given (sRGB)
 };
 
+/// The most pixels an image map's or a height field's image may have: its pixels are held as
+/// floats (16 bytes a pixel and as much again while the file is decoded).
+constexpr long long kMaxImagePixels = 4096LL * 4096;
+
+/// An error naming the file when width x height is more than kMaxImagePixels.
+Status check_image_pixels(const std::string& path, long long width, long long height);
+
 /// Reads an image for an image map: its colour (grey spread to rgb) and alpha (1 without).
 Result<RgbaImage> read_image_rgba(const std::string& path);
 

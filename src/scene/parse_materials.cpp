@@ -11,6 +11,7 @@
 #include "scene/material_ops.h"
 #include "scene/scene_parser.h"
 #include "scene/transform.h"
+#include "util/format.h"
 
 namespace mirage::scene_detail {
 
@@ -19,6 +20,9 @@ namespace {
 constexpr std::size_t kMaxMapEntries = 256;  // POV-Ray's MAX_BLEND_MAP_ENTRIES
 constexpr double kEpsilon = 1e-10;           // POV-Ray's EPSILON
 constexpr double kPi = 3.1415926535897932384626;
+// The range of an ior or a dispersion: the tracer keeps them in single precision, as POV-Ray
+// does, and squares them.
+constexpr double kMinIor = 1e-3, kMaxIor = 1e3;
 
 bool one_of(const std::string& w, std::initializer_list<const char*> words) {
     for (const char* x : words) {
@@ -1252,7 +1256,7 @@ void SceneParser::parse_finish_block(Finish& f, const Token& kw) {
             expect_close_brace(item);
         } else if (w == "ior") {
             next();
-            f.ior = parse_float();
+            f.ior = parse_index_of_refraction("ior");
         } else if (w == "caustics") {
             next();
             f.caustics = parse_float();
@@ -1325,6 +1329,15 @@ void SceneParser::parse_finish_block(Finish& f, const Token& kw) {
     }
 }
 
+double SceneParser::parse_index_of_refraction(const char* name) {
+    const Token at = peek(0);
+    const double v = parse_float();
+    // The tracer works in single precision here, as POV-Ray does: 1e308 would be infinite.
+    if (v == 0.0 || (v >= kMinIor && v <= kMaxIor)) return v;
+    fail(at, std::string(name) + " " + shortest(v) + " must be 0 or from " + shortest(kMinIor) +
+                 " to " + shortest(kMaxIor));
+}
+
 void SceneParser::parse_interior_block(Interior& interior, const Token& kw) {
     expect_open_brace(kw);
     if (const Value* v = peek_identifier_value(0);
@@ -1336,9 +1349,9 @@ void SceneParser::parse_interior_block(Interior& interior, const Token& kw) {
         const Token t = peek(0);
         if (t.is_punct("}")) break;
         if (accept_word("ior")) {
-            interior.ior = parse_float();
+            interior.ior = parse_index_of_refraction("ior");
         } else if (accept_word("dispersion")) {
-            interior.dispersion = parse_float();
+            interior.dispersion = parse_index_of_refraction("dispersion");
         } else if (peek_word("dispersion_samples")) {
             next();
             Token at = peek(0);

@@ -34,6 +34,7 @@ struct ParseLimits {
     std::uintmax_t max_source_bytes = 16u << 20;  // the scene and its include files, bytes
     int max_nesting = 256;  // parentheses, objects, directives, conditionals inside each other
     std::int64_t max_loop_passes = 1'000'000;    // passes of all #while and #for loops together
+    std::int64_t max_tokens = 100'000'000;       // tokens read, each time they are read
     std::size_t max_array_elements = 1'000'000;  // elements of one array
     std::size_t max_total_array_elements = 20'000'000;  // array elements made or copied in all
     std::size_t max_objects = 1'000'000;                // objects parsed or copied in all

@@ -430,6 +430,8 @@ class SceneParser {
     void parse_normal_body(Normal& normal, const Token& keyword);
     void parse_finish_block(Finish& finish, const Token& keyword);
     void parse_interior_block(Interior& interior, const Token& keyword);
+    /// An ior or dispersion: 0 or from 0.001 to 1000 (an error at its place otherwise).
+    double parse_index_of_refraction(const char* name);
     Material parse_material_block(Material base, const Token& keyword);
     Fog parse_fog_block(const Token& keyword);
     std::vector<ColourMapEntry> parse_colour_map(const Token& keyword);
@@ -504,6 +506,7 @@ class SceneParser {
     std::vector<ActiveDirective> directives_;  // innermost last
     std::uint64_t cond_serial_ = 0;
     std::int64_t loop_passes_ = 0;
+    std::int64_t raw_tokens_read_ = 0;  // every token read, each time it is read (max_tokens)
     std::size_t objects_ = 0, array_elements_ = 0;
     std::uintmax_t source_bytes_ = 0;
 

@@ -10,17 +10,12 @@
 #include "scene/keywords.h"
 #include "scene/scene_parser.h"
 #include "util/format.h"
+#include "util/input_file.h"
 
 namespace mirage::scene_detail {
 namespace {
 
 constexpr std::size_t kMaxFrames = 1000;
-
-std::string bytes_text(std::uintmax_t n) {
-    std::string s = std::to_string(n) + " bytes";
-    if (n >= (1u << 20) && n % (1u << 20) == 0) s += " (" + std::to_string(n >> 20) + " MiB)";
-    return s;
-}
 
 }  // namespace
 
@@ -294,7 +289,14 @@ Token SceneParser::raw_next() {
         Frame& f = frames_.back();
         if (f.pos < f.end) {
             std::size_t index = f.pos++;
-            return make_token(f.file, index, f.context);
+            Token t = make_token(f.file, index, f.context);
+            if (++raw_tokens_read_ > options_.limits.max_tokens) {
+                fail_fatal(t, "the scene reached mirage's limit of " +
+                                  std::to_string(options_.limits.max_tokens) +
+                                  " tokens read (those of loops, macros and include files each "
+                                  "time they are read): an endless loop?");
+            }
+            return t;
         }
         if (f.kind == FrameContext::Kind::Main) {
             return make_token(f.file, f.file->tokens.size() - 1, f.context);

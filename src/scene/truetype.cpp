@@ -5,11 +5,15 @@
 // as POV-Ray's does; kerning takes the coverage of the first kern table.
 #include "scene/truetype.h"
 
+#include <algorithm>
 #include <cstdint>
-#include <fstream>
+#include <cstdio>
 #include <map>
-#include <sstream>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
+
+#include "util/input_file.h"
 
 namespace mirage {
 
@@ -34,6 +38,30 @@ class TrueTypeFont {
             int left, right, value;
         };
         std::vector<Pair> pairs;
+        // POV-Ray scans the pairs in order for (left, right) and stops at the first pair whose
+        // left is greater (the table is sorted in a well-formed font).  The same answer in
+        // O(log pairs) a character, whatever the order: the first pair of each (left, right),
+        // and the running maximum of left.
+        std::unordered_map<std::uint32_t, int> first;
+        std::vector<int> max_left;
+        void index() {
+            int m = -1;
+            for (std::size_t i = 0; i < pairs.size(); ++i) {
+                first.try_emplace(key(pairs[i].left, pairs[i].right), static_cast<int>(i));
+                m = std::max(m, pairs[i].left);
+                max_left.push_back(m);
+            }
+        }
+        static std::uint32_t key(int left, int right) {
+            return (static_cast<std::uint32_t>(left) << 16) | static_cast<std::uint32_t>(right);
+        }
+        /// The pair POV-Ray's scan finds for (left, right), or null.
+        const Pair* find(int left, int right) const {
+            const auto it = first.find(key(left, right));
+            if (it == first.end()) return nullptr;
+            const auto stop = std::upper_bound(max_left.begin(), max_left.end(), left);
+            return it->second < stop - max_left.begin() ? &pairs[it->second] : nullptr;
+        }
     };
     std::vector<KernTable> kern;
     // Format 4 segments, read at the first use (POV-Ray caches them per font).
@@ -67,6 +95,7 @@ class TrueTypeFont {
         std::uint32_t head = 0, loca_off = 0, maxp = 0, kern_off = 0, hhea = 0, hmtx_off = 0;
         for (int i = 0; i < tables && i < 40; ++i) {
             const std::size_t e = at + 12 + 16 * static_cast<std::size_t>(i);
+            if (e + 16 > data.size()) throw Bad{};
             const std::string tag(data.begin() + static_cast<long>(e),
                                   data.begin() + static_cast<long>(e) + 4);
             const std::uint32_t offset = u32(e + 8);
@@ -119,6 +148,7 @@ class TrueTypeFont {
                 } else {
                     k += static_cast<std::size_t>(length);
                 }
+                table.index();
                 kern.push_back(std::move(table));
             }
         }
@@ -196,11 +226,22 @@ class TrueTypeFont {
         int metrics = 0;
     };
 
+    // A glyph too large to trace: its points (with every part of a composite glyph) or the
+    // parts read for it.
+    struct TooLarge {
+        std::string what;
+    };
+    // What reading the current glyph has cost: parts read (a composite glyph names others,
+    // which may name others, up to 8 deep) and points kept.
+    int parts_read = 0;
+
     // POV-Ray's ExtractGlyphOutline.
     Outline outline(unsigned index, unsigned c, int depth) {
         Outline o;
         o.metrics = static_cast<int>(index);
         if (depth > 8 || index >= loca.size()) return o;
+        if (++parts_read > kMaxGlyphParts)
+            throw TooLarge{"is made of more than " + std::to_string(kMaxGlyphParts) + " parts"};
         std::size_t p = glyf + loca[index];
         if (c != ' ') {
             o.contours = s16(p);
@@ -212,10 +253,14 @@ class TrueTypeFont {
         }
         const double em = units_per_em;
         if (o.contours > 0) {
-            for (int i = 0; i < o.contours; ++i, p += 2)
+            for (int i = 0; i < o.contours; ++i, p += 2) {
                 o.end_points.push_back(static_cast<int>(u16(p)));
+                // Each contour ends after the last one (a contour of one point at least).
+                if (i > 0 && o.end_points[i] <= o.end_points[i - 1]) throw Bad{};
+            }
             p += 2 + u16(p);  // instructions
             const int n = o.end_points.back() + 1;
+            if (n > kMaxGlyphPoints) throw too_many_points(n);
             o.flags.assign(static_cast<std::size_t>(n), 0);
             for (int i = 0; i < n; ++i) {
                 o.flags[i] = static_cast<unsigned char>(u8(p++));
@@ -296,6 +341,8 @@ class TrueTypeFont {
                 const Outline s = outline(sub, c, depth + 1);
                 if (s.contours == 0) continue;
                 const int n = static_cast<int>(o.x.size());
+                if (n + static_cast<long>(s.x.size()) > kMaxGlyphPoints)
+                    throw too_many_points(n + static_cast<long>(s.x.size()));
                 for (int e : s.end_points) o.end_points.push_back(e + n);
                 o.contours += s.contours;
                 for (std::size_t i = 0; i < s.x.size(); ++i) {
@@ -315,11 +362,17 @@ class TrueTypeFont {
         return o;
     }
 
+    static TooLarge too_many_points(long n) {
+        return TooLarge{"has " + std::to_string(n) + " points, more than the " +
+                        std::to_string(kMaxGlyphPoints) + " mirage traces in a glyph"};
+    }
+
     // POV-Ray's ProcessCharacter: glyphs are shared by character and by glyph index.
     Loaded glyph_for(unsigned c) {
         if (auto it = by_char.find(c); it != by_char.end()) return it->second;
         const unsigned index = char_to_glyph(c);
         if (auto it = by_index.find(index); it != by_index.end()) return it->second;
+        parts_read = 0;
         const Outline o = outline(index, c, 0);
         auto g = std::make_shared<GlyphData>();
         g->x_min = o.x_min;
@@ -352,15 +405,20 @@ class TrueTypeFont {
 };
 
 Result<std::shared_ptr<TrueTypeFont>> load_truetype_font(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return make_error(path + ": cannot open the font file");
+    auto bytes = read_input_file(path, InputKind{"a font", "fonts", kMaxFontBytes});
+    if (!bytes) return bytes.error();
+    return read_truetype_font(path, *bytes);
+}
+
+Result<std::shared_ptr<TrueTypeFont>> read_truetype_font(const std::string& name,
+                                                         std::string_view bytes) {
     auto font = std::make_shared<TrueTypeFont>();
-    font->path = path;
-    font->data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    font->path = name;
+    font->data.assign(bytes.begin(), bytes.end());
     try {
         font->read_tables();
     } catch (const TrueTypeFont::Bad&) {
-        return make_error(path + ": not a TrueType font mirage can read");
+        return make_error(name + ": not a TrueType font mirage can read");
     }
     return font;
 }
@@ -404,12 +462,14 @@ Result<Text> layout_text(TrueTypeFont& font, const std::string& text, double thi
                          const glm::dvec3& offset) {
     Text out;
     out.thickness = thickness;
+    unsigned last_char = 0;
     try {
         const double funit = 1.0 / font.units_per_em;
         glm::dvec3 total(0.0);
         unsigned last_index = 0;
         bool first = true;
         for (const unsigned c : code_points(text)) {
+            last_char = c;
             const TrueTypeFont::Loaded g = font.glyph_for(c);
             const unsigned index = font.glyph_indices[c];
             const auto& m = font.hmtx.at(static_cast<std::size_t>(g.metrics));
@@ -426,22 +486,19 @@ Result<Text> layout_text(TrueTypeFont& font, const std::string& text, double thi
                 for (std::size_t t = 0; t < font.kern.size(); ++t) {
                     const int coverage = font.kern[0].coverage;  // POV-Ray reads table 0's
                     if (!(coverage & 1)) continue;               // horizontal kerning only
-                    for (const auto& pair : font.kern[t].pairs) {
-                        if (pair.left == static_cast<int>(last_index) && pair.right == g.metrics) {
-                            if (coverage & 2) {  // minimum
-                                (coverage & 4 ? min_y : min_x) = pair.value;
-                            } else if (coverage & 4) {  // cross-stream
-                                if (pair.value == -32768) {
-                                    ky = 0;
-                                } else {
-                                    ky = (coverage & 8) ? pair.value : ky + pair.value;
-                                }
+                    if (const auto* pair =
+                            font.kern[t].find(static_cast<int>(last_index), g.metrics)) {
+                        if (coverage & 2) {  // minimum
+                            (coverage & 4 ? min_y : min_x) = pair->value;
+                        } else if (coverage & 4) {  // cross-stream
+                            if (pair->value == -32768) {
+                                ky = 0;
                             } else {
-                                kx = (coverage & 8) ? pair.value : kx + pair.value;
+                                ky = (coverage & 8) ? pair->value : ky + pair->value;
                             }
-                            break;
+                        } else {
+                            kx = (coverage & 8) ? pair->value : kx + pair->value;
                         }
-                        if (pair.left > static_cast<int>(last_index)) break;
                     }
                 }
                 kx = kx > min_x ? kx : min_x;
@@ -457,6 +514,10 @@ Result<Text> layout_text(TrueTypeFont& font, const std::string& text, double thi
         }
     } catch (const TrueTypeFont::Bad&) {
         return make_error(font.path + ": a glyph mirage cannot read");
+    } catch (const TrueTypeFont::TooLarge& e) {
+        char code[16];
+        std::snprintf(code, sizeof code, "U+%04X", last_char);
+        return make_error(font.path + ": the glyph of " + code + " " + e.what);
     } catch (const std::out_of_range&) {
         return make_error(font.path + ": a glyph's metrics are missing");
     }

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "util/input_file.h"
+
 namespace mirage {
 
 int CsvTable::column(std::string_view name) const {
@@ -59,7 +61,7 @@ Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
                     in_quotes = false;
                 }
             } else {
-                if (ch == '\n') {
+                if (ch == '\n' || (ch == '\r' && !(i + 1 < text.size() && text[i + 1] == '\n'))) {
                     ++line;
                     line_start = i + 1;
                 }
@@ -74,9 +76,10 @@ Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
             end_field();
             field_place = FileLoc{source, line, static_cast<int>(i + 1 - line_start) + 1};
             row_has_content = true;
-        } else if (ch == '\r') {
-            // tolerate CRLF
-        } else if (ch == '\n') {
+        } else if (ch == '\r' && i + 1 < text.size() && text[i + 1] == '\n') {
+            // CRLF: the '\n' ends the line
+        } else if (ch == '\n' || ch == '\r') {
+            // A lone CR ends a line too (old Mac files).
             end_row();
             ++line;
             line_start = i + 1;
@@ -104,11 +107,9 @@ Result<CsvTable> parse_csv(std::string_view text, const std::string& source) {
 }
 
 Result<CsvTable> read_csv_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return make_error(path + ": cannot open: " + std::strerror(errno));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return parse_csv(buffer.str(), path);
+    auto text = read_input_file(path, InputKind{"a CSV table", "CSV tables", kMaxCsvBytes});
+    if (!text) return text.error();
+    return parse_csv(*text, path);
 }
 
 Result<double> csv_number(const CsvTable& table, const CsvRow& row, int column) {
@@ -116,15 +117,15 @@ Result<double> csv_number(const CsvTable& table, const CsvRow& row, int column) 
     const std::string where = table.where(row, column);
     if (text.empty()) return make_error(where + ": missing number");
     if (text.find_first_of("xX") != std::string::npos)
-        return make_error(where + ": '" + text + "' is not a decimal number");
+        return make_error(where + ": '" + quote_cut(text) + "' is not a decimal number");
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(text.c_str(), &end);
     if (end != text.c_str() + text.size())
-        return make_error(where + ": '" + text + "' is not a number");
+        return make_error(where + ": '" + quote_cut(text) + "' is not a number");
     // strtod sets ERANGE for an overflow (and for an underflow, which loses only digits).
     if (errno == ERANGE && std::isinf(v))
-        return make_error(where + ": '" + text + "' is out of the range of a double");
+        return make_error(where + ": '" + quote_cut(text) + "' is out of the range of a double");
     return v;
 }
 

@@ -2,6 +2,7 @@
 // number, so that errors can name the row and the column.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <string_view>
@@ -31,12 +32,15 @@ struct CsvTable {
     std::string where(const CsvRow& row, int column) const;
 };
 
-/// Parses CSV text whose first row is the header.  Rows with another field count than the
-/// header, unterminated quotes and an empty text are errors naming source:line.  A UTF-8
-/// byte-order mark at the start is skipped.
+/// Parses CSV text whose first row is the header; lines end at LF, CRLF or a lone CR.  Rows with
+/// another field count than the header, unterminated quotes and an empty text are errors naming
+/// source:line.  A UTF-8 byte-order mark at the start is skipped.
 Result<CsvTable> parse_csv(std::string_view text, const std::string& source);
 
-/// Reads and parses a CSV file.
+/// The largest CSV file read, bytes (a million rows of ten columns fit in it).
+constexpr std::size_t kMaxCsvBytes = std::size_t{64} << 20;
+
+/// Reads and parses a CSV file: a regular file of at most kMaxCsvBytes (read_input_file).
 Result<CsvTable> read_csv_file(const std::string& path);
 
 /// Parses a whole field as a decimal double ("nan" and "inf" as written are accepted); hex

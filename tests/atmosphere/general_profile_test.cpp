@@ -121,14 +121,16 @@ TEST(GeneralProfile, YoungsInversionDuctStartsWhereHeSaysItDoes) {
 TEST(GeneralProfile, BadProfilesAreRefusedByName) {
     AirSpec spec;
     spec.column.inversions.push_back({60.0, 50.0, 2.0, 0.0});
-    EXPECT_EQ(make_air_model(spec).message(), "inversion: top 50 m must lie above its bottom 60 m");
+    EXPECT_EQ(make_air_model(spec).message(),
+              "inversion: top 50 m must lie above its bottom 60 m and at most 10000 m");
     spec.column.inversions = {{50.0, 1500.0, 2.0, 0.0}};
     spec.top_m = 1000.0;
     EXPECT_EQ(make_air_model(spec).message(),
               "inversion top 1500 m must lie below the profile's top 1000 m");
     spec = {};
     spec.column.layers.push_back({5.0, 0.0});
-    EXPECT_EQ(make_air_model(spec).message(), "surface layer: scale height 0 m must be > 0");
+    EXPECT_EQ(make_air_model(spec).message(),
+              "surface layer: scale height 0 m must be from 0.001 to 10000 m");
     spec = {};
     spec.column.lapse_k_per_m = 0.5;
     EXPECT_EQ(make_air_model(spec).message(),
@@ -158,6 +160,66 @@ TEST(GeneralProfile, IndexSoundingIsItsOwnModel) {
                              : 1.000281,
                     1e-15);
     EXPECT_NEAR((*q)->n(9.0), 1.000281, 1e-15);  // homogeneous above the top
+}
+
+}  // namespace
+}  // namespace mirage
+
+namespace mirage {
+namespace {
+
+// A smooth sounding of `rows` rows 0.1 m apart, fitted as a scene's is (with the coarse spans).
+FitReport fit_smooth_sounding(int rows) {
+    AirSpec spec;
+    spec.source = AirSpec::Source::Sounding;
+    Sounding& s = spec.sounding;
+    s.source = "smooth.csv";
+    for (int i = 0; i < rows; ++i) {
+        const double y = 0.1 * i;
+        s.height_m.push_back(y);
+        // The standard lapse: a quadratic fits it over long spans (they stay of use).
+        s.temperature_k.push_back(288.15 - 0.0065 * y + 1e-3 * std::sin(y));
+        s.line.push_back(i + 2);
+    }
+    FitSettings fit;
+    fit.coarse_spans = true;
+    FitReport report;
+    auto q = fit_air(spec, fit, &report);
+    EXPECT_TRUE(q.ok()) << q.message();
+    if (q.ok()) EXPECT_TRUE((*q)->has_spans());
+    return report;
+}
+
+// The fit's work grows as its rows (times the log of the coarse spans' lengths), not as their
+// square: from every fine knot every span length was checked at every fine knot inside it,
+// and 10^4 rows took more than 300 s.  Four times the rows cost at most six times the checks
+// (a quadratic cost would be sixteen times: spans from every fine knot gave 15.7 times).
+TEST(GeneralProfile, FittingASoundingCostsAboutItsRows) {
+    const FitReport small = fit_smooth_sounding(1500);
+    const FitReport large = fit_smooth_sounding(6000);
+    ASSERT_GT(small.checks, 0);
+    EXPECT_GT(large.pieces, 3 * small.pieces);
+    EXPECT_LT(double(large.checks) / small.checks, 6.0) << small.checks << " then " << large.checks;
+}
+
+// A fit that fails on a sounding names the file and the rows around the height where it
+// stopped.
+TEST(GeneralProfile, ASoundingFitFailureNamesItsRows) {
+    AirSpec spec;
+    spec.source = AirSpec::Source::Sounding;
+    spec.sounding.source = "road.csv";
+    spec.sounding.height_m = {0.0, 0.5, 10.0};
+    spec.sounding.temperature_k = {318.15, 304.15, 301.65};
+    spec.sounding.line = {2, 3, 4};
+    FitSettings fit;
+    fit.tolerance_n = 1e-30;
+    auto q = fit_air(spec, fit);
+    ASSERT_FALSE(q.ok());
+    EXPECT_EQ(q.message().rfind("road.csv:2: the rows at 0 m (line 2) and 0.5 m (line 3): the "
+                                "profile changes too fast near ",
+                                0),
+              0u)
+        << q.message();
 }
 
 }  // namespace

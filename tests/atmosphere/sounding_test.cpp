@@ -77,6 +77,12 @@ TEST(Sounding, BadSoundingsAreRefusedWithFileLineAndColumn) {
     EXPECT_EQ(
         err("height_m,temperature_c\n0,20\n1,-300\n"),
         "s.csv:3:3: column 'temperature_c': temperature -300 degC is at or below absolute zero");
+    // A temperature of 3.7e6 degC (found by the fuzz target) made the fit take a million pieces.
+    EXPECT_EQ(err("height_m,temperature_c\n0,20\n0.1,3700030.0\n10,29.9\n"),
+              "s.csv:3:5: column 'temperature_c': temperature 3700030 degC must be from -173.15 "
+              "to 126.85 degC");
+    EXPECT_EQ(err("height_m,temperature_c,pressure_hpa\n0,20,1013\n1,19,1e9\n"),
+              "s.csv:3:6: column 'pressure_hpa': pressure 1e+09 hPa must be from 1 to 2000 hPa");
     EXPECT_EQ(
         err("height_m,temperature_c,relative_humidity\n0,20,50\n1,19,120\n"),
         "s.csv:3:6: column 'relative_humidity': relative humidity 120 % must lie in [0, 100]");
@@ -89,7 +95,8 @@ TEST(Sounding, BadSoundingsAreRefusedWithFileLineAndColumn) {
 TEST(Sounding, MissingFileIsNamed) {
     auto s = read_sounding("/nonexistent/sounding.csv");
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.message(), "/nonexistent/sounding.csv: cannot open: No such file or directory");
+    EXPECT_EQ(s.message(),
+              "/nonexistent/sounding.csv: cannot be opened: No such file or directory");
 }
 
 // The spline passes through every row, has one slope at every knot, and keeps monotone data

@@ -174,19 +174,18 @@ TEST_F(RealAirSettings, ABadSoundingIsRefusedWithItsFileLineAndColumn) {
               s + ":1:10: Mirage_Sounding: " + (dir_ / "bad.csv").string() +
                   ":3:5: column 'temperature_c': 'nan' is not a finite number");
     const std::string missing = error("#declare Mirage_Sounding = \"none.csv\";");
-    EXPECT_EQ(
-        missing.rfind(
-            s + ":1:10: Mirage_Sounding: " + (dir_ / "none.csv").string() + ": cannot open", 0),
-        0u)
+    EXPECT_EQ(missing.rfind(s + ":1:10: Mirage_Sounding: " + (dir_ / "none.csv").string() +
+                                ": cannot be opened",
+                            0),
+              0u)
         << missing;
     // A device or a directory is no sounding (reading /dev/zero would never end).
     EXPECT_EQ(error("#declare Mirage_Sounding = \"/dev/zero\";"),
-              s + ":1:10: Mirage_Sounding: /dev/zero: is not a regular file (a directory, a "
-                  "device or a pipe?): soundings are read from files");
+              s + ":1:10: Mirage_Sounding: /dev/zero: is not a regular file (a device, a pipe or "
+                  "a socket?): soundings are read from files");
     EXPECT_EQ(error("#declare Mirage_Sounding = \"air\";"),
               s + ":1:10: Mirage_Sounding: " + (dir_ / "air").string() +
-                  ": is not a regular file (a directory, a device or a pipe?): soundings are read "
-                  "from files");
+                  ": is a directory, not a sounding");
 }
 
 TEST_F(RealAirSettings, IndexStepsAreAskedForByNameAndAMisspellingListsTheDesigns) {

@@ -7,10 +7,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "parse_helpers.h"
 
@@ -303,6 +305,225 @@ TEST_F(LimitsOnFiles, ASceneMustBeARegularFileOfBoundedSize) {
     ASSERT_EQ(ok->files.size(), 2u);
     EXPECT_EQ(ok->files[0], top);
     EXPECT_EQ(ok->files[1], (dir_ / "small.inc").string());
+}
+
+}  // namespace
+}  // namespace mirage
+
+namespace mirage {
+namespace {
+
+std::string first_line_of(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+// Big-endian bytes for the files the tests make.
+void put16(std::string& s, unsigned v) {
+    s += static_cast<char>((v >> 8) & 0xFF);
+    s += static_cast<char>(v & 0xFF);
+}
+void put32(std::string& s, std::uint32_t v) {
+    put16(s, v >> 16);
+    put16(s, v & 0xFFFF);
+}
+
+// A PNG file's header claiming `width` x `height` grey pixels, with one empty IDAT: the size a
+// reader sees before it decodes a pixel.
+std::string png_header(std::uint32_t width, std::uint32_t height) {
+    auto crc = [](const std::string& bytes) {
+        std::uint32_t c = 0xFFFFFFFFu;
+        for (unsigned char b : bytes) {
+            c ^= b;
+            for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+        }
+        return c ^ 0xFFFFFFFFu;
+    };
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        std::string out;
+        put32(out, static_cast<std::uint32_t>(data.size()));
+        out += type + data;
+        put32(out, crc(type + data));
+        return out;
+    };
+    std::string ihdr;
+    put32(ihdr, width);
+    put32(ihdr, height);
+    ihdr += std::string("\x08\x00\x00\x00\x00", 5);  // 8 bits, grey, deflate, no interlace
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) +
+           chunk("IDAT", std::string("\x78\x9c\x03\x00\x00\x00\x00\x01", 8)) + chunk("IEND", "");
+}
+
+// A TrueType font whose 'A' is a composite glyph naming 16 copies of a composite glyph, 8
+// levels deep (16^8 copies of a triangle), and whose 'B' is a simple glyph of 25 000 points.
+std::string exploding_font() {
+    std::vector<std::string> glyphs;
+    // 0: .notdef and 1: a triangle.
+    for (int g = 0; g < 2; ++g) {
+        std::string t;
+        put16(t, 1);  // one contour
+        for (int b : {0, 0, 100, 100}) put16(t, b);
+        put16(t, 2);                  // its last point
+        put16(t, 0);                  // no instructions
+        t += std::string(3, '\x01');  // on the curve, coordinates as words
+        for (int x : {0, 100, 50}) put16(t, static_cast<unsigned>(x));
+        for (int y : {0, 0, 100}) put16(t, static_cast<unsigned>(y));
+        glyphs.push_back(t);
+    }
+    // 2..9: each 16 copies of the one before.
+    for (int g = 2; g <= 9; ++g) {
+        std::string t;
+        put16(t, 0xFFFF);  // -1 contours: composite
+        for (int b : {0, 0, 100, 100}) put16(t, b);
+        for (int k = 0; k < 16; ++k) {
+            put16(t, 1 | 2 | (k < 15 ? 32 : 0));  // word args, x-y values, more to come
+            put16(t, static_cast<unsigned>(g - 1));
+            put16(t, static_cast<unsigned>(k));
+            put16(t, 0);
+        }
+        glyphs.push_back(t);
+    }
+    // 10: 25 000 points at the origin (flags: on the curve, x and y the same as before).
+    {
+        std::string t;
+        put16(t, 1);
+        for (int b : {0, 0, 100, 100}) put16(t, b);
+        put16(t, 24999);
+        put16(t, 0);
+        t += std::string(25000, '\x31');
+        glyphs.push_back(t);
+    }
+    const unsigned count = static_cast<unsigned>(glyphs.size());
+    std::string glyf, loca;
+    for (const auto& g : glyphs) {
+        put32(loca, static_cast<std::uint32_t>(glyf.size()));
+        glyf += g;
+    }
+    std::string head(54, '\0');
+    {
+        std::string magic;
+        put32(magic, 0x5F0F3CF5u);
+        head.replace(12, 4, magic);
+        std::string em;
+        put16(em, 1000);
+        head.replace(18, 2, em);
+        std::string loc;
+        put16(loc, 1);  // long offsets
+        head.replace(50, 2, loc);
+    }
+    std::string maxp;
+    put32(maxp, 0x00005000u);
+    put16(maxp, count);
+    std::string hhea(36, '\0');
+    {
+        std::string n;
+        put16(n, count);
+        hhea.replace(34, 2, n);
+    }
+    std::string hmtx;
+    for (unsigned g = 0; g < count; ++g) {
+        put16(hmtx, 600);
+        put16(hmtx, 0);
+    }
+    std::string cmap;
+    put16(cmap, 0);
+    put16(cmap, 1);  // one subtable
+    put16(cmap, 1);  // Macintosh
+    put16(cmap, 0);
+    put32(cmap, 12);
+    put16(cmap, 0);  // format 0
+    put16(cmap, 262);
+    put16(cmap, 0);
+    std::string map(256, '\0');
+    map['A'] = 9;
+    map['B'] = 10;
+    cmap += map;
+    const std::pair<const char*, const std::string*> tables[] = {
+        {"cmap", &cmap}, {"glyf", &glyf}, {"head", &head}, {"hhea", &hhea},
+        {"hmtx", &hmtx}, {"loca", &loca}, {"maxp", &maxp}};
+    std::string font;
+    put32(font, 0x00010000u);
+    put16(font, 7);
+    put16(font, 0);
+    put16(font, 0);
+    put16(font, 0);
+    std::uint32_t offset = 12 + 16 * 7;
+    std::string data;
+    for (const auto& [tag, bytes] : tables) {
+        font += tag;
+        put32(font, 0);
+        put32(font, offset + static_cast<std::uint32_t>(data.size()));
+        put32(font, static_cast<std::uint32_t>(bytes->size()));
+        data += *bytes;
+    }
+    return font + data;
+}
+
+class HostileFiles : public ::testing::Test {
+  protected:
+    const std::filesystem::path dir_ = std::filesystem::path(::testing::TempDir()) /
+                                       ("mirage_hostile_files_" + std::to_string(::getpid()));
+    void SetUp() override { std::filesystem::create_directories(dir_); }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    std::string write(const std::string& name, const std::string& bytes) {
+        std::ofstream(dir_ / name, std::ios::binary) << bytes;
+        return (dir_ / name).string();
+    }
+    std::string error(const std::string& scene) {
+        const std::string path = write("scene.pov", scene);
+        auto r = parse_scene_file(path, ParseOptions{});
+        return r.ok() ? std::string("(no error)") : first_line_of(r.message());
+    }
+};
+
+// An image's size is checked against the limit from its header, before its pixels are decoded
+// (a 40000^2 PNG of a few hundred bytes took 4.8 GB as floats).
+TEST_F(HostileFiles, AnImageLargerThanTheLimitIsRefusedByItsHeader) {
+    const std::string big = write("big.png", png_header(40000, 40000));
+    const std::string why = big +
+                            ": the image is 40000x40000 pixels, more than the 16777216 pixels "
+                            "(4096x4096) mirage reads for an image map or a height field";
+    EXPECT_EQ(error("plane { y, 0 pigment { image_map { png \"big.png\" } } }"),
+              dir_.string() + "/scene.pov:1:40: " + why);
+    EXPECT_EQ(error("height_field { png \"big.png\" }"), dir_.string() + "/scene.pov:1:20: " + why);
+    // A small image with the same header form is read.
+    write("small.png", png_header(2, 2));
+    EXPECT_EQ(
+        error("plane { y, 0 pigment { image_map { png \"small.png\" } } }").find("pixels, more"),
+        std::string::npos);
+}
+
+// A glyph's work is bounded when the font is read: composite glyphs naming parts that name
+// parts (1.2 to 1.4 s a ray and up to 1 GB with mutated fonts) and glyphs of very many points.
+TEST_F(HostileFiles, AFontsGlyphsAreBoundedWhenTheyAreRead) {
+    const std::string font = write("boom.ttf", exploding_font());
+    EXPECT_EQ(error("text { ttf \"boom.ttf\" \"A\" 1, 0 }"),
+              dir_.string() + "/scene.pov:1:12: " + font +
+                  ": the glyph of U+0041 is made of more than 1000 parts");
+    EXPECT_EQ(error("text { ttf \"boom.ttf\" \"B\" 1, 0 }"),
+              dir_.string() + "/scene.pov:1:12: " + font +
+                  ": the glyph of U+0042 has 25000 points, more than the 20000 mirage traces in "
+                  "a glyph");
+    // A device or a directory is no font (find_scene_file looks for regular files only).
+    EXPECT_EQ(error("text { ttf \"/dev/zero\" \"A\" 1, 0 }"),
+              dir_.string() + "/scene.pov:1:12: cannot find the font file '/dev/zero'");
+}
+
+// Every token read counts, each time it is read: a loop whose body is an include file or a
+// chain of macros reaches this limit long before the passes'.
+TEST_F(HostileFiles, TheTokensReadHaveALimit) {
+    write("body.inc", "#declare A = 1; #declare B = A + 2; #declare C = B * 3;\n");
+    ParseOptions o;
+    o.limits.max_tokens = 10000;
+    const std::string path = write("loop.pov",
+                                   "#declare I = 0;\n#while (I < 1000)\n#include \"body.inc\"\n"
+                                   "#declare I = I + 1;\n#end\n");
+    auto r = parse_scene_file(path, o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(first_line_of(r.message())
+                  .find(": the scene reached mirage's limit of 10000 tokens read (those of loops, "
+                        "macros and include files each time they are read): an endless loop?"),
+              std::string::npos)
+        << r.message();
+    o.limits.max_tokens = 100000;
+    EXPECT_TRUE(parse_scene_file(path, o).ok());
 }
 
 }  // namespace

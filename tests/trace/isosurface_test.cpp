@@ -1,5 +1,7 @@
 // Isosurfaces: hits, normals and inside tests against closed forms, the parser's errors and
 // warnings, and POV-Ray's image.
+#include "trace/shapes/isosurface.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -217,6 +219,29 @@ isosurface { function { y + f_noise3d(2*x, 0, 2*z) - 0.5 } contained_by { box { 
 )",
                                              160, 120);
     EXPECT_GE(psnr, 40.0);
+}
+
+}  // namespace
+}  // namespace mirage
+
+namespace mirage {
+namespace {
+
+// accuracy 1e-300 with max_gradient 1e300 drops no interval: the search halved the ray's
+// interval down to the accuracy everywhere (over 30 s at 16x12).  A ray's search stops at
+// kMaxRootSearchSteps halvings (a miss there); this one needs 2^21 without the bound.
+TEST(Isosurface, ARaysRootSearchIsBounded) {
+    for (const char* accuracy : {"1e-6", "1e-300"}) {
+        const testing::Parsed p = testing::build(
+            std::string("isosurface { function { 1 } contained_by { box { -1, 1 } } accuracy ") +
+                accuracy + " max_gradient 1e300 }",
+            testing::with_povray_includes());
+        const long before = root_search_steps_on_this_thread();
+        const auto h = testing::sorted_hits(p, glm::dvec3(0.1, 0.2, -5), glm::dvec3(0, 0, 1));
+        EXPECT_TRUE(h.empty());
+        EXPECT_LE(root_search_steps_on_this_thread() - before, kMaxRootSearchSteps) << accuracy;
+        EXPECT_GE(root_search_steps_on_this_thread() - before, kMaxRootSearchSteps / 2) << accuracy;
+    }
 }
 
 }  // namespace

@@ -24,6 +24,8 @@ namespace {
 constexpr double kBoxDepthTolerance = 1.0e-6;  // boxes.cpp's DEPTH_TOLERANCE
 constexpr int kMaxHits = 12;                    // the container's two and ISOSURFACE_MAXTRACE
 
+thread_local long t_root_search_steps = 0;  // root_search_steps_on_this_thread
+
 double trace_noise(double x, double y, double z, int generator) {
     return noise(glm::dvec3(x, y, z), generator);
 }
@@ -136,6 +138,10 @@ class IsosurfaceShape final : public ComplexShape {
         double vlength = 1.0;
         double inv = 1.0;
         double maxg = 1.1;
+        // Function evaluations the bisection may still make for this ray (kMaxRootSearchSteps
+        // in all): a fine accuracy with a huge max_gradient drops no interval and would halve
+        // the ray's interval down to the accuracy everywhere.
+        long steps_left = kMaxRootSearchSteps;
     };
 
     double function(const glm::dvec3& p) const {
@@ -248,6 +254,8 @@ class IsosurfaceShape final : public ComplexShape {
             return false;
         }
         if (a.f + b.f - dt >= 0.0) return false;
+        if (--s.steps_left < 0) return false;  // the bound on a ray's work: a miss
+        ++t_root_search_steps;
         t21 *= 0.5;
         dt *= 0.5;
         const Pair m{a.t + t21, along(s, a.t + t21)};
@@ -262,6 +270,8 @@ class IsosurfaceShape final : public ComplexShape {
 };
 
 }  // namespace
+
+long root_search_steps_on_this_thread() { return t_root_search_steps; }
 
 Result<std::shared_ptr<const ComplexShape>> prepare_isosurface(const Isosurface& iso,
                                                                const Primitive& p) {
