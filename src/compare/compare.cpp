@@ -273,14 +273,15 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     row.max_trace_level = rep->max_trace_level;
     row.image = fs::relative(image, sw.out).string();
     sw.result.rows.push_back(row);
+    // (A count of layers is the setting itself.)
+    const bool counted_layers =
+        model == CompareModel::UniformBands || model == CompareModel::CorrectedBands;
     sw.tiles.push_back(
         {std::move(*codes),
          model_name(model) + " " + setting_label(row) +
-             (model != CompareModel::UniformBands ? ", " + std::to_string(row.layers) + " layers"
-                                                  : "") +
+             (!counted_layers ? ", " + std::to_string(row.layers) + " layers" : "") +
              "\nPOV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3)});
-    sw.say(label + ": " +
-           (model != CompareModel::UniformBands ? std::to_string(row.layers) + " layers, " : "") +
+    sw.say(label + ": " + (!counted_layers ? std::to_string(row.layers) + " layers, " : "") +
            "POV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3));
     return BandOutcome::Rendered;
 }

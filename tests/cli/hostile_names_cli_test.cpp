@@ -234,13 +234,20 @@ TEST(HostileNames, AFolderWithASpaceRendersInEveryPovRayRun) {
     const auto dir = test_dir("hostile_names", "space");
     fs::create_directories(dir / "a b");
     write(dir / "a b" / "s c;x.pov", read(kDesert));
-    // compile's .ini, rendered as its comment says.
-    auto r = run_in(dir, "compile 'a b/s c;x.pov' -o 'o u t' -W 16 -H 12 -q");
+    // compile's .ini, rendered: it names the scene that renders the template through the
+    // corrected camera, which includes the template by its path.
+    auto r = run_in(dir, "compile 'a b/s c;x.pov' -o 'o u t' -W 16 -H 12 -q --render");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string ini = read(dir / "o u t" / "s c;x.ini");
-    EXPECT_NE(ini.find("Input_File_Name=\"" + (dir / "a b" / "s c;x.pov").string() + "\"\n"),
+    EXPECT_NE(ini.find("Input_File_Name=\"" + (dir / "o u t" / "s c;x_render.pov").string() +
+                       "\"\n"),
               std::string::npos)
         << ini;
+    const std::string scene = read(dir / "o u t" / "s c;x_render.pov");
+    EXPECT_NE(scene.find("#include \"" + (dir / "a b" / "s c;x.pov").string() + "\"\n"),
+              std::string::npos)
+        << scene;
+    EXPECT_TRUE(fs::exists(dir / "o u t" / "s c;x.png")) << r.err;
     // compare: POV-Ray renders a design from the .ini in a folder with a space.
     r = run_in(dir,
                "compare 'a b/s c;x.pov' -W 16 -H 12 -o 'c o' --counts 4 --tolerances 2 "

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -31,6 +33,7 @@ CompareOptions small_sweep(const fs::path& dir) {
     o.tolerances = {1};
     o.trace_tolerances = {0.5, 4};
     o.steps = {16};  // real air's design: not run for the desert's exponential profile
+    o.corrected_counts = {12};
     return o;
 }
 
@@ -44,10 +47,11 @@ TEST(Compare, SweepsTheDesertAndWritesEveryOutput) {
     ASSERT_TRUE(r.ok()) << r.message();
 
     // One row per setting that was rendered, coarse to fine within each model.
-    ASSERT_EQ(r->rows.size(), 5u);
+    ASSERT_EQ(r->rows.size(), 6u);
     const std::pair<CompareModel, double> expected[] = {{CompareModel::UniformBands, 8},
                                                         {CompareModel::UniformBands, 64},
                                                         {CompareModel::AdaptiveBands, 1},
+                                                        {CompareModel::CorrectedBands, 12},
                                                         {CompareModel::Polyline, 4},
                                                         {CompareModel::Polyline, 0.5}};
     for (size_t i = 0; i < r->rows.size(); ++i) {
@@ -73,9 +77,11 @@ TEST(Compare, SweepsTheDesertAndWritesEveryOutput) {
     // More layers, or a finer tracer tolerance, does not make the picture worse.  Eight equal
     // layers slice the spheres' mirage (RMSE 0.084 here); 64 halve the error.
     EXPECT_LT(r->rows[1].rmse, 0.75 * r->rows[0].rmse);
-    EXPECT_LT(r->rows[4].rmse, 0.75 * r->rows[3].rmse);
+    EXPECT_LT(r->rows[5].rmse, 0.75 * r->rows[4].rmse);
+    // The corrected camera through 12 layers comes closer than 64 equal layers.
+    EXPECT_LT(r->rows[3].rmse, r->rows[1].rmse);
     // The polyline's max error is its tolerance; the bands' is the compile report's.
-    EXPECT_EQ(r->rows[3].max_error_px, 4.0);
+    EXPECT_EQ(r->rows[4].max_error_px, 4.0);
     EXPECT_GT(r->rows[0].max_error_px, r->rows[0].p95_error_px);
     // With straight rays POV-Ray and the tracer draw the same picture, near enough.
     ASSERT_TRUE(r->straight_rmse);
@@ -87,15 +93,17 @@ TEST(Compare, SweepsTheDesertAndWritesEveryOutput) {
     for (const char* column : {"model", "setting", "seconds", "rmse", "psnr", "max_error_px",
                                "share_over", "p95_error_px", "layers", "image"})
         EXPECT_GE(csv->column(column), 0) << column;
-    ASSERT_EQ(csv->rows.size(), 5u);
+    ASSERT_EQ(csv->rows.size(), 6u);
     const int model = csv->column("model"), setting = csv->column("setting");
     EXPECT_EQ(csv->rows[0].fields[model], "uniform-bands");
     EXPECT_EQ(csv->rows[0].fields[setting], "8");
     EXPECT_EQ(csv->rows[2].fields[model], "adaptive-bands");
     EXPECT_EQ(csv->rows[2].fields[setting], "1");
-    EXPECT_EQ(csv->rows[4].fields[model], "polyline");
-    EXPECT_EQ(csv->rows[4].fields[setting], "0.5");
-    EXPECT_EQ(csv->rows[3].fields[csv->column("layers")], "");
+    EXPECT_EQ(csv->rows[3].fields[model], "corrected-bands");
+    EXPECT_EQ(csv->rows[3].fields[setting], "12");
+    EXPECT_EQ(csv->rows[5].fields[model], "polyline");
+    EXPECT_EQ(csv->rows[5].fields[setting], "0.5");
+    EXPECT_EQ(csv->rows[4].fields[csv->column("layers")], "");
     auto rmse = csv_number(*csv, csv->rows[1], csv->column("rmse"));
     ASSERT_TRUE(rmse.ok());
     // Written to 6 significant digits: within half a unit of the sixth.
@@ -126,10 +134,16 @@ TEST(Compare, SweepsTheDesertAndWritesEveryOutput) {
     for (const auto& e : fs::recursive_directory_iterator(dir))
         EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
     // One progress line per setting, for the reference and the straight rays, and per note.
-    EXPECT_EQ(progress.size(), 1u + 1u + 5u + 2u) << ::testing::PrintToString(progress);
+    EXPECT_EQ(progress.size(), 1u + 1u + 6u + 2u) << ::testing::PrintToString(progress);
     EXPECT_EQ(progress[2].rfind("uniform 8 layers: POV-Ray ", 0), 0u) << progress[2];
     EXPECT_EQ(progress[5].rfind("index-step-bands: not run", 0), 0u) << progress[5];
     EXPECT_EQ(progress[6].rfind("adaptive 1 px: ", 0), 0u) << progress[6];
+    EXPECT_EQ(std::count_if(progress.begin(), progress.end(),
+                            [](const std::string& l) {
+                                return l.rfind("corrected 12 layers: POV-Ray ", 0) == 0;
+                            }),
+              1)
+        << ::testing::PrintToString(progress);
 }
 
 // Real air's own design in the sweep: equal index steps rendered by POV-Ray beside the uniform
@@ -148,6 +162,7 @@ TEST(Compare, RealAirSweepsItsIndexSteps) {
     o.counts = {8};
     o.steps = {64, 8};
     o.tolerances = {1, 0.5};
+    o.corrected_counts = {};
     o.trace_tolerances = {1};
     auto r = run_comparison(o);
     ASSERT_TRUE(r.ok()) << r.message();

@@ -131,7 +131,9 @@ TEST(DesignLayers, NoAtmosphereNoLayersAndNoBendNoLayers) {
 }
 
 TEST(DesignLayers, FitsWithinTheTraceLevelCeiling) {
-    auto ctx = compile_settings(options_for("design_fit", kPaper, 40, 30));
+    CompileOptions o = options_for("design_fit", kPaper, 40, 30);
+    o.camera = CameraModel::Perspective;  // the fit to the scene's own camera
+    auto ctx = compile_settings(o);
     ASSERT_TRUE(ctx.ok()) << ctx.message();
     const CameraRays rays = camera_rays(*ctx, 1);
     auto d = design_layers(*ctx, rays);
