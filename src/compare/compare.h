@@ -16,12 +16,12 @@
 namespace mirage {
 
 enum class CompareModel {
-    UniformBands,   // Berger, Trout & Levit's equal layers, rendered by POV-Ray
-    AdaptiveBands,  // layers fitted to the scene's rays, rendered by POV-Ray
-    IndexStepBands, // real air's layers at equal steps of the index, rendered by POV-Ray
-    CorrectedBands, // the corrected camera: every pixel aimed through N layers (POV-Ray)
-    Polyline,       // the tracer along every ray's own path
-    Scanline,       // the tracer along one path per image row (Khote & Howard)
+    UniformBands,    // Berger, Trout & Levit's equal layers, rendered by POV-Ray
+    AdaptiveBands,   // layers fitted to the scene's rays, rendered by POV-Ray
+    IndexStepBands,  // real air's layers at equal steps of the index, rendered by POV-Ray
+    CorrectedBands,  // the corrected camera: every pixel aimed through N layers (POV-Ray)
+    Polyline,        // the tracer along every ray's own path
+    Scanline,        // the tracer along one path per image row (Khote & Howard)
 };
 
 /// "uniform-bands", "adaptive-bands", "index-step-bands", "corrected-bands", "polyline",
@@ -40,7 +40,7 @@ struct CompareOptions {
     double reference_tolerance_px = 0.02;  // the reference's path tolerance, pixels
     std::vector<int> counts;  // uniform layer counts; empty: 8, 16, 32, ... doubling until
                               // a count exceeds the trace-level budget (at most 4096)
-    std::vector<double> tolerances = {4, 2, 1, 0.5, 0.25, 0.1};        // adaptive layers, px
+    std::vector<double> tolerances = {4, 2, 1, 0.5, 0.25, 0.1};  // adaptive layers, px
     std::vector<int> steps;  // index steps (real air only); empty: 8, 16, ... 256 doubling
                              // while a design stays within the trace-level budget
     std::vector<int> corrected_counts = {6, 12, 24, 48};  // layers of the corrected camera

@@ -211,12 +211,12 @@ std::string gnuplot_script(const CompareResult& result) {
        << "set key top right box opaque noenhanced\n"
        << "set offsets graph 0.05, graph 0.12, graph 0.1, graph 0.05\n";
     const std::map<CompareModel, std::pair<std::string, std::string>> style = {
-        {CompareModel::UniformBands, {"#d62728", "7"}},   // red, filled circles
-        {CompareModel::AdaptiveBands, {"#1f77b4", "5"}},  // blue, filled squares
-        {CompareModel::IndexStepBands, {"#ff7f0e", "13"}}, // orange, filled diamonds
-        {CompareModel::CorrectedBands, {"#17becf", "15"}}, // cyan, filled pentagons
-        {CompareModel::Polyline, {"#2ca02c", "9"}},       // green, filled triangles
-        {CompareModel::Scanline, {"#9467bd", "11"}},      // purple, filled triangles down
+        {CompareModel::UniformBands, {"#d62728", "7"}},     // red, filled circles
+        {CompareModel::AdaptiveBands, {"#1f77b4", "5"}},    // blue, filled squares
+        {CompareModel::IndexStepBands, {"#ff7f0e", "13"}},  // orange, filled diamonds
+        {CompareModel::CorrectedBands, {"#17becf", "15"}},  // cyan, filled pentagons
+        {CompareModel::Polyline, {"#2ca02c", "9"}},         // green, filled triangles
+        {CompareModel::Scanline, {"#9467bd", "11"}},        // purple, filled triangles down
     };
     const std::map<CompareModel, std::string> titles = {
         {CompareModel::UniformBands, "uniform-bands (POV-Ray, N equal layers)"},
@@ -309,16 +309,14 @@ std::string summary_markdown(const CompareResult& r) {
         const EqualError& e = *h.corrected_vs_uniform;
         md << "- **The corrected camera against uniform layers:** at RMSE " << rmse_text(e.error)
            << ", uniform layers take " << describe_time(e.a) << " and the corrected camera "
-           << describe_time(e.b) << ": " << describe_ratio(e, "the corrected camera is")
-           << ".\n";
+           << describe_time(e.b) << ": " << describe_ratio(e, "the corrected camera is") << ".\n";
         render_line(hr.corrected_vs_uniform, "the corrected camera");
     }
     if (h.corrected_vs_adaptive) {
         const EqualError& e = *h.corrected_vs_adaptive;
-        md << "- **The corrected camera against adaptive layers:** at RMSE "
-           << rmse_text(e.error) << ", adaptive layers take " << describe_time(e.a)
-           << " and the corrected camera " << describe_time(e.b) << ": "
-           << describe_ratio(e, "the corrected camera is") << ".\n";
+        md << "- **The corrected camera against adaptive layers:** at RMSE " << rmse_text(e.error)
+           << ", adaptive layers take " << describe_time(e.a) << " and the corrected camera "
+           << describe_time(e.b) << ": " << describe_ratio(e, "the corrected camera is") << ".\n";
         render_line(hr.corrected_vs_adaptive, "the corrected camera");
     }
     if (h.tracer_vs_adaptive) {

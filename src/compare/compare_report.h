@@ -29,11 +29,11 @@ std::vector<TradeoffPoint> model_front(const std::vector<CompareRow>& rows, Comp
 
 /// The figures at equal error the summary leads with (empty where a model has no row).
 struct Headlines {
-    std::optional<EqualError> adaptive_vs_uniform;  // a: uniform, b: adaptive
-    std::optional<EqualError> tracer_vs_adaptive;   // a: adaptive, b: polyline
-    std::optional<EqualError> tracer_vs_uniform;    // a: uniform, b: polyline
-    std::optional<EqualError> steps_vs_uniform;     // a: uniform, b: index steps
-    std::optional<EqualError> tracer_vs_steps;      // a: index steps, b: polyline
+    std::optional<EqualError> adaptive_vs_uniform;    // a: uniform, b: adaptive
+    std::optional<EqualError> tracer_vs_adaptive;     // a: adaptive, b: polyline
+    std::optional<EqualError> tracer_vs_uniform;      // a: uniform, b: polyline
+    std::optional<EqualError> steps_vs_uniform;       // a: uniform, b: index steps
+    std::optional<EqualError> tracer_vs_steps;        // a: index steps, b: polyline
     std::optional<EqualError> corrected_vs_uniform;   // a: uniform, b: corrected camera
     std::optional<EqualError> corrected_vs_adaptive;  // a: adaptive, b: corrected camera
 };

@@ -209,7 +209,8 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Layer
     rep.camera_samples = static_cast<int>(samples.size());
     // The trace levels of the rays POV-Ray shoots now.
     CameraRays shot;
-    for (const auto& d : ms.samples) shot.direction.insert(shot.direction.end(), d.begin(), d.end());
+    for (const auto& d : ms.samples)
+        shot.direction.insert(shot.direction.end(), d.begin(), d.end());
     rep.max_trace_level = deepest_trace_level(ctx, ctx.rendered(design_stack), shot);
     if (rep.max_trace_level > kMaxTraceLevel)
         rep.warnings.push_back("some of the aimed rays reach POV-Ray's trace-level ceiling (" +
@@ -294,8 +295,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     for (const auto& w : design.warnings) rep.warnings.push_back(w);
     // The corrected camera: POV-Ray's rays aimed through the layers (stage "camera"), for a
     // camera with one eye and layers to aim through.
-    const bool corrected = opt.camera == CameraModel::Corrected && !ctx.many_origins &&
-                           stack.boundaries() > 0;
+    const bool corrected =
+        opt.camera == CameraModel::Corrected && !ctx.many_origins && stack.boundaries() > 0;
     // (With many origins the design's errors are the check's at the pixel centres, below:
     // the errors at the scene's edge are angles seen from one eye.  With the corrected camera
     // they are the check's too: the camera's own rays are not what POV-Ray shoots.)
@@ -371,8 +372,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         "Do not edit: run mirage compile again."};
     EmittedFiles files;
     if (!corrected) {
-        files = emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path,
-                           header);
+        files =
+            emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path, header);
         clock.done("emit");
     }
     rep.camera = corrected ? "corrected" : "perspective";
@@ -417,9 +418,10 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             rep.max_crossings = a.max_crossings;
             reach = std::min(reach, std::max(1.1 * ctx.extent, 1.1 * a.last_event));
             if (reach_below)
-                reach_below = 1.1 * a.last_event > reach
-                                  ? std::optional<double>(std::min(*reach_below, 1.1 * a.last_event))
-                                  : std::nullopt;
+                reach_below =
+                    1.1 * a.last_event > reach
+                        ? std::optional<double>(std::min(*reach_below, 1.1 * a.last_event))
+                        : std::nullopt;
             files = emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path,
                                header);
             // The design's errors at the scene's edge are those of the camera's own rays:
@@ -427,8 +429,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             rep.rows_over.clear();
             rep.pixels_over = 0;
             summarize_design_errors(
-                std::vector<double>(rep.pixel_error_px.begin(), rep.pixel_error_px.end()),
-                centres, st.tolerance_px, rep);
+                std::vector<double>(rep.pixel_error_px.begin(), rep.pixel_error_px.end()), centres,
+                st.tolerance_px, rep);
             rep.within_tolerance =
                 rep.within_tolerance && rep.max_seen_error_px_samples <= st.tolerance_px;
             clock.done("check");

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <limits>
-#include <thread>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
+#include <thread>
 
 #include "scene/camera.h"
 #include "trace/curved_propagator.h"
@@ -164,12 +164,10 @@ PixelEnds band_against_exact(const LayerStack& rendered, const Scene& scene,
 
 PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
                      const ObjectQuery& objects, const CurvedPropagator& exact,
-                     const PixelCheckSettings& s, size_t i, const glm::dvec3& dir,
-                     double pixel_rad, std::vector<glm::dvec3>& candidates,
-                     glm::dvec3* chosen) {
+                     const PixelCheckSettings& s, size_t i, const glm::dvec3& dir, double pixel_rad,
+                     std::vector<glm::dvec3>& candidates, glm::dvec3* chosen) {
     const RayEnd e = exact_end(exact, accel, s.eye, dir, 0.0);
-    if (!s.aim)
-        return band_against_exact(rendered, scene, accel, objects, exact, s, dir, e);
+    if (!s.aim) return band_against_exact(rendered, scene, accel, objects, exact, s, dir, e);
     candidates.clear();
     s.aim.candidates(i, dir, ExactEnd{e.hit, e.point, e.direction}, candidates);
     MIRAGE_CHECK(!candidates.empty());
@@ -184,12 +182,11 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
         if (have && !best.cut_off && best.camera_error_rad <= same) break;
         const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
         if (p.cut_off && have) continue;
-        const bool better =
-            !have || (best.cut_off && !p.cut_off) ||
-            p.camera_error_rad < best.camera_error_rad - same ||
-            (p.camera_error_rad <= best.camera_error_rad + same &&
-             std::max(p.camera_error_rad, p.reflection_error_rad) <
-                 std::max(best.camera_error_rad, best.reflection_error_rad));
+        const bool better = !have || (best.cut_off && !p.cut_off) ||
+                            p.camera_error_rad < best.camera_error_rad - same ||
+                            (p.camera_error_rad <= best.camera_error_rad + same &&
+                             std::max(p.camera_error_rad, p.reflection_error_rad) <
+                                 std::max(best.camera_error_rad, best.reflection_error_rad));
         if (better) {
             best = p;
             have = true;
@@ -215,15 +212,23 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
         best = p;
         *chosen = *c;
     }
-    if (std::getenv("MIRAGE_DEBUG_AIM") && best.camera_error_rad > std::atof(std::getenv("MIRAGE_DEBUG_AIM")) * pixel_rad) {
-        std::fprintf(stderr, "ray %zu: exact hit %d at (%.9g %.9g %.9g) dir (%g %g %g); %zu candidates, best camera err %g px refl %g\n",
-                     i, e.hit, e.point.x, e.point.y, e.point.z, e.direction.x, e.direction.y, e.direction.z,
-                     candidates.size(), best.camera_error_rad/pixel_rad, best.reflection_error_rad/pixel_rad);
+    if (std::getenv("MIRAGE_DEBUG_AIM") &&
+        best.camera_error_rad > std::atof(std::getenv("MIRAGE_DEBUG_AIM")) * pixel_rad) {
+        std::fprintf(stderr,
+                     "ray %zu: exact hit %d at (%.9g %.9g %.9g) dir (%g %g %g); %zu candidates, "
+                     "best camera err %g px refl %g\n",
+                     i, e.hit, e.point.x, e.point.y, e.point.z, e.direction.x, e.direction.y,
+                     e.direction.z, candidates.size(), best.camera_error_rad / pixel_rad,
+                     best.reflection_error_rad / pixel_rad);
         for (const auto& c : candidates) {
             const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
             RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, c, s.layers, s.layers_below);
-            std::fprintf(stderr, "   cand (%.9g %.9g %.9g): err %g px cut %d hit %d at (%.9g %.9g %.9g) prim %d dir (%g %g %g)\n", c.x, c.y, c.z,
-                         p.camera_error_rad/pixel_rad, p.cut_off, b.hit, b.point.x, b.point.y, b.point.z, b.primitive, b.direction.x, b.direction.y, b.direction.z);
+            std::fprintf(stderr,
+                         "   cand (%.9g %.9g %.9g): err %g px cut %d hit %d at (%.9g %.9g %.9g) "
+                         "prim %d dir (%g %g %g)\n",
+                         c.x, c.y, c.z, p.camera_error_rad / pixel_rad, p.cut_off, b.hit, b.point.x,
+                         b.point.y, b.point.z, b.primitive, b.direction.x, b.direction.y,
+                         b.direction.z);
         }
     }
     return best;
@@ -420,9 +425,9 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
             std::vector<glm::dvec3> candidates;
             for (size_t i = static_cast<size_t>(row) * W; i < static_cast<size_t>(row + 1) * W; ++i)
                 if (!cut_off[i])
-                    ends[i] = pixel_ends(rendered, scene, accel, objects, exact, s, i,
-                                         directions[i], pixel_rad[i], candidates,
-                                         &out.band_direction[i]);
+                    ends[i] =
+                        pixel_ends(rendered, scene, accel, objects, exact, s, i, directions[i],
+                                   pixel_rad[i], candidates, &out.band_direction[i]);
             bar.advance();
         },
         0, 1);

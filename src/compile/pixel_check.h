@@ -41,8 +41,7 @@ struct BandAim {
     /// The direction whose band path passes where the exact path is at horizontal distance
     /// r from the eye: tried when the best so far meets something at r that the exact ray
     /// passes by (a band path a little off the exact one near an object's edge).
-    std::function<std::optional<glm::dvec3>(size_t i, const glm::dvec3& exact_direction,
-                                            double r)>
+    std::function<std::optional<glm::dvec3>(size_t i, const glm::dvec3& exact_direction, double r)>
         through;
     explicit operator bool() const { return static_cast<bool>(candidates); }
 };

@@ -14,8 +14,9 @@ std::string report_verdict(const CompileReport& r) {
     if (r.within_tolerance)
         return "within the tolerance of " + sig(r.tolerance_px, 3) +
                " px: every pixel's ray ends within it of its exact ray's end";
-    std::string s = "missed the tolerance of " + sig(r.tolerance_px, 3) + " px: " +
-                    sig(100.0 * r.pixels_over / std::max(1, r.pixels), 3) + "% of pixels over it";
+    std::string s = "missed the tolerance of " + sig(r.tolerance_px, 3) +
+                    " px: " + sig(100.0 * r.pixels_over / std::max(1, r.pixels), 3) +
+                    "% of pixels over it";
     auto rows = r.rows_over;
     std::sort(rows.begin(), rows.end(), [](const RowExcess& a, const RowExcess& b) {
         return a.max_error_px > b.max_error_px;
@@ -108,7 +109,9 @@ std::string report_json(const CompileReport& r) {
         j["camera_samples_per_pixel"] = r.camera_samples;
         j["camera_include"] = r.camera_path;
         j["render_scene"] = r.render_scene_path;
-        auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf"); };
+        auto num = [](double v) {
+            return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf");
+        };
         j["p95_camera_error_px"] = num(r.p95_camera_error_px);
         j["max_camera_error_px"] = num(r.max_camera_error_px);
         j["p95_camera_error_px_samples"] = num(r.p95_camera_error_px_samples);
@@ -176,15 +179,14 @@ std::string report_text(const CompileReport& r) {
         s << "  camera      corrected: every pixel's ray aimed through the layers to its exact "
              "end ("
           << r.camera_samples << (r.camera_samples == 1 ? " ray" : " rays")
-          << " per pixel); without reflections p95 " << sig(r.p95_camera_error_px, 3)
-          << " px, max " << sig(r.max_camera_error_px, 3) << " px (samples: p95 "
+          << " per pixel); without reflections p95 " << sig(r.p95_camera_error_px, 3) << " px, max "
+          << sig(r.max_camera_error_px, 3) << " px (samples: p95 "
           << sig(r.p95_camera_error_px_samples, 3) << " px, max "
           << sig(r.max_camera_error_px_samples, 3) << " px)\n";
     s << "  wrote       " << r.include_path << "\n              " << r.ini_path
       << "\n              " << r.csv_path << "\n              " << r.report_path << "\n";
     if (r.camera == "corrected")
-        s << "              " << r.camera_path << "\n              " << r.render_scene_path
-          << "\n";
+        s << "              " << r.camera_path << "\n              " << r.render_scene_path << "\n";
     s << "  time        " << sig(r.seconds, 3) << " s";
     if (!r.stage_seconds.empty()) {
         s << " (";

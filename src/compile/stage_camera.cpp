@@ -30,10 +30,9 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
         const double pixel = rays.pixel_rad[i];
         // A thousandth of a pixel, as a height at r.
         const double tolerance = std::max(1e-3 * pixel * r, 1e-12 * (1.0 + std::fabs(y)));
-        const double guess =
-            rays.elevation[i] + (i % grid_width != 0 ? (*offsets)[i - 1] : 0.0);
-        auto e = elevation_through(*walk, r, y, guess, pixel, tolerance,
-                                   std::min(0.5, 2000.0 * pixel));
+        const double guess = rays.elevation[i] + (i % grid_width != 0 ? (*offsets)[i - 1] : 0.0);
+        auto e =
+            elevation_through(*walk, r, y, guess, pixel, tolerance, std::min(0.5, 2000.0 * pixel));
         if (!e && guess != rays.elevation[i])
             e = elevation_through(*walk, r, y, rays.elevation[i], pixel, tolerance,
                                   std::min(0.5, 2000.0 * pixel));
@@ -44,15 +43,14 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
     };
     // The exact path's height at horizontal distance r (NaN past its ground).
     auto exact_height = [&ctx, &rays](size_t i, double r) {
-        const BandOutcome o = ctx.air
-                                  ? exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], r)
-                                  : exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], r);
+        const BandOutcome o = ctx.air ? exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], r)
+                                      : exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], r);
         return o.ground ? std::numeric_limits<double>::quiet_NaN() : o.y;
     };
     BandAim aim;
     aim.candidates = [&rays, eye, walk, through, exact_height](size_t i, const glm::dvec3& d,
-                                                         const ExactEnd& end,
-                                                         std::vector<glm::dvec3>& out) {
+                                                               const ExactEnd& end,
+                                                               std::vector<glm::dvec3>& out) {
         const double hl = std::hypot(d.x, d.z);
         if (end.hit) {
             // Through the surface the exact ray meets.

@@ -13,8 +13,8 @@
 #include "layers/fit.h"
 #include "layers/outcome.h"
 #include "layers/revolution.h"
-#include "util/format.h"
 #include "util/check.h"
+#include "util/format.h"
 #include "util/parallel.h"
 
 namespace mirage {
@@ -180,9 +180,9 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
     // The corrected camera aims every ray where its exact ray ends: the layers carry only the
     // paths' smooth part, and its rays' trace levels are measured when they are aimed.
     const bool corrected = ctx.options.camera == CameraModel::Corrected;
-    int count = uniform ? st.layer_count
-                        : (st.layer_count > 0 ? st.layer_count
-                                              : (corrected ? kCorrectedCameraLayers : 64));
+    int count =
+        uniform ? st.layer_count
+                : (st.layer_count > 0 ? st.layer_count : (corrected ? kCorrectedCameraLayers : 64));
     for (int attempt = 0; attempt < 12; ++attempt) {
         std::vector<double> h =
             uniform ? equal_height_boundaries(top, count)
@@ -227,8 +227,7 @@ LayerStack corrected_camera_layers(const Profile& profile, double eye_y, int cou
     for (int k = 1; k <= below; ++k) {
         const double f = k / (below + 0.5);
         s.heights.push_back(height_of_excess(profile, ex0 + f * (ex_eye - ex0)));
-        if (k < below)
-            s.excess.push_back(ex0 + (k + 0.5) / (below + 0.5) * (ex_eye - ex0));
+        if (k < below) s.excess.push_back(ex0 + (k + 0.5) / (below + 0.5) * (ex_eye - ex0));
     }
     s.excess.push_back(ex_eye);
     // Above: from half a step over the eye up to `top`; the half-space over them holds

@@ -148,8 +148,8 @@ std::optional<double> elevation_through(const BandWalk& walk, double r, double y
                 if (side == 1) fa *= 0.5;
                 side = 1;
             }
-            if (std::fabs(b - a) <= 4.0 * std::numeric_limits<double>::epsilon() *
-                                         std::max(std::fabs(a), std::fabs(b)))
+            if (std::fabs(b - a) <=
+                4.0 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(a), std::fabs(b)))
                 return std::nullopt;
         }
         return std::nullopt;

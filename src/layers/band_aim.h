@@ -14,10 +14,9 @@
 // without bound (docs/band_designs.md).
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "layers/revolution.h"
 

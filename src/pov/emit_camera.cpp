@@ -79,8 +79,8 @@ std::string mesh_camera_include(const MeshCameraSettings& st) {
     }
     out += "#declare Mirage_Camera = camera {\n    mesh_camera {\n        ";
     out += std::to_string(st.samples.size()) + " 0\n";
-    const std::string eye = "<" + sig(st.eye.x, 17) + ", " + sig(st.eye.y, 17) + ", " +
-                            sig(st.eye.z, 17) + ">";
+    const std::string eye =
+        "<" + sig(st.eye.x, 17) + ", " + sig(st.eye.y, 17) + ", " + sig(st.eye.z, 17) + ">";
     for (size_t m = 0; m < st.samples.size(); ++m)
         out += "        mesh { Mirage_Camera_Mesh_" + std::to_string(m) + " scale " + kMeshScale +
                " translate " + eye + " }\n";

@@ -13,10 +13,9 @@
 // one row taller and the top row dropped (crop_mesh_camera_render).
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "util/result.h"
 
@@ -35,9 +34,9 @@ struct MeshCameraSettings {
 std::string mesh_camera_include(const MeshCameraSettings& settings);
 
 struct RenderSceneSettings {
-    std::string scene;          // the template, absolute
-    std::string camera_include; // file name of the mesh camera's include (found on the path)
-    int width = 0, height = 0;  // the image the camera was solved for
+    std::string scene;                // the template, absolute
+    std::string camera_include;       // file name of the mesh camera's include (found on the path)
+    int width = 0, height = 0;        // the image the camera was solved for
     std::vector<std::string> header;  // comment lines at the top
 };
 

@@ -46,7 +46,7 @@ TEST(BandWalk, HeightsAreTheVectorTracersOnEverySheet) {
         for (int i = 0; i < 2000; ++i) {
             const double e = el(rng), at = dist(rng);
             const MeridianPath p = trace_meridian(r, e, at, 100000, true);
-            if (p.cut_off || p.ground) continue;  // the walk continues below the ground
+            if (p.cut_off || p.ground) continue;    // the walk continues below the ground
             const double want = p.points.back().y;  // traced to `at`
             EXPECT_NEAR(walk.height_at(e, at), want, 1e-9 * (1.0 + at)) << e << " at " << at;
             if (walk.turns_before(e, at) > 0) ++turned;

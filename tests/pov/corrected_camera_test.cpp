@@ -97,13 +97,14 @@ TEST(CorrectedCamera, MeshCarryingThePerspectiveRaysRendersThePerspectiveImage) 
     rs.width = W;
     rs.height = H;
     // The template never includes mirage.inc: declare what it would.
-    write(dir / "render.pov",
-          "#declare Mirage_Inc_Temp = 1;\n" + render_scene(rs));
-    ASSERT_TRUE(povray(dir, "-A +W" + std::to_string(W) + " +H" + std::to_string(H) +
-                                " +Iwide.pov +Operspective.png",
-                       "perspective.log"));
-    ASSERT_TRUE(povray(dir, "-A +W" + std::to_string(W) + " +H" + std::to_string(H + 1) +
-                                " +L" + q(dir) + " +Irender.pov +Omesh.png",
+    write(dir / "render.pov", "#declare Mirage_Inc_Temp = 1;\n" + render_scene(rs));
+    ASSERT_TRUE(povray(
+        dir,
+        "-A +W" + std::to_string(W) + " +H" + std::to_string(H) + " +Iwide.pov +Operspective.png",
+        "perspective.log"));
+    ASSERT_TRUE(povray(dir,
+                       "-A +W" + std::to_string(W) + " +H" + std::to_string(H + 1) + " +L" +
+                           q(dir) + " +Irender.pov +Omesh.png",
                        "mesh.log"))
         << read_text(dir / "mesh.log");
     ASSERT_TRUE(crop_mesh_camera_render((dir / "mesh.png").string()).ok());
@@ -223,9 +224,10 @@ TEST_P(FlatScenes, PovRayShowsTheSurfacesTheExactRaysMeet) {
         ASSERT_EQ(img->height, H);
         wrong[k] = wrong_surface(*img, exact);
     }
-    std::printf("%s: %d pixels on another surface through the corrected camera, %d through the "
-                "scene's own\n",
-                GetParam().first, wrong[0], wrong[1]);
+    std::printf(
+        "%s: %d pixels on another surface through the corrected camera, %d through the "
+        "scene's own\n",
+        GetParam().first, wrong[0], wrong[1]);
     // At most 0.2 % of the pixels (issue 26's target), and fewer than the perspective
     // camera's.
     EXPECT_LE(wrong[0], W * H / 500) << "see " << dir;
@@ -237,7 +239,6 @@ INSTANTIATE_TEST_SUITE_P(CorrectedCamera, FlatScenes,
                                            std::pair{"tilted", kFlatTilted},
                                            std::pair{"superior", kFlatSuperior}),
                          [](const auto& info) { return std::string(info.param.first); });
-
 
 TEST(CorrectedCamera, ARenderOfAnotherSizeStopsWithBothSizes) {
     if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
