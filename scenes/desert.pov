@@ -4,7 +4,7 @@
 // stretched copy of the spheres and the sky below the horizon) shows within a few metres.
 //
 //   make render                          (this scene is the default)
-//   povray -D scenes/desert.pov          (plain POV-Ray: no atmosphere, with a warning)
+//   povray -D +Lpov_includes scenes/desert.pov  (plain POV-Ray: no atmosphere, a warning)
 #version 3.7;
 
 #declare Mirage_Preset    = "paper";

@@ -7,7 +7,7 @@
 //
 //   make animate                                   (this scene is the default, 24 frames)
 //   build/mirage animate scenes/walk.pov --frames 48 -W 320 -H 240 --model trace
-//   povray -D +KFF48 scenes/walk.pov               (plain POV-Ray: no atmosphere, a warning)
+//   povray -D +KFF48 +Lpov_includes scenes/walk.pov  (plain POV-Ray: no atmosphere, a warning)
 //
 // The spheres' bottoms are above the eye: a camera ray that leaves the eye downwards can meet
 // them only after its turn, so every pixel of theirs below the horizon is mirrored.  They are
