@@ -220,8 +220,6 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Layer
     rep.camera_path = (dir / "mirage_camera.inc").string();
     rep.render_scene_path = (dir / (rep.name + "_render.pov")).string();
     const std::string scene_abs = fs::absolute(opt.scene).string();
-    for (const std::string& p : {scene_abs, rep.camera_path, rep.image_path})
-        if (auto lit = pov_string_literal(p); !lit) return make_error(lit.message());
     RenderSceneSettings rs;
     rs.scene = scene_abs;
     rs.camera_include = rep.camera_path;
@@ -346,34 +344,36 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         summarize_design_errors(std::vector<double>(centres.size(), 0.0), centres, st.tolerance_px,
                                 rep);
     }
-    const fs::path dir =
-        opt.out_dir.empty() ? fs::path("build/render") / rep.name : fs::path(opt.out_dir);
-    if (auto s = folders.make(dir.string()); !s) return s.error();
-    const fs::path abs_dir = fs::absolute(dir);
+    // (compile_settings checked these paths for POV-Ray.)
+    const fs::path abs_dir = ctx.out_dir;
+    if (auto s = folders.make(ctx.out_dir); !s) return s.error();
     rep.include_path = (abs_dir / "mirage_layers.inc").string();
     rep.csv_path = (abs_dir / "layers.csv").string();
     rep.ini_path = (abs_dir / (rep.name + ".ini")).string();
     rep.report_path = (abs_dir / "report.json").string();
-    rep.image_path = opt.image.empty() ? (abs_dir / (rep.name + ".png")).string()
-                                       : fs::absolute(opt.image).string();
+    rep.image_path = ctx.image;
     if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
-    const std::vector<std::string> header = {
-        "mirage_layers.inc: the banded atmosphere of " + escape_control(rep.name) + " at " +
-            std::to_string(opt.width) + "x" + std::to_string(opt.height) +
-            ", written by mirage compile.",
-        "Atmosphere: " + escape_control(rep.atmosphere) + "; " + rep.mode + " layers.",
-        ctx.many_origins
-            ? "The camera's rays start at different points: every pixel's error, from its own "
-              "origin, is in report.json (tolerance " +
-                  sig(rep.tolerance_px, 3) + " px)."
-            : "Error over the " + std::to_string(rep.pixels) + " pixel centres: p50 " +
-                  sig(rep.p50_error_px, 3) + " px, p95 " + sig(rep.p95_error_px, 3) + " px, max " +
-                  sig(rep.max_error_px, 3) + " px (tolerance " + sig(rep.tolerance_px, 3) + " px).",
-        "Do not edit: run mirage compile again."};
+    // The include's header, once the pixel centres' errors are known.
+    auto header = [&] {
+        return std::vector<std::string>{
+            "mirage_layers.inc: the banded atmosphere of " + escape_control(rep.name) + " at " +
+                std::to_string(opt.width) + "x" + std::to_string(opt.height) +
+                ", written by mirage compile.",
+            "Atmosphere: " + escape_control(rep.atmosphere) + "; " + rep.mode + " layers.",
+            ctx.many_origins
+                ? "The camera's rays start at different points: every pixel's error, from its own "
+                  "origin, is in report.json (tolerance " +
+                      sig(rep.tolerance_px, 3) + " px)."
+                : "Error over the " + std::to_string(rep.pixels) + " pixel centres: p50 " +
+                      sig(rep.p50_error_px, 3) + " px, p95 " + sig(rep.p95_error_px, 3) +
+                      " px, max " + sig(rep.max_error_px, 3) + " px (tolerance " +
+                      sig(rep.tolerance_px, 3) + " px).",
+            "Do not edit: run mirage compile again."};
+    };
     EmittedFiles files;
     if (!corrected) {
         files =
-            emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path, header);
+            emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path, header());
         clock.done("emit");
     }
     rep.camera = corrected ? "corrected" : "perspective";
@@ -412,7 +412,16 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             check_pixels(rendered, ctx.profile, ctx.scene, *ctx.accel, object_query(*ctx.accel),
                          rays.direction, rays.pixel_rad, cut_off, ps);
         summarize_check(pc, rays, st.tolerance_px, rep);
+        // The errors at the scene's edge are angles seen from one eye along the camera's own
+        // rays: with many origins, or the corrected camera's aimed rays, the pixel centres'
+        // errors are the check's.
+        if (ctx.many_origins || corrected) {
+            std::vector<double> err(rep.pixel_error_px.begin(), rep.pixel_error_px.end());
+            summarize_design_errors(err, centres, st.tolerance_px, rep);
+        }
         if (corrected) {
+            rep.within_tolerance =
+                rep.within_tolerance && rep.max_seen_error_px_samples <= st.tolerance_px;
             // The layers end where the aimed rays leave them.
             const AimedReach a = aimed_reach(ctx, rendered, pc.band_direction);
             rep.max_crossings = a.max_crossings;
@@ -423,24 +432,11 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                         ? std::optional<double>(std::min(*reach_below, 1.1 * a.last_event))
                         : std::nullopt;
             files = emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path,
-                               header);
-            // The design's errors at the scene's edge are those of the camera's own rays:
-            // what POV-Ray shows is what the check found.
-            rep.rows_over.clear();
-            rep.pixels_over = 0;
-            summarize_design_errors(
-                std::vector<double>(rep.pixel_error_px.begin(), rep.pixel_error_px.end()), centres,
-                st.tolerance_px, rep);
-            rep.within_tolerance =
-                rep.within_tolerance && rep.max_seen_error_px_samples <= st.tolerance_px;
+                               header());
             clock.done("check");
             auto cam = emit_corrected_camera(ctx, stack, rays, pc, abs_dir, rep, files);
             if (!cam) return cam.error();
             camera_text = std::move(*cam);
-        }
-        if (ctx.many_origins) {
-            std::vector<double> err(rep.pixel_error_px.begin(), rep.pixel_error_px.end());
-            summarize_design_errors(err, centres, st.tolerance_px, rep);
         }
     } else {
         const size_t n = static_cast<size_t>(opt.width) * opt.height;

@@ -196,15 +196,12 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     // A band path that meets something the exact path passes by (or passes what the exact
     // path meets): aimed again through the exact path's point at that distance, a few times.
     for (int round = 0; round < 4 && s.aim.through && best.camera_error_rad > same; ++round) {
-        const RayEnd& b = best.band;
-        const glm::dvec3 at = b.hit ? b.point : (e.hit ? e.point : glm::dvec3(0.0));
-        if (!b.hit && !e.hit) break;
-        double r = std::hypot(at.x - s.eye.x, at.z - s.eye.z);
-        if (b.hit && e.hit) {
-            const double rb = std::hypot(b.point.x - s.eye.x, b.point.z - s.eye.z);
-            const double re = std::hypot(e.point.x - s.eye.x, e.point.z - s.eye.z);
-            r = std::min(rb, re);
-        }
+        // The nearer of the two ends that lie on a surface.
+        double r = kInf;
+        for (const RayEnd* end : {static_cast<const RayEnd*>(&best.band), &e})
+            if (end->hit)
+                r = std::min(r, std::hypot(end->point.x - s.eye.x, end->point.z - s.eye.z));
+        if (!std::isfinite(r)) break;
         const auto c = s.aim.through(i, dir, r);
         if (!c) break;
         const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, *c, e);

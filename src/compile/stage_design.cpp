@@ -49,15 +49,21 @@ int trace_levels(const CompileContext& ctx, const LayerStack& stack, const Objec
     return deepest;
 }
 
-// The heights the camera's rays reach inside the scene, for Berger's layers.
-double top_reached(const CompileContext& ctx, const CameraRays& rays) {
+// The highest point the camera's exact rays (the exponential profiles) reach inside the
+// scene.
+double highest_reached(const CompileContext& ctx, const CameraRays& rays) {
     std::vector<double> top(rays.size(), ctx.eye_y);
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
         auto ex = make_exact_ray(ctx.profile, ctx.eye_y, M_PI / 2 - rays.elevation[i]);
         if (!ex) return;
         top[i] = height_at(*ex, std::min(rays.exit_dz[i], ex->hits_ground ? ex->dz_ground : kInf));
     });
-    double t = *std::max_element(top.begin(), top.end());
+    return *std::max_element(top.begin(), top.end());
+}
+
+// The heights the camera's rays reach inside the scene, for Berger's layers.
+double top_reached(const CompileContext& ctx, const CameraRays& rays) {
+    const double t = highest_reached(ctx, rays);
     return std::min(
         t, std::max(ctx.eye_y * 1.001,
                     height_of_excess(ctx.profile, eta_sq_excess(ctx.profile, kInf) * 0.99)));
@@ -69,18 +75,12 @@ double top_reached(const CompileContext& ctx, const CameraRays& rays) {
 // there turns by at most about sqrt(that) <= p / 10 more, the worst case being a level one
 // (e^2 grows by the excess gained).
 double corrected_camera_top(const CompileContext& ctx, const CameraRays& rays) {
-    std::vector<double> top(rays.size(), ctx.eye_y);
-    parallel_for(static_cast<long>(rays.size()), [&](long i) {
-        auto ex = make_exact_ray(ctx.profile, ctx.eye_y, M_PI / 2 - rays.elevation[i]);
-        if (!ex) return;
-        top[i] = height_at(*ex, std::min(rays.exit_dz[i], ex->hits_ground ? ex->dz_ground : kInf));
-    });
+    const double t = highest_reached(ctx, rays);
     double finest = kInf;
     for (double p : rays.pixel_rad) finest = std::min(finest, p);
     const double ex_inf = eta_sq_excess(ctx.profile, kInf);
     const double left = std::min(0.5 * std::fabs(ex_inf), 0.01 * finest * finest);
     const double flat = height_of_excess(ctx.profile, ex_inf - std::copysign(left, ex_inf));
-    const double t = *std::max_element(top.begin(), top.end());
     return std::max(ctx.eye_y * 1.001, std::min(t, std::isfinite(flat) ? flat : t));
 }
 

@@ -78,18 +78,17 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     ctx.name = fs::path(opt.scene).stem().string();
     // What the .ini names for POV-Ray (pov/emit_layers.h): the scene, the image, the include
     // folders, the output folder among them; refused before any work if POV-Ray cannot take
-    // one (compile_scene derives the same defaults).
+    // one.
     {
         const fs::path out_dir = fs::absolute(
             opt.out_dir.empty() ? fs::path("build/render") / ctx.name : fs::path(opt.out_dir));
-        const std::string image = opt.image.empty()
-                                      ? (out_dir.parent_path() / (ctx.name + ".png")).string()
+        ctx.out_dir = out_dir.string();
+        ctx.image = opt.image.empty() ? (out_dir / (ctx.name + ".png")).string()
                                       : fs::absolute(opt.image).string();
         if (auto s = check_povray_path(fs::absolute(opt.scene).string(), "the scene"); !s)
             return s.error();
-        if (auto s = check_povray_path(out_dir.string(), "the output folder (-o)"); !s)
-            return s.error();
-        if (auto s = check_povray_path(image, opt.image.empty() ? "the image" : "--image"); !s)
+        if (auto s = check_povray_path(ctx.out_dir, "the output folder (-o)"); !s) return s.error();
+        if (auto s = check_povray_path(ctx.image, opt.image.empty() ? "the image" : "--image"); !s)
             return s.error();
         for (const auto& l : opt.library_paths)
             if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s.error();

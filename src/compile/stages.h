@@ -72,6 +72,8 @@ struct CompileContext {
     double steepest_sine = 0.0;               // |sin(elevation)| of the steepest camera ray
     std::shared_ptr<const SceneAccel> accel;  // the scene's objects for the rays
     std::vector<std::string> library_paths;   // as the .ini will list them (absolute)
+    std::string out_dir;  // where the outputs go (absolute): -o, else build/render/<name>
+    std::string image;    // the image the .ini renders (absolute): --image, else in out_dir
     std::vector<std::string> left_out, warnings;
     // A camera whose rays start at different points (orthographic, cylinder 3 and 4): every
     // ray from its own origin, the layers at equal steps of the index over the heights the

@@ -2,10 +2,10 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "image/image_io.h"
 #include "layers/band_aim.h"
+#include "pov/povray_path.h"
 #include "util/check.h"
 #include "util/format.h"
 
@@ -88,32 +88,10 @@ std::string mesh_camera_include(const MeshCameraSettings& st) {
     return out;
 }
 
-Result<std::string> pov_string_literal(const std::string& text) {
-    std::string out = "\"";
-    for (unsigned char c : text) {
-        if (c < 0x20 || c == 0x7f) {
-            std::string shown;
-            for (unsigned char d : text) {
-                if (d < 0x20 || d == 0x7f) {
-                    char hex[8];
-                    std::snprintf(hex, sizeof hex, "\\x%02x", d);
-                    shown += hex;
-                } else {
-                    shown += static_cast<char>(d);
-                }
-            }
-            return make_error(shown + ": a POV-Ray string cannot hold a control character");
-        }
-        if (c == '"' || c == '\\') out += '\\';
-        out += static_cast<char>(c);
-    }
-    return out + "\"";
-}
-
 std::string render_scene(const RenderSceneSettings& st) {
-    // The caller checked that the paths are POV-Ray strings.
-    const std::string scene = *pov_string_literal(st.scene);
-    const std::string camera = *pov_string_literal(st.camera_include);
+    // Paths POV-Ray can take (check_povray_path): quoted, they are SDL strings too.
+    const std::string scene = povray_quoted(st.scene);
+    const std::string camera = povray_quoted(st.camera_include);
     std::string out;
     for (const auto& line : st.header) out += "// " + line + "\n";
     out += "#version 3.7;\n\n";

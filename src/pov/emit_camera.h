@@ -33,6 +33,7 @@ struct MeshCameraSettings {
 /// The text of mirage_camera.inc: the meshes and `#declare Mirage_Camera = camera {...}`.
 std::string mesh_camera_include(const MeshCameraSettings& settings);
 
+/// The paths must be ones POV-Ray can take (pov/povray_path.h, check_povray_path).
 struct RenderSceneSettings {
     std::string scene;                // the template, absolute
     std::string camera_include;       // file name of the mesh camera's include (found on the path)
@@ -45,10 +46,6 @@ struct RenderSceneSettings {
 /// mirage.inc or when the render's size is not the one the camera was solved for (that size
 /// with the extra top row).
 std::string render_scene(const RenderSceneSettings& settings);
-
-/// A POV-Ray string literal holding `text`: quotes and backslashes escaped; refused (nothing)
-/// when it holds a byte POV-Ray's strings cannot carry (a control character).
-Result<std::string> pov_string_literal(const std::string& text);
 
 /// Drops the top row of a PNG POV-Ray rendered through a mesh camera (see above), in place,
 /// through a temporary name.
