@@ -157,18 +157,6 @@ struct CameraTexts {
     std::string mesh, scene;
 };
 
-/// The samples of a pixel POV-Ray shoots through the corrected camera, as grid offsets
-/// within the pixel's per_side x per_side samples: the centre, and antialiased the four
-/// corner samples too (POV-Ray averages one mesh per sample).
-std::vector<std::pair<int, int>> shot_samples(int per_side, bool antialias) {
-    const int c = per_side / 2;
-    std::vector<std::pair<int, int>> s = {{c, c}};
-    if (antialias && per_side >= 3)
-        for (int dy : {0, per_side - 1})
-            for (int dx : {0, per_side - 1}) s.emplace_back(dx, dy);
-    return s;
-}
-
 /// The mesh camera for the check's chosen directions, and the scene and .ini that render
 /// through it (files.ini is replaced); names the outputs in the report.
 Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const LayerStack& design_stack,
@@ -178,17 +166,7 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Layer
     const CompileOptions& opt = ctx.options;
     const int W = rays.width, H = rays.height, k = rays.per_side, GW = rays.grid_width();
     const auto samples = shot_samples(k, opt.antialias);
-    // The mesh's text, about 60 bytes a face and POV-Ray's memory about 215 bytes a face
-    // (docs/band_designs.md): refused past the limit, with the figure.
-    const double faces = static_cast<double>(W) * H * samples.size();
-    if (faces > kMaxMeshCameraFaces)
-        return make_error("--width " + std::to_string(W) + " --height " + std::to_string(H) +
-                          (samples.size() > 1 ? " antialiased" : std::string()) +
-                          ": the corrected camera would need " + sig(faces, 3) +
-                          " mesh faces (about " + sig(faces * 215.0 / (1 << 30), 3) +
-                          " GiB of POV-Ray's memory), more than the limit of " +
-                          sig(kMaxMeshCameraFaces, 3) +
-                          ": render smaller, or use --camera perspective");
+    // (compile_settings refused meshes past kMaxMeshCameraFaces.)
     MeshCameraSettings ms;
     ms.width = W;
     ms.height = H;

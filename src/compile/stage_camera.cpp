@@ -77,6 +77,15 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
     return aim;
 }
 
+std::vector<std::pair<int, int>> shot_samples(int per_side, bool antialias) {
+    const int c = per_side / 2;
+    std::vector<std::pair<int, int>> s = {{c, c}};
+    if (antialias && per_side >= 3)
+        for (int dy : {0, per_side - 1})
+            for (int dx : {0, per_side - 1}) s.emplace_back(dx, dy);
+    return s;
+}
+
 AimedReach aimed_reach(const CompileContext& ctx, const LayerStack& rendered,
                        const std::vector<glm::dvec3>& directions) {
     const ObjectQuery objects = object_query(*ctx.accel);

@@ -139,6 +139,20 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
         if (!footprint) return make_error(place(ctx.camera.loc, scene.file) + footprint.message());
         ctx.footprint = *footprint;
     }
+    // The corrected camera's meshes, about 60 bytes of text and 215 bytes of POV-Ray's memory a
+    // face (../studies/mesh-camera): refused past the limit before any work, with the figure.
+    if (opt.camera == CameraModel::Corrected && !ctx.many_origins && ctx.settings.declared) {
+        const size_t samples = shot_samples(opt.samples_per_side, opt.antialias).size();
+        const double faces = static_cast<double>(opt.width) * opt.height * samples;
+        if (faces > kMaxMeshCameraFaces)
+            return make_error(
+                "--width " + std::to_string(opt.width) + " --height " + std::to_string(opt.height) +
+                (samples > 1 ? " antialiased" : std::string()) +
+                ": the corrected camera would need " + sig(faces, 3) + " mesh faces (about " +
+                sig(faces * 215.0 / (1 << 30), 3) +
+                " GiB of POV-Ray's memory), more than the limit of " + sig(kMaxMeshCameraFaces, 3) +
+                ": render smaller, or use --camera perspective");
+    }
     if (ctx.many_origins && opt.layout == "nested")
         return make_error(place(ctx.camera.loc, scene.file) + "the " +
                           camera_type_name(ctx.camera.type) +

@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compile/compile.h"
@@ -203,6 +204,11 @@ std::optional<double> layers_reach_below(const CompileContext& ctx, const LayerS
 /// precision of POV-Ray's mesh camera.  ctx and rays must outlive it.
 BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& rendered,
                              const CameraRays& rays);
+
+/// The samples of a pixel POV-Ray shoots through the corrected camera, as grid offsets within
+/// the pixel's per_side x per_side samples: the centre, and antialiased the four corner
+/// samples too (POV-Ray averages one mesh per sample).
+std::vector<std::pair<int, int>> shot_samples(int per_side, bool antialias);
 
 /// How far the aimed rays meet the layers.
 struct AimedReach {

@@ -232,6 +232,25 @@ TEST(Compile, PovRayRendersTheCompiledSceneWithinTheTraceLevelCeiling) {
     EXPECT_TRUE(fs::exists(r->image_path));
 }
 
+// A corrected camera whose meshes would pass the face limit is refused before any work, with
+// the figure, and nothing is written.
+TEST(Compile, ACorrectedCameraTooLargeIsRefusedAtOnce) {
+    const std::string dir = temp_dir("mesh_limit");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    CompileOptions o = options(scene, dir, 4000, 3000);
+    auto r = compile_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.message().find("--width 4000 --height 3000: the corrected camera would need "
+                               "1.2e+07 mesh faces"),
+              std::string::npos)
+        << r.message();
+    EXPECT_FALSE(fs::exists(o.out_dir));
+    o.camera = CameraModel::Perspective;  // the scene's own camera needs no mesh
+    o.width = 40;
+    o.height = 30;
+    EXPECT_TRUE(compile_scene(o).ok());
+}
+
 TEST(CompileCli, JsonReportHasTheRequiredKeys) {
     const std::string dir = temp_dir("cli");
     const std::string scene = write_scene(dir, "small.pov", kDesert);
