@@ -15,45 +15,36 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::quoted;
+using testing::read_bytes;
+using testing::write_bytes;
 using testing::run_tool;
 using testing::test_dir;
 
 const std::string kDesert = std::string(MIRAGE_SOURCE_DIR) + "/scenes/desert.pov";
 
-std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void write(const fs::path& p, const std::string& text) {
-    std::ofstream(p, std::ios::binary) << text;
-}
-
 /// Every file under `dir` and its content.
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
     std::map<std::string, std::string> files;
     for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read(e.path());
+        if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read_bytes(e.path());
     return files;
 }
 
 /// The desert scene with `from` replaced by `to`, as dir/name.
 fs::path desert_with(const fs::path& dir, const std::string& name, const std::string& from,
                      const std::string& to) {
-    std::string text = read(kDesert);
+    std::string text = read_bytes(kDesert);
     const auto at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
-    write(dir / name, text);
+    write_bytes(dir / name, text);
     return dir / name;
 }
 
 TEST(HostileCli, NoOutputReplacesAnInput) {
     const auto dir = test_dir("hostile_cli", "inputs");
     // The scene named like the image it is asked to write.
-    write(dir / "s.png", read(kDesert));
+    write_bytes(dir / "s.png", read_bytes(kDesert));
     auto before = snapshot(dir);
     auto r = run_tool("trace " + quoted(dir / "s.png") + " -o " + quoted(dir / "s.png") +
                       " -W 16 -H 12");
@@ -64,7 +55,7 @@ TEST(HostileCli, NoOutputReplacesAnInput) {
     EXPECT_EQ(snapshot(dir), before);
     // compile -o into the directory that holds the scene, named like one of its outputs.
     fs::create_directories(dir / "same");
-    write(dir / "same" / "layers.csv", read(kDesert));
+    write_bytes(dir / "same" / "layers.csv", read_bytes(kDesert));
     before = snapshot(dir);
     r = run_tool("compile " + quoted(dir / "same" / "layers.csv") + " -o " + quoted(dir / "same") +
                  " -W 16 -H 12");
@@ -74,7 +65,7 @@ TEST(HostileCli, NoOutputReplacesAnInput) {
                          "file it includes)\n");
     EXPECT_EQ(snapshot(dir), before);
     // The error map named like the scene, refused before any work.
-    write(dir / "s.exr", read(kDesert));
+    write_bytes(dir / "s.exr", read_bytes(kDesert));
     before = snapshot(dir);
     r = run_tool("compile " + quoted(dir / "s.exr") + " -o " + quoted(dir / "out") +
                  " -W 16 -H 12 --error-map " + quoted(dir / "s.exr"));
@@ -84,8 +75,8 @@ TEST(HostileCli, NoOutputReplacesAnInput) {
                          "file it includes)\n");
     EXPECT_EQ(snapshot(dir), before);
     // An included file is an input too.
-    write(dir / "air.inc", "#declare Mirage_Preset = \"paper\";\n");
-    write(dir / "inc.pov",
+    write_bytes(dir / "air.inc", "#declare Mirage_Preset = \"paper\";\n");
+    write_bytes(dir / "inc.pov",
           "#include \"air.inc\"\ncamera { location <0, 1.5, 0> look_at <0, 1.5, 1> }\n");
     before = snapshot(dir);
     r = run_tool("compile " + quoted(dir / "inc.pov") + " -o " + quoted(dir / "o") +
@@ -106,7 +97,7 @@ TEST(HostileCli, NoOutputReplacesAFontOrAnImageTheSceneUses) {
     // A font and an image map, named like the image asked for.
     fs::copy_file("/usr/share/povray-3.7/include/timrom.ttf", dir / "font.png",
                   fs::copy_options::overwrite_existing);
-    write(dir / "s.pov",
+    write_bytes(dir / "s.pov",
           "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
           "light_source { <2, 4, -3>, rgb 1 }\n"
           "text { ttf \"font.png\" \"A\" 0.2, 0 pigment { rgb 1 } }\n");
@@ -118,13 +109,13 @@ TEST(HostileCli, NoOutputReplacesAFontOrAnImageTheSceneUses) {
         << r.err;
     EXPECT_EQ(snapshot(dir), before);
     // An image map: made by a first trace, then used by the scene and asked for again.
-    write(dir / "plain.pov",
+    write_bytes(dir / "plain.pov",
           "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
           "light_source { <2, 4, -3>, rgb 1 }\nsphere { <0, 1, 0>, 1 pigment { rgb x } }\n");
     r = run_tool("trace " + quoted(dir / "plain.pov") + " -o " + quoted(dir / "map.png") +
                  " -W 16 -H 12");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    write(dir / "m.pov",
+    write_bytes(dir / "m.pov",
           "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
           "light_source { <2, 4, -3>, rgb 1 }\n"
           "plane { z, 2 pigment { image_map { png \"map.png\" } } }\n");
@@ -141,7 +132,7 @@ TEST(HostileCli, AllOutputsOrNone) {
     const auto dir = test_dir("hostile_cli", "all_or_none");
     // report.json cannot be written (a directory holds its name): no other output appears.
     fs::create_directories(dir / "out" / "report.json");
-    write(dir / "out" / "layers.csv", "old\n");
+    write_bytes(dir / "out" / "layers.csv", "old\n");
     const auto before = snapshot(dir);
     auto r = run_tool("compile " + kDesert + " -o " + quoted(dir / "out") + " -W 16 -H 12");
     EXPECT_EQ(r.exit_code, 1);
@@ -168,7 +159,7 @@ TEST(HostileCli, ExtremeAtmospheresAreRefusedWithTheirName) {
         "--elevation-deg -10");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage path: --eta1 = 1e+200 must be 0 or from 1e-10 to 10\n");
-    write(dir / "rows.csv",
+    write_bytes(dir / "rows.csv",
           "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2,d3\n"
           "A,inferior,1.0003,1e200,1,1.5,1.9,1,2,3\n");
     r = run_tool("path --batch " + quoted(dir / "rows.csv"));
@@ -258,7 +249,7 @@ TEST(HostileCli, ValuesThatWouldHangAreRefusedAtOnce) {
     EXPECT_EQ(r.err,
               "mirage trace: /dev/zero: is not a regular file (a device, a pipe or a socket?): "
               "scenes are read from files\n");
-    write(dir / "loop.pov", "#while (1)\n#end\n");
+    write_bytes(dir / "loop.pov", "#while (1)\n#end\n");
     r = run_tool("compile " + quoted(dir / "loop.pov") + " -o " + quoted(dir / "c"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("loop.pov:1:1: '#while' reached mirage's limit of 1000000 loop passes "
@@ -273,13 +264,13 @@ TEST(HostileCli, AFileThatIsNoSceneSaysWhatIsWrong) {
     auto r = run_tool("trace " + quoted(dir) + " -o " + quoted(dir / "x.png"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage trace: " + dir.string() + ": is a directory, not a scene file\n");
-    write(dir / "empty.pov", "");
+    write_bytes(dir / "empty.pov", "");
     r = run_tool("compile " + quoted(dir / "empty.pov") + " -o " + quoted(dir / "out"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage compile: " + (dir / "empty.pov").string() +
                          ": the file is empty: there is no scene to read\n");
     // A line of 200 KB (or binary) is echoed cut around the caret.
-    write(dir / "long.pov", "#declare X = " + std::string(200000, '1') + " spere;\n");
+    write_bytes(dir / "long.pov", "#declare X = " + std::string(200000, '1') + " spere;\n");
     r = run_tool("trace " + quoted(dir / "long.pov") + " -o " + quoted(dir / "x.png"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_LT(r.err.size(), 700u);
@@ -287,7 +278,7 @@ TEST(HostileCli, AFileThatIsNoSceneSaysWhatIsWrong) {
     EXPECT_NE(r.err.find("11111 ... 11111"), std::string::npos);
     EXPECT_NE(r.err.find("\n#declare X = 1111"), std::string::npos);
     EXPECT_NE(r.err.find("111...\n             ^\n"), std::string::npos);
-    write(dir / "binary.pov", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+    write_bytes(dir / "binary.pov", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
     r = run_tool("trace " + quoted(dir / "binary.pov") + " -o " + quoted(dir / "x.png"));
     EXPECT_EQ(r.exit_code, 1);
     for (char c : r.err) EXPECT_TRUE(c == '\n' || (c >= 0x20 && c < 0x7F)) << r.err;
@@ -298,7 +289,7 @@ TEST(HostileCli, AFileThatIsNoSceneSaysWhatIsWrong) {
 TEST(HostileCli, BatchRowsAreReadStrictly) {
     const auto dir = test_dir("hostile_cli", "batch");
     const std::string header = "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2,d3\n";
-    write(dir / "bom.csv",
+    write_bytes(dir / "bom.csv",
           "\xEF\xBB\xBF" + header + "A,inferior,1.000233,0.4584,2.303,1.0,1.9,1,2,3\n");
     auto r = run_tool("path --batch " + quoted(dir / "bom.csv"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -310,7 +301,7 @@ TEST(HostileCli, BatchRowsAreReadStrictly) {
         {"-5", "2:42: d1 = -5: a distance must be finite and >= 0 (m)"},
     };
     for (const auto& [value, message] : rows) {
-        write(dir / "rows.csv",
+        write_bytes(dir / "rows.csv",
               header + "A,inferior,1.000233,0.4584,2.303,1.0,1.9," + value + ",2,3\n");
         r = run_tool("path --batch " + quoted(dir / "rows.csv"));
         EXPECT_EQ(r.exit_code, 1) << value;

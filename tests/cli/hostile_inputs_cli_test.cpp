@@ -19,37 +19,28 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::quoted;
+using testing::read_bytes;
+using testing::write_bytes;
 using testing::run_tool;
 using testing::test_dir;
 
 const std::string kDesert = std::string(MIRAGE_SOURCE_DIR) + "/scenes/desert.pov";
 const std::string kSetting = "#declare Mirage_Tolerance = 0.5;";
 
-std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void write(const fs::path& p, const std::string& text) {
-    std::ofstream(p, std::ios::binary) << text;
-}
-
 /// The desert scene with `line` added after its tolerance setting, as dir/name.
 fs::path desert_plus(const fs::path& dir, const std::string& name, const std::string& line) {
-    std::string text = read(kDesert);
+    std::string text = read_bytes(kDesert);
     const auto at = text.find(kSetting);
     EXPECT_NE(at, std::string::npos);
     const auto end = text.find('\n', at);
     text.insert(end + 1, line + "\n");
-    write(dir / name, text);
+    write_bytes(dir / name, text);
     return dir / name;
 }
 
 /// The line (1-based) of the desert scene after its tolerance setting.
 int line_after_tolerance() {
-    const std::string text = read(kDesert);
+    const std::string text = read_bytes(kDesert);
     const auto at = text.find(kSetting);
     int line = 1;
     for (std::size_t i = 0; i < at; ++i) line += text[i] == '\n';
@@ -137,14 +128,14 @@ TEST(HostileInputs, PathOptionsAreNumbersInTheirRanges) {
     EXPECT_EQ(r.err,
               "mirage path: --inversion 50,60,2,1e9: smoothing 1e+09 m must be from 0 to 100 m\n");
     const auto sounding = dir / "s.csv";
-    write(sounding, "height_m,temperature_c\n0,20\n10,19\n");
+    write_bytes(sounding, "height_m,temperature_c\n0,20\n10,19\n");
     r = run_tool("path --sounding " + quoted(sounding) +
                  " --sounding-max-gap 1e300 --eye-height 1 --elevation-deg 0");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err,
               "mirage path: --sounding-max-gap 1e+300: must be more than 0 and at most 10000 m\n");
     // --svg draws one ray's fan: beside --batch it would be dropped without a word.
-    write(dir / "rays.csv", kRaysHeader + "A,inferior,1.0003,0.02,3,1.5,1.5707,10,20,30\n");
+    write_bytes(dir / "rays.csv", kRaysHeader + "A,inferior,1.0003,0.02,3,1.5,1.5707,10,20,30\n");
     r = run_tool("path --batch " + quoted(dir / "rays.csv") + " --svg " + quoted(dir / "x.svg"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err,
@@ -213,16 +204,16 @@ TEST(HostileInputs, InputFilesAreRegularFilesOfBoundedSize) {
                          "for a CSV table\n");
     // CR-only line ends (old Mac files) end lines.
     const std::string row = "A,inferior,1.0003,0.02,3,1.5,1.5707,10,20,30";
-    write(dir / "lf.csv", kRaysHeader + row + "\n");
+    write_bytes(dir / "lf.csv", kRaysHeader + row + "\n");
     std::string cr_text = kRaysHeader;
     cr_text.back() = '\r';
-    write(dir / "cr.csv", cr_text + row + "\r");
+    write_bytes(dir / "cr.csv", cr_text + row + "\r");
     const auto lf = run_tool("path --batch " + quoted(dir / "lf.csv"));
     const auto cr = run_tool("path --batch " + quoted(dir / "cr.csv"));
     EXPECT_EQ(cr.exit_code, 0) << cr.err;
     EXPECT_EQ(cr.out, lf.out);
     // 10 MB of a field is not quoted on stderr: its ends are.
-    write(dir / "long.csv", kRaysHeader + "A,inferior," + std::string(10'000'000, '9') +
+    write_bytes(dir / "long.csv", kRaysHeader + "A,inferior," + std::string(10'000'000, '9') +
                                 ",0.02,3,1.5,1.5707,10,20,30\n");
     r = run_tool("path --batch " + quoted(dir / "long.csv"));
     EXPECT_EQ(r.exit_code, 1);
@@ -234,7 +225,7 @@ TEST(HostileInputs, InputFilesAreRegularFilesOfBoundedSize) {
 TEST(HostileInputs, ASoundingFitThatFailsNamesTheFileAndTheRows) {
     const auto dir = test_dir("hostile_inputs", "sounding_fit");
     const auto sounding = dir / "road.csv";
-    write(sounding, "height_m,temperature_c\n0,45\n0.5,31\n10,28.5\n");
+    write_bytes(sounding, "height_m,temperature_c\n0,45\n0.5,31\n10,28.5\n");
     auto r = run_tool("path --sounding " + quoted(sounding) +
                       " --fit-tolerance 1e-30 --eye-height 1 --elevation-deg 0");
     EXPECT_EQ(r.exit_code, 1);
@@ -251,7 +242,7 @@ TEST(HostileInputs, ASoundingFitThatFailsNamesTheFileAndTheRows) {
 // air at 15 degC, whose refraction left 0.78 of the curvature (34.46 m).
 TEST(HostileInputs, ABatchOnTheCurvedEarthTracesEachRowsProfile) {
     const auto dir = test_dir("hostile_inputs", "batch_curved");
-    write(dir / "rays.csv", kRaysHeader +
+    write_bytes(dir / "rays.csv", kRaysHeader +
                                 "level,none,1,0,0,10,1.5707963267948966,10000,20000,"
                                 "30000\n"
                                 "low,inferior,1.0003,0.0002,1,10,1.5707963267948966,"

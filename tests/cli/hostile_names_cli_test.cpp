@@ -28,6 +28,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::quoted;
+using testing::read_bytes;
+using testing::write_bytes;
 using testing::run_tool;
 using testing::test_dir;
 
@@ -35,17 +37,6 @@ const std::string kSource = MIRAGE_SOURCE_DIR;
 const std::string kDesert = kSource + "/scenes/desert.pov";
 const std::string kWalk = kSource + "/scenes/walk.pov";
 const std::string kRay = "path --preset paper --eye-height 1.5 --elevation-deg -1";
-
-std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void write(const fs::path& p, const std::string& text) {
-    std::ofstream(p, std::ios::binary) << text;
-}
 
 /// A path quoted for sh, whatever bytes it holds.
 std::string sh_quoted(const std::string& s) {
@@ -112,8 +103,8 @@ TEST(HostileNames, AFileNameRunsNoCommandOverGnuParallel) {
     // A line end splits a task line; what follows it would run as a command.  '{}' and '{=
     // =}' are GNU parallel's replacement strings.
     const std::string name = "w\ntouch PWNED\n{= $_ = `touch PWNED2` =}$(touch PWNED3).pov";
-    write(dir / name, read(kWalk));
-    write(dir / "hosts.txt", ":\n");
+    write_bytes(dir / name, read_bytes(kWalk));
+    write_bytes(dir / "hosts.txt", ":\n");
     auto r = run_in(dir, "animate " + sh_quoted(name) +
                              " --model trace --frames 1 -W 16 -H 12 -q -o out --hosts hosts.txt");
     EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -121,14 +112,14 @@ TEST(HostileNames, AFileNameRunsNoCommandOverGnuParallel) {
                  fs::exists(dir / "PWNED3"));
     EXPECT_TRUE(fs::exists(dir / "out" / "frames" / "frame_0000.png")) << r.err;
     // The task's own log, written by the task.
-    EXPECT_NE(read(dir / "out" / "frames" / "frame_0000.log").find("frame 0"), std::string::npos);
+    EXPECT_NE(read_bytes(dir / "out" / "frames" / "frame_0000.log").find("frame 0"), std::string::npos);
 }
 
 TEST(HostileNames, GnuParallelsProblemsAreSaidAndAnEmptyHostListRefused) {
     if (!have_animate_tools() || !find_program("parallel"))
         GTEST_SKIP() << "ffmpeg or GNU parallel missing";
     const auto dir = test_dir("hostile_names", "hosts_said");
-    write(dir / "empty.txt", "# no host\n\n");
+    write_bytes(dir / "empty.txt", "# no host\n\n");
     auto r = run_tool("animate " + kWalk + " --model trace --frames 1 -W 16 -H 12 -o " +
                       quoted(dir / "out") + " --hosts " + quoted(dir / "empty.txt"));
     EXPECT_EQ(r.exit_code, 1);
@@ -136,7 +127,7 @@ TEST(HostileNames, GnuParallelsProblemsAreSaidAndAnEmptyHostListRefused) {
                          ": names no host (one ssh login a line, ':' for this machine)\n");
     EXPECT_FALSE(fs::exists(dir / "out"));
     // A login GNU parallel does not take: its complaint on stderr, not only in its log.
-    write(dir / "bad.txt", "0/:\n");
+    write_bytes(dir / "bad.txt", "0/:\n");
     r = run_tool("animate " + kWalk + " --model trace --frames 1 -W 16 -H 12 -o " +
                  quoted(dir / "out") + " --hosts " + quoted(dir / "bad.txt"));
     EXPECT_EQ(r.exit_code, 1);
@@ -147,7 +138,7 @@ TEST(HostileNames, GnuParallelsProblemsAreSaidAndAnEmptyHostListRefused) {
 TEST(HostileNames, TheSlurmScriptHoldsNoFileName) {
     const auto dir = test_dir("hostile_names", "slurm");
     const std::string name = "w\n#SBATCH --wrap=x\ntouch PWNED\n$(touch PWNED2) 50%.pov";
-    write(dir / name, read(kWalk));
+    write_bytes(dir / name, read_bytes(kWalk));
     AnimateOptions o;
     o.scene = (dir / name).string();
     o.frames = 2;
@@ -178,7 +169,7 @@ TEST(HostileNames, TheSlurmScriptHoldsNoFileName) {
         << s;
     EXPECT_EQ(s.find("\n#SBATCH --wrap"), std::string::npos) << s;
     // The script run as sbatch would: nothing but the task (here /bin/true) runs.
-    write(dir / "job.sh", s);
+    write_bytes(dir / "job.sh", s);
     EXPECT_EQ(
         std::system(
             ("cd " + sh_quoted(dir.string()) + " && SLURM_ARRAY_TASK_ID=1 sh job.sh").c_str()),
@@ -206,7 +197,7 @@ TEST(HostileNames, NamesPovRayCannotTakeAreRefusedByCompile) {
         {"sc\xff.pov", "a byte outside ASCII"},
     };
     for (const auto& [name, why] : names) {
-        write(dir / name, read(kDesert));
+        write_bytes(dir / name, read_bytes(kDesert));
         auto r = run_in(dir, "compile " + sh_quoted(name) + " -o outc -W 16 -H 12");
         EXPECT_EQ(r.exit_code, 1) << name;
         EXPECT_NE(r.err.find(": the scene is read by POV-Ray, and its path holds " + why),
@@ -233,17 +224,17 @@ TEST(HostileNames, AFolderWithASpaceRendersInEveryPovRayRun) {
     if (!testing::povray_available()) GTEST_SKIP() << "povray is not on PATH";
     const auto dir = test_dir("hostile_names", "space");
     fs::create_directories(dir / "a b");
-    write(dir / "a b" / "s c;x.pov", read(kDesert));
+    write_bytes(dir / "a b" / "s c;x.pov", read_bytes(kDesert));
     // compile's .ini, rendered: it names the scene that renders the template through the
     // corrected camera, which includes the template by its path.
     auto r = run_in(dir, "compile 'a b/s c;x.pov' -o 'o u t' -W 16 -H 12 -q --render");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const std::string ini = read(dir / "o u t" / "s c;x.ini");
+    const std::string ini = read_bytes(dir / "o u t" / "s c;x.ini");
     EXPECT_NE(ini.find("Input_File_Name=\"" + (dir / "o u t" / "s c;x_render.pov").string() +
                        "\"\n"),
               std::string::npos)
         << ini;
-    const std::string scene = read(dir / "o u t" / "s c;x_render.pov");
+    const std::string scene = read_bytes(dir / "o u t" / "s c;x_render.pov");
     EXPECT_NE(scene.find("#include \"" + (dir / "a b" / "s c;x.pov").string() + "\"\n"),
               std::string::npos)
         << scene;
@@ -257,7 +248,7 @@ TEST(HostileNames, AFolderWithASpaceRendersInEveryPovRayRun) {
     EXPECT_EQ(r.err.find("POV-Ray failed"), std::string::npos) << r.err;
     // animate's band model runs POV-Ray on every frame's .ini.
     if (have_animate_tools()) {
-        write(dir / "a b" / "w a;lk.pov", read(kWalk));
+        write_bytes(dir / "a b" / "w a;lk.pov", read_bytes(kWalk));
         r = run_in(dir, "animate 'a b/w a;lk.pov' --frames 2 -W 16 -H 12 -q -o 'an i'");
         EXPECT_EQ(r.exit_code, 0) << r.err;
         EXPECT_TRUE(fs::exists(dir / "an i" / "frames" / "frame_0002.png")) << r.err;
@@ -268,7 +259,7 @@ TEST(HostileNames, FailedPovRayRendersSayWhyAndFailTheCommand) {
     const auto dir = test_dir("hostile_names", "povray_fails");
     // A POV-Ray that fails as a broken installation would, first on PATH.
     fs::create_directories(dir / "bin");
-    write(dir / "bin" / "povray",
+    write_bytes(dir / "bin" / "povray",
           "#!/bin/sh\necho 'Parse Error: Cannot open input file.'\necho 'Render failed'\n"
           "exit 1\n");
     fs::permissions(dir / "bin" / "povray", fs::perms::owner_all);
@@ -354,34 +345,34 @@ TEST(HostileNames, AFifoGetsTheOutputAndStaysAFifo) {
     EXPECT_NE(r.out.find("<svg"), std::string::npos);
     EXPECT_FALSE(fs::exists("-"));
     // A link to a file: the file gets the output, the link stays.
-    write(dir / "real.svg", "old");
+    write_bytes(dir / "real.svg", "old");
     fs::create_symlink("real.svg", dir / "to_real.svg");
     r = run_tool(kRay + " --svg " + quoted(dir / "to_real.svg"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::is_symlink(dir / "to_real.svg"));
-    EXPECT_NE(read(dir / "real.svg").find("<svg"), std::string::npos);
+    EXPECT_NE(read_bytes(dir / "real.svg").find("<svg"), std::string::npos);
 }
 
 TEST(HostileNames, NamesThatAreNotUtf8AreWrittenAsJson) {
     if (!have_animate_tools()) GTEST_SKIP() << "ffmpeg/ffprobe not on PATH";
     const auto dir = test_dir("hostile_names", "utf8");
     // The scene's name, the output folder's and a Marked_Name, none of them UTF-8.
-    std::string scene = read(kWalk);
+    std::string scene = read_bytes(kWalk);
     const std::string from = "\"red sphere\"";
     ASSERT_NE(scene.find(from), std::string::npos);
     scene.replace(scene.find(from), from.size(), "\"red \xff sphere\"");
-    write(dir / "sc\xff.pov", scene);
+    write_bytes(dir / "sc\xff.pov", scene);
     const std::string cmd = "animate " + sh_quoted("sc\xff.pov") +
                             " --model trace --frames 2 -W 16 -H 12 -q -o " + sh_quoted("o\xfe");
     auto r = run_in(dir, cmd);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const fs::path out = dir / "o\xfe";
     for (const char* file : {"animation.json", "report.json", "frames/frame_0001.json"}) {
-        const auto j = nlohmann::json::parse(read(out / file), nullptr, false);
+        const auto j = nlohmann::json::parse(read_bytes(out / file), nullptr, false);
         EXPECT_FALSE(j.is_discarded()) << file;
     }
-    EXPECT_NE(read(out / "animation.json").find("sc\xef\xbf\xbd.pov"), std::string::npos);
-    EXPECT_NE(read(out / "report.json").find("red \xef\xbf\xbd sphere"), std::string::npos);
+    EXPECT_NE(read_bytes(out / "animation.json").find("sc\xef\xbf\xbd.pov"), std::string::npos);
+    EXPECT_NE(read_bytes(out / "report.json").find("red \xef\xbf\xbd sphere"), std::string::npos);
     // A second run finds the frames its own.
     r = run_in(dir, cmd);
     EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -393,7 +384,7 @@ TEST(HostileNames, AReaderThatStopsEarlyEndsTheOutputQuietly) {
     std::string csv = "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2,d3\n";
     for (int i = 0; i < 3000; ++i)
         csv += "R" + std::to_string(i) + ",inferior,1.000233,0.4584,2.303,1.0,1.9,1,2,3\n";
-    write(dir / "rays.csv", csv);
+    write_bytes(dir / "rays.csv", csv);
     const std::string cmd =
         "bash -c " + sh_quoted(std::string(MIRAGE_BINARY_DIR) + "/mirage path --batch " +
                                sh_quoted((dir / "rays.csv").string()) +
@@ -403,12 +394,12 @@ TEST(HostileNames, AReaderThatStopsEarlyEndsTheOutputQuietly) {
     const std::size_t n = std::fread(buf, 1, sizeof buf - 1, p);
     pclose(p);
     EXPECT_EQ(std::string(buf, n), "0\n");
-    EXPECT_EQ(read(dir / "err"), "");
+    EXPECT_EQ(read_bytes(dir / "err"), "");
 }
 
 TEST(HostileNames, MessagesEscapeWhatWouldActOnATerminal) {
     const auto dir = test_dir("hostile_names", "terminal");
-    write(dir / "e.pov",
+    write_bytes(dir / "e.pov",
           std::string("#error \"nul ") + std::string(1, '\0') + "clear\x1b[2J\x07 bell\"\n");
     auto r =
         run_tool("trace " + quoted(dir / "e.pov") + " -W 16 -H 12 -o " + quoted(dir / "e.png"));
@@ -425,7 +416,7 @@ TEST(HostileNames, RefusalsLeaveNoFolderAndNamelessOutputsAreRefused) {
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_FALSE(fs::exists(dir / "outc"));
     // compare: a scene with no atmosphere, found after the reference.
-    write(dir / "plain.pov",
+    write_bytes(dir / "plain.pov",
           "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
           "light_source { <2, 4, -3>, rgb 1 }\nsphere { <0, 1, 0>, 1 pigment { rgb x } }\n");
     r = run_tool("compare " + quoted(dir / "plain.pov") + " -W 16 -H 12 -o " +

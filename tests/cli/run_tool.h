@@ -8,6 +8,8 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace mirage::testing {
@@ -17,6 +19,19 @@ struct ToolRun {
     std::string out;  // stdout
     std::string err;  // stderr
 };
+
+/// The bytes of a file (empty when it cannot be read).
+inline std::string read_bytes(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Writes `text` to a file as it is.
+inline void write_bytes(const std::filesystem::path& p, const std::string& text) {
+    std::ofstream(p, std::ios::binary) << text;
+}
 
 /// A path quoted for the shell command line of run_tool.
 inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
