@@ -13,6 +13,7 @@
 #include "pov/emit_layers.h"
 #include "util/format.h"
 #include "util/new_directories.h"
+#include "util/output_path.h"
 #include "util/output_set.h"
 #include "util/text_escape.h"
 
@@ -331,6 +332,13 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.report_path = (abs_dir / "report.json").string();
     rep.image_path = ctx.image;
     if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
+    // The corrected camera's render is read back to drop its extra row: a file, not a stream.
+    if (auto out = resolve_output_path(rep.image_path); corrected && out && out->stream)
+        return make_error(rep.image_path +
+                          ": POV-Ray's render through the corrected camera is read back and "
+                          "cropped after it is written, so the image must be a file, not a "
+                          "device or a pipe (render to a file and copy it, or use --camera "
+                          "perspective)");
     // The include's header, once the pixel centres' errors are known.
     auto header = [&] {
         return std::vector<std::string>{

@@ -251,6 +251,24 @@ TEST(Compile, ACorrectedCameraTooLargeIsRefusedAtOnce) {
     EXPECT_TRUE(compile_scene(o).ok());
 }
 
+// POV-Ray's render through the corrected camera is cropped in place after it is written: an
+// image that is a device is refused by name (the scene's own camera renders into it as it is).
+TEST(Compile, TheCorrectedCamerasImageMustBeAFile) {
+    const std::string dir = temp_dir("image_device");
+    const std::string scene = write_scene(dir, "small.pov", kDesert);
+    CompileOptions o = options(scene, dir, 16, 12);
+    o.image = "/dev/null";
+    auto r = compile_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.message().find("/dev/null: POV-Ray's render through the corrected camera is read "
+                               "back and cropped"),
+              std::string::npos)
+        << r.message();
+    EXPECT_FALSE(fs::exists(o.out_dir));
+    o.camera = CameraModel::Perspective;
+    EXPECT_TRUE(compile_scene(o).ok());
+}
+
 TEST(CompileCli, JsonReportHasTheRequiredKeys) {
     const std::string dir = temp_dir("cli");
     const std::string scene = write_scene(dir, "small.pov", kDesert);
