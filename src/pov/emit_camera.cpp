@@ -1,7 +1,12 @@
 #include "pov/emit_camera.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
+#include <vector>
 
 #include "image/image_io.h"
 #include "layers/band_aim.h"
@@ -29,6 +34,28 @@ void append_int(std::string& out, long v) {
     out.append(buf, r.ptr);
 }
 
+// A vertex by its bits (float32 components; -0 is written as 0 and keyed as 0).
+struct VertexKey {
+    uint32_t x, y, z;
+    explicit VertexKey(const glm::vec3& p) : x(bits(p.x)), y(bits(p.y)), z(bits(p.z)) {}
+    static uint32_t bits(float v) {
+        if (v == 0.0f) v = 0.0f;
+        uint32_t b;
+        std::memcpy(&b, &v, sizeof b);
+        return b;
+    }
+    bool operator==(const VertexKey&) const = default;
+};
+
+struct VertexKeyHash {
+    size_t operator()(const VertexKey& k) const {
+        uint64_t h = k.x;
+        h = h * 0x9E3779B97F4A7C15ull ^ k.y;
+        h = h * 0x9E3779B97F4A7C15ull ^ k.z;
+        return static_cast<size_t>(h ^ (h >> 29));
+    }
+};
+
 void append_vertex(std::string& out, const glm::vec3& p) {
     out += '<';
     append_float(out, p.x);
@@ -53,25 +80,37 @@ std::string mesh_camera_include(const MeshCameraSettings& st) {
         const std::vector<glm::dvec3>& dirs = st.samples[m];
         MIRAGE_CHECK(dirs.size() == faces);
         out += "#declare Mirage_Camera_Mesh_" + std::to_string(m) + " = mesh2 {\n";
-        out += "    vertex_vectors { ";
-        append_int(out, static_cast<long>(1 + 2 * faces));
-        out += ",\n<0,0,0>";
+        // Faces share their vertices where they are equal (a level camera's rows share one,
+        // its columns the other), which leaves POV-Ray far fewer numbers to parse.
+        std::vector<glm::vec3> vertices{glm::vec3(0.0f)};
+        std::unordered_map<VertexKey, long, VertexKeyHash> index_of;
+        std::vector<std::array<long, 2>> face_vertices(faces);
+        const auto vertex_index = [&](const glm::vec3& p) {
+            const auto [it, added] =
+                index_of.try_emplace(VertexKey{p}, static_cast<long>(vertices.size()));
+            if (added) vertices.push_back(p);
+            return it->second;
+        };
         for (size_t f = 0; f < faces; ++f) {
             const MeshFace face = mesh_face(mesh_direction(dirs[f]));
-            out += ',';
-            append_vertex(out, face.p2);
-            out += ',';
-            append_vertex(out, face.p3);
-            if (f % 4 == 3) out += '\n';
+            face_vertices[f] = {vertex_index(face.p2), vertex_index(face.p3)};
+        }
+        out += "    vertex_vectors { ";
+        append_int(out, static_cast<long>(vertices.size()));
+        out += ",\n";
+        for (size_t k = 0; k < vertices.size(); ++k) {
+            if (k > 0) out += ',';
+            append_vertex(out, vertices[k]);
+            if (k % 4 == 3) out += '\n';
         }
         out += "\n    }\n    face_indices { ";
         append_int(out, static_cast<long>(faces));
         out += ",\n";
         for (size_t f = 0; f < faces; ++f) {
             out += "<0,";
-            append_int(out, static_cast<long>(1 + 2 * f));
+            append_int(out, face_vertices[f][0]);
             out += ',';
-            append_int(out, static_cast<long>(2 + 2 * f));
+            append_int(out, face_vertices[f][1]);
             out += f + 1 < faces ? ">," : ">";
             if (f % 8 == 7) out += '\n';
         }
