@@ -29,6 +29,8 @@ struct RayEnd {
     glm::dvec3 normal{0.0};     // of the surface, facing the ray
     int primitive = -1;         // -1: the ground where no object is
     double length = 0.0;        // path length from the ray's start to the hit
+    int crossings = 0;          // band rays: boundaries crossed (a trace level each)
+    double last_event = 0.0;    // band rays: horizontal distance to the last crossing
 };
 
 /// Where a ray's end lies as seen from `from`: towards its point, or along its direction.
@@ -78,6 +80,8 @@ RayEnd band_end(const LayerStack& stack, const ObjectQuery& objects, double came
     const Trace3dOutcome t = trace_layers_3d(stack, origin, dir, box, box, o);
     RayEnd e;
     e.cut_off = t.cut_off;
+    e.crossings = t.crossings;
+    e.last_event = t.last_event;
     if (t.ground) {  // the ground where no object is: the exact ray ends there too
         e.hit = true;
         e.point = t.scene_point;
@@ -102,6 +106,26 @@ double reflection_weight(const Scene& scene, int primitive) {
     return std::max({r.x, r.y, r.z});
 }
 
+// The trace level POV-Ray reaches along a band ray that ended at `b`: one for the camera
+// ray, one per boundary crossed, and as much again along each reflection that still counts
+// (POV-Ray stops a reflection whose weight falls under 1/255).
+int band_trace_level(const LayerStack& rendered, const Scene& scene, const ObjectQuery& objects,
+                     const PixelCheckSettings& s, RayEnd b) {
+    constexpr int kCutOff = 1 << 20;  // past any ceiling
+    int level = 1 + b.crossings;
+    double weight = 1.0;
+    while (!b.cut_off && b.hit && b.primitive >= 0) {
+        weight *= reflection_weight(scene, b.primitive);
+        if (weight < 1.0 / 255.0 || level > kCutOff) break;
+        glm::dvec3 o = b.point + 1e-6 * b.normal;
+        o.y = std::max(o.y, 0.0);
+        b = band_end(rendered, objects, s.camera_y, o, glm::reflect(b.direction, b.normal),
+                     s.layers, s.layers_below);
+        level += 1 + b.crossings;
+    }
+    return b.cut_off ? kCutOff : level;
+}
+
 // One pixel's rays: where the camera rays end as seen from the eye, and the reflections'
 // error.
 struct PixelEnds {
@@ -109,7 +133,8 @@ struct PixelEnds {
     glm::dvec3 band_seen{0.0}, exact_seen{0.0};
     double camera_error_rad = 0.0;
     double reflection_error_rad = 0.0;
-    RayEnd band;  // where the band ray ended
+    RayEnd band;          // where the band ray ended
+    int trace_level = 0;  // with an aim: POV-Ray's trace level along the chosen band ray
 };
 
 // The reflections a pixel's band and exact rays follow while they meet the same mirror, and
@@ -209,6 +234,7 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
         best = p;
         *chosen = *c;
     }
+    best.trace_level = band_trace_level(rendered, scene, objects, s, best.band);
     if (std::getenv("MIRAGE_DEBUG_AIM") &&
         best.camera_error_rad > std::atof(std::getenv("MIRAGE_DEBUG_AIM")) * pixel_rad) {
         std::fprintf(stderr,
@@ -434,6 +460,17 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
     out.shift_rows.assign(n, 0.0f);
     out.reflection_error_px.assign(n, 0.0f);
     out.camera_error_px.assign(n, 0.0f);
+    if (s.aim) {
+        out.crossings.assign(n, 0);
+        out.trace_level.assign(n, 0);
+        out.last_event.assign(n, 0.0);
+        for (size_t i = 0; i < n; ++i)
+            if (!cut_off[i] && !ends[i].band.cut_off) {
+                out.crossings[i] = ends[i].band.crossings;
+                out.last_event[i] = ends[i].band.last_event;
+                out.trace_level[i] = ends[i].trace_level;
+            }
+    }
     parallel_for(
         W,
         [&](long col) {

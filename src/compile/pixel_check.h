@@ -89,6 +89,11 @@ struct PixelCheck {
     std::vector<glm::dvec3> band_direction;
     // With an aim: the camera ray's part of seen_error_px, pixels.
     std::vector<float> camera_error_px;
+    // With an aim, along each chosen band ray: the boundaries it crosses, POV-Ray's trace
+    // level with its reflections, and the horizontal distance from the eye to its last
+    // crossing (0 where cut off).
+    std::vector<int> crossings, trace_level;
+    std::vector<double> last_event;
 };
 
 /// Checks every ray of a width x height grid (with settings.origins, from their own origins:

@@ -86,27 +86,4 @@ std::vector<std::pair<int, int>> shot_samples(int per_side, bool antialias) {
     return s;
 }
 
-AimedReach aimed_reach(const CompileContext& ctx, const LayerStack& rendered,
-                       const std::vector<glm::dvec3>& directions) {
-    const ObjectQuery objects = object_query(*ctx.accel);
-    const double camera_y = ctx.reference_y(rendered);
-    std::vector<double> last(directions.size(), 0.0);
-    std::vector<int> crossings(directions.size(), 0);
-    parallel_for(static_cast<long>(directions.size()), [&](long i) {
-        Trace3dOptions o{100000, &objects, camera_y};
-        o.below = ctx.layers_below_box;
-        const Trace3dOutcome t = trace_layers_3d(rendered, ctx.camera.location, directions[i],
-                                                 ctx.scene_box, ctx.layers_box, o);
-        if (t.cut_off) return;
-        last[i] = t.last_event;
-        crossings[i] = t.crossings;
-    });
-    AimedReach a;
-    for (size_t i = 0; i < last.size(); ++i) {
-        a.last_event = std::max(a.last_event, last[i]);
-        a.max_crossings = std::max(a.max_crossings, crossings[i]);
-    }
-    return a;
-}
-
 }  // namespace mirage

@@ -210,17 +210,6 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
 /// samples too (POV-Ray averages one mesh per sample).
 std::vector<std::pair<int, int>> shot_samples(int per_side, bool antialias);
 
-/// How far the aimed rays meet the layers.
-struct AimedReach {
-    double last_event = 0.0;  // the farthest boundary event of a camera ray from the eye
-    int max_crossings = 0;    // boundary events of a camera ray
-};
-
-/// Follows each of `directions` from the eye through the rendered layers (as far as
-/// ctx.layers_box and ctx.layers_below_box let them reach) to the surface it meets.
-AimedReach aimed_reach(const CompileContext& ctx, const LayerStack& rendered,
-                       const std::vector<glm::dvec3>& directions);
-
 /// The texts of the outputs, by file name.
 struct EmittedFiles {
     std::string include, csv, ini;
