@@ -11,6 +11,7 @@
 #include "image/image_io.h"
 #include "pov/emit_camera.h"
 #include "pov/emit_layers.h"
+#include "pov/emit_stamp.h"
 #include "util/format.h"
 #include "util/new_directories.h"
 #include "util/output_path.h"
@@ -205,6 +206,7 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Camer
     rs.camera_include = rep.camera_path;
     rs.width = W;
     rs.height = H;
+    rs.settings_check = settings_check(stamped_settings(ctx.scene, atmosphere_setting_names()));
     rs.header = {rep.name + "_render.pov: renders " + scene_abs +
                      " through its corrected camera, written by mirage compile.",
                  "POV-Ray 3.7 gives image rows 0 and 1 the same faces of a mesh camera: this "

@@ -4,6 +4,7 @@
 
 #include "compile/stages.h"
 #include "pov/emit_layers.h"
+#include "pov/emit_stamp.h"
 
 namespace mirage {
 
@@ -33,6 +34,12 @@ EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, doub
     es.layout = ctx.gaps ? LayerLayout::Gaps : LayerLayout::Nested;
     es.gap = ctx.gap;
     es.header = header;
+    // A render the layers were not compiled for stops at parse time: through the template's
+    // own camera when they were solved for the corrected one (whose render scene checks the
+    // size and the settings), or at another size.
+    es.checks = ctx.options.camera == CameraModel::Corrected
+                    ? corrected_camera_check(ctx.name + ".ini")
+                    : size_check(ctx.options.width, ctx.options.height);
     IniSettings ini;
     ini.scene = std::filesystem::absolute(ctx.options.scene).string();
     ini.output_image = image;

@@ -60,6 +60,10 @@ const std::vector<std::string>& known_names() {
     return names;
 }
 
+bool internal_name(const std::string& name) {
+    return name == "Mirage_Inc_Temp" || name == "Mirage_Compiled" || name == "Mirage_Layer_Texture";
+}
+
 std::string where(const Declared& d) { return to_string(d.loc) + ": "; }
 
 // Edit distance, for "did you mean".
@@ -300,6 +304,13 @@ Status read_real_air(const Reader& r, const Scene& scene, AtmosphereSettings& s)
 }
 
 }  // namespace
+
+std::vector<std::string> atmosphere_setting_names() {
+    std::vector<std::string> names;
+    for (const auto& n : known_names())
+        if (!internal_name(n)) names.push_back(n);
+    return names;
+}
 
 Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     for (const auto& [name, d] : scene.symbols) {

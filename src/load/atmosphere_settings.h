@@ -71,6 +71,9 @@ bool bends_rays(const AtmosphereSettings& settings);
 /// would otherwise be ignored silently).
 Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene);
 
+/// The names of the settings a scene may declare (mirage.inc's own names left out).
+std::vector<std::string> atmosphere_setting_names();
+
 /// Checks a tolerance in pixels against its range; `name` says where it was given, with its
 /// place: "--tolerance", "scene.pov:3:10: Mirage_Tolerance =".  The one message of every
 /// command for a tolerance out of range.

@@ -149,6 +149,10 @@ std::string render_scene(const RenderSceneSettings& st) {
            ", \" never includes mirage.inc: the atmosphere is missing (add #include "
            "\\\"mirage.inc\\\" after its #version)\")\n";
     out += "#end\n\n";
+    if (!st.settings_check.empty()) {
+        out += "// The template's Mirage_ settings as they were compiled.\n";
+        out += st.settings_check + "\n";
+    }
     out += "// The scene's camera replaced by the corrected one.\n";
     out += "#include " + camera + "\n";
     out += "camera { Mirage_Camera }\n";

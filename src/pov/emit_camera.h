@@ -38,6 +38,7 @@ struct RenderSceneSettings {
     std::string scene;                // the template, absolute
     std::string camera_include;       // file name of the mesh camera's include (found on the path)
     int width = 0, height = 0;        // the image the camera was solved for
+    std::string settings_check;       // SDL run after the template (pov/emit_stamp.h)
     std::vector<std::string> header;  // comment lines at the top
 };
 

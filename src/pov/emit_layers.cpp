@@ -49,6 +49,7 @@ std::string layers_include(const LayerStack& s, const LayerEmitSettings& st) {
         out << "// Heights above the ground at y = " << g17(st.ground_height)
             << " (Mirage_Ground_Height): every layer is moved up there.\n";
     }
+    out << st.checks;
     out << "global_settings { max_trace_level 256 }\n\n";
     out << "#declare Mirage_Layer_Texture = texture {\n"
            "    pigment { rgbf 1 }\n"

@@ -44,6 +44,7 @@ struct LayerEmitSettings {
     double ground_height = 0.0;       // Mirage_Ground_Height: every layer is raised by it (the
                                       // heights above are above the ground, scene/ground.h)
     std::vector<std::string> header;  // comment lines at the top of the include
+    std::string checks;               // SDL that stops a render they were not compiled for
     // The lowest point a camera ray starts at (a camera with many origins may start some
     // below the ground): the bottom layer reaches below it, so that POV-Ray finds those
     // origins inside it.
