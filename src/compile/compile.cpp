@@ -361,8 +361,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     };
     EmittedFiles files;
     if (!corrected) {
-        files =
-            emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path, header());
+        files = emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path,
+                           header(), false);
         clock.done("emit");
     }
     rep.camera = corrected ? "corrected" : "perspective";
@@ -420,7 +420,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
                                   ? std::optional<double>(std::min(*reach_below, 1.1 * last))
                                   : std::nullopt;
             files = emit_files(ctx, stack, reach, reach_below, abs_dir.string(), rep.image_path,
-                               header());
+                               header(), true);
             clock.done("check");
             auto cam = emit_corrected_camera(ctx, rays, pc, abs_dir, rep, files);
             if (!cam) return cam.error();

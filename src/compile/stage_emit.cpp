@@ -10,7 +10,8 @@ namespace mirage {
 
 EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, double reach,
                         std::optional<double> reach_below, const std::string& out_dir,
-                        const std::string& image, const std::vector<std::string>& header) {
+                        const std::string& image, const std::vector<std::string>& header,
+                        bool corrected) {
     const glm::dvec3& eye = ctx.camera.location;
     LayerEmitSettings es;
     es.camera_y = ctx.reference_y(stack);
@@ -37,9 +38,8 @@ EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, doub
     // A render the layers were not compiled for stops at parse time: through the template's
     // own camera when they were solved for the corrected one (whose render scene checks the
     // size and the settings), or at another size.
-    es.checks = ctx.options.camera == CameraModel::Corrected
-                    ? corrected_camera_check(ctx.name + ".ini")
-                    : size_check(ctx.options.width, ctx.options.height);
+    es.checks = corrected ? corrected_camera_check(ctx.name + ".ini")
+                          : size_check(ctx.options.width, ctx.options.height);
     IniSettings ini;
     ini.scene = std::filesystem::absolute(ctx.options.scene).string();
     ini.output_image = image;

@@ -217,10 +217,13 @@ struct EmittedFiles {
 
 /// Stage "emit": the layers clipped to `reach` around the camera, the .ini that renders
 /// the template with them into `image` (finding the include in `out_dir`), the layer table.
-/// `header` lines open the include.
+/// `header` lines open the include.  The include stops a render it was not compiled for: at
+/// another size, or for `corrected` layers (aimed through by the corrected camera, whose
+/// render scene checks the size) through the template's own camera.
 EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, double reach,
                         std::optional<double> reach_below, const std::string& out_dir,
-                        const std::string& image, const std::vector<std::string>& header);
+                        const std::string& image, const std::vector<std::string>& header,
+                        bool corrected);
 
 /// The rays POV-Ray's band render follows: stops band rays at the scene's surfaces.
 ObjectQuery object_query(const SceneAccel& accel);

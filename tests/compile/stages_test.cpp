@@ -257,7 +257,7 @@ TEST(EmitFiles, TheIniFindsTheLayersFirstAndTheIncludeSplitsAtTheCamera) {
     auto d = design_layers(*ctx, camera_rays(*ctx, 1));
     ASSERT_TRUE(d.ok()) << d.message();
     const EmittedFiles f =
-        emit_files(*ctx, d->stack, 100.0, std::nullopt, "/out/dir", "/out/x.png", {"hello"});
+        emit_files(*ctx, d->stack, 100.0, std::nullopt, "/out/dir", "/out/x.png", {"hello"}, false);
     const size_t out = f.ini.find("Library_Path=\"/out/dir\"");
     ASSERT_NE(out, std::string::npos) << f.ini;
     EXPECT_LT(out, f.ini.find("Library_Path=", out + 1));
