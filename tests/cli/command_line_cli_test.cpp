@@ -230,6 +230,32 @@ TEST(CommandLineCli, TraceRendersOneFrameWithPovRaysSpellings) {
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
+// trace's antialiasing options (--antialias [THRESHOLD], --antialias-method, --antialias-depth)
+// reached through POV-Ray's +A, +AM and +R; run once trace has them.
+TEST(CommandLineCli, TraceTakesPovRaysAntialiasingSpellings) {
+    if (run_tool("trace --help").out.find("--antialias-method") == std::string::npos)
+        GTEST_SKIP() << "mirage trace has no --antialias-method yet";
+    const auto dir = test_dir("command_line_cli", "trace_antialias");
+    const auto scene = dir / "s.pov";
+    write_bytes(scene, scene_text(true, true));
+    const std::string common = "trace " + quoted(scene) + " -W 24 -H 18 -q -o ";
+    auto pov = run_tool(common + quoted(dir / "pov.png") + " +A0.1 +AM2 +R2");
+    ASSERT_EQ(pov.exit_code, 0) << pov.err;
+    auto lng = run_tool(common + quoted(dir / "long.png") +
+                        " --antialias=0.1 --antialias-method=2 --antialias-depth=2");
+    ASSERT_EQ(lng.exit_code, 0) << lng.err;
+    EXPECT_EQ(read_bytes(dir / "pov.png"), read_bytes(dir / "long.png"));
+    auto plain = run_tool(common + quoted(dir / "plain.png"));
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    EXPECT_NE(read_bytes(dir / "pov.png"), read_bytes(dir / "plain.png"));  // antialiased
+    // +A alone: POV-Ray's default threshold.
+    auto a = run_tool(common + quoted(dir / "a.png") + " +A");
+    auto a03 = run_tool(common + quoted(dir / "a03.png") + " --antialias=0.3");
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    ASSERT_EQ(a03.exit_code, 0) << a03.err;
+    EXPECT_EQ(read_bytes(dir / "a.png"), read_bytes(dir / "a03.png"));
+}
+
 TEST(CommandLineCli, CompileGivesTheFrameToPovRayToo) {
     const auto dir = test_dir("command_line_cli", "compile_frame");
     const auto scene = dir / "frame.pov";
