@@ -256,6 +256,28 @@ TEST(CommandLineCli, TraceTakesPovRaysAntialiasingSpellings) {
     EXPECT_EQ(read_bytes(dir / "a.png"), read_bytes(dir / "a03.png"));
 }
 
+// One frame of an animation renders alone: trace at +K0.5 is frame 2 of 3 of mirage animate.
+TEST(CommandLineCli, TraceAtAClockIsThatFrameOfTheAnimation) {
+    const auto dir = test_dir("command_line_cli", "walk_frame");
+    const std::string walk = std::string(MIRAGE_SOURCE_DIR) + "/scenes/walk.pov";
+    auto r = run_tool("animate " + walk + " --frames 3 --model trace -W 48 -H 36 -q -o " +
+                      quoted(dir / "anim"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto frame = read_image((dir / "anim" / "frames" / "frame_0002.png").string());
+    ASSERT_TRUE(frame.ok()) << frame.message();
+    for (const std::string clock : {"0.5", "0.25"}) {
+        const auto still = dir / ("still_" + clock + ".png");
+        r = run_tool("trace " + walk + " +W48 +H36 -q +K" + clock + " +O" + quoted(still));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        auto image = read_image(still.string());
+        ASSERT_TRUE(image.ok()) << image.message();
+        if (clock == "0.5")
+            EXPECT_EQ(image->pixels, frame->pixels);
+        else
+            EXPECT_NE(image->pixels, frame->pixels);  // another frame
+    }
+}
+
 TEST(CommandLineCli, CompileGivesTheFrameToPovRayToo) {
     const auto dir = test_dir("command_line_cli", "compile_frame");
     const auto scene = dir / "frame.pov";
