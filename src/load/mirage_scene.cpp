@@ -41,8 +41,8 @@ AnimationClock still_at(double clock) {
     return still;
 }
 
-/// The first Mirage_ setting the scene declares, with its place, for the message of a scene
-/// that never includes mirage.inc.
+/// A Mirage_ setting the scene declares (the first by name), with its place, for the message
+/// of a scene that never includes mirage.inc.
 std::string first_setting(const Scene& scene) {
     for (const auto& [name, d] : scene.symbols)
         if (name.rfind("Mirage_", 0) == 0) return name + " at " + to_string(d.loc);
