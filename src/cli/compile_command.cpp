@@ -18,6 +18,8 @@ namespace {
 struct CompileCliOptions {
     CompileOptions compile;
     double tolerance = 0.0;
+    double clock = 0.0;
+    std::vector<std::string> declares;
     std::string layers;
     int count = 0;
     bool json = false;
@@ -83,11 +85,22 @@ void setup_compile_command(CLI::App& app) {
                         "check a grid of N x N rays in every pixel (default: 1, the rays POV-Ray "
                         "shoots, with the corrected camera and no antialiasing; else 3)")
             ->check(CLI::Range(1, 5));
+    auto* clock = sub->add_option("--clock", o->clock,
+                                  "compile the still at this clock (POV-Ray's +K; the .ini "
+                                  "renders it with Clock=), one frame of an animation");
+    sub->add_option("--declare", o->declares,
+                    "declare NAME as the number VALUE before the scene is parsed (POV-Ray's "
+                    "Declare=NAME=VALUE; the .ini declares it too)")
+        ->check(declare_text())
+        ->allow_extra_args(false);  // one NAME=VALUE each time: the scene may follow
     sub->add_flag("--json", o->json, "print the report as JSON");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
-    sub->callback([o, tol, layers, count, samples] {
+    sub->footer(povray_switches_note(false));
+    sub->callback([o, tol, layers, count, samples, clock] {
         CompileOptions c = o->compile;
         if (*tol) c.tolerance_px = o->tolerance;
+        if (*clock) c.clock = o->clock;
+        c.declares = declared_numbers(o->declares);
         if (*layers)
             c.layers = o->layers == "uniform"       ? LayerMode::Uniform
                        : o->layers == "index-steps" ? LayerMode::IndexSteps
@@ -135,7 +148,8 @@ void setup_compile_command(CLI::App& app) {
                                   : std::string())
                           << (r->log.max_level ? ", max level " + std::to_string(*r->log.max_level)
                                                : std::string())
-                          << ")\n";
+                          << ")\n"
+                          << "              " << rs.log << " (POV-Ray's log)\n";
         }
         if (o->strict && !report->within_tolerance) throw CommandFailed{3};
     });

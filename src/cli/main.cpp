@@ -35,22 +35,28 @@ int main(int argc, char** argv) {
     // `mirage --args-hex HEX MORE...`: HEX stands for the arguments it holds
     // (util/hex_args.h), as the frame tasks of `mirage animate --hosts` are started, so that no
     // byte of a file name passes through GNU parallel or a remote shell.
-    std::vector<std::string> words;
-    std::vector<char*> word_ptrs;
+    std::vector<std::string> words(argv, argv + argc);
     if (argc >= 3 && std::string(argv[1]) == "--args-hex") {
         const auto args = mirage::args_from_hex(argv[2]);
         if (!args) {
             std::cerr << "mirage: --args-hex: not a list of arguments in hex\n";
             return 2;
         }
-        words.push_back(argv[0]);
+        words = {argv[0]};
         words.insert(words.end(), args->begin(), args->end());
         for (int k = 3; k < argc; ++k) words.push_back(argv[k]);
-        for (auto& w : words) word_ptrs.push_back(w.data());
-        word_ptrs.push_back(nullptr);
-        argc = static_cast<int>(words.size());
-        argv = word_ptrs.data();
     }
+    // POV-Ray's spellings translated, unknown subcommands and options answered plainly.
+    try {
+        words = mirage::prepare_command_line(app, std::move(words));
+    } catch (const mirage::CommandFailed& failed) {
+        return failed.code;
+    }
+    std::vector<char*> word_ptrs;
+    for (auto& w : words) word_ptrs.push_back(w.data());
+    word_ptrs.push_back(nullptr);
+    argc = static_cast<int>(words.size());
+    argv = word_ptrs.data();
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -14,6 +14,8 @@ namespace {
 struct TraceCliOptions {
     TraceOptions trace;
     double tolerance = 0.0;
+    double clock = 0.0;
+    std::vector<std::string> declares;
     bool no_atmosphere = false;
     bool quiet = false;
 };
@@ -46,10 +48,21 @@ void setup_trace_command(CLI::App& app) {
                   "default, which samples finely only near surfaces)");
     sub->add_option("-L,--library-path", o->trace.library_paths,
                     "extra include directory (searched first)");
+    auto* clock = sub->add_option("--clock", o->clock,
+                                  "render the still at this clock (POV-Ray's +K), one frame of "
+                                  "an animation");
+    sub->add_option("--declare", o->declares,
+                    "declare NAME as the number VALUE before the scene is parsed (POV-Ray's "
+                    "Declare=NAME=VALUE)")
+        ->check(declare_text())
+        ->allow_extra_args(false);  // one NAME=VALUE each time: the scene may follow
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
-    sub->callback([o, tol] {
+    sub->footer(povray_switches_note(true));
+    sub->callback([o, tol, clock] {
         TraceOptions t = o->trace;
         if (*tol) t.tolerance_px = o->tolerance;
+        if (*clock) t.clock = o->clock;
+        t.declares = declared_numbers(o->declares);
         t.atmosphere = !o->no_atmosphere;
         t.progress = !o->quiet;
         auto report = trace_scene(t);

@@ -221,6 +221,8 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Camer
     for (const auto& p : ctx.library_paths) ini.library_paths.push_back(p);
     ini.library_paths.push_back(fs::path(scene_abs).parent_path().string());
     ini.antialias = false;  // POV-Ray averages the meshes' samples itself
+    ini.clock = opt.clock;
+    ini.declares = opt.declares;
     files.ini = render_ini(ini);
     CameraTexts t;
     t.mesh = mesh_camera_include(ms);
@@ -334,6 +336,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     rep.ini_path = (abs_dir / (rep.name + ".ini")).string();
     rep.report_path = (abs_dir / "report.json").string();
     rep.image_path = ctx.image;
+    rep.error_map_path = opt.error_map;
     if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
     // The corrected camera's render is read back to drop its extra row: a file, not a stream.
     if (auto out = resolve_output_path(rep.image_path); corrected && out && out->stream)

@@ -6,6 +6,7 @@
 // against the exact paths, with an independent band tracer) and report.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,10 @@ struct CompileOptions {
                                      // side in every pixel (1: pixel centres only)
     bool progress = true;            // a progress bar on stderr, shown only on a terminal
     CameraModel camera = CameraModel::Corrected;
+    // POV-Ray's +K and Declare=: the still's clock and the numbers declared before the scene
+    // is parsed, for the compile's parse and in the .ini, so that POV-Ray renders that frame.
+    std::optional<double> clock;
+    std::map<std::string, double> declares;
 };
 
 /// An image row or column and the worst errors of its pixels and samples.
@@ -102,6 +107,7 @@ struct CompileReport {
     double lowest = 0.0, highest = 0.0;  // of the boundaries
     double seconds = 0.0;
     std::string include_path, ini_path, csv_path, image_path, report_path;
+    std::string error_map_path;  // --error-map, where the options put it (empty: none)
     // The corrected camera (CameraModel::Corrected): "corrected" or "perspective", the
     // samples per pixel POV-Ray shoots through it, its include and the scene that renders
     // the template through it (empty for a perspective camera).

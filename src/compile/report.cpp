@@ -104,6 +104,7 @@ std::string report_json(const CompileReport& r) {
     j["csv"] = r.csv_path;
     j["image"] = r.image_path;
     j["report"] = r.report_path;
+    if (!r.error_map_path.empty()) j["error_map"] = r.error_map_path;
     j["camera"] = r.camera;
     if (r.camera == "corrected") {
         j["camera_samples_per_pixel"] = r.camera_samples;
@@ -187,6 +188,7 @@ std::string report_text(const CompileReport& r) {
       << "\n              " << r.csv_path << "\n              " << r.report_path << "\n";
     if (r.camera == "corrected")
         s << "              " << r.camera_path << "\n              " << r.render_scene_path << "\n";
+    if (!r.error_map_path.empty()) s << "              " << r.error_map_path << "\n";
     s << "  time        " << sig(r.seconds, 3) << " s";
     if (!r.stage_seconds.empty()) {
         s << " (";

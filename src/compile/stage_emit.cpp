@@ -48,6 +48,8 @@ EmittedFiles emit_files(const CompileContext& ctx, const LayerStack& stack, doub
     ini.library_paths.push_back(out_dir);
     for (const auto& p : ctx.library_paths) ini.library_paths.push_back(p);
     ini.antialias = ctx.options.antialias;
+    ini.clock = ctx.options.clock;
+    ini.declares = ctx.options.declares;
     EmittedFiles f;
     f.include = layers_include(stack, es);
     f.csv = layers_csv(stack, es.camera_y);

@@ -102,6 +102,9 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     lo.tolerance_px = opt.tolerance_px;
     lo.layers = opt.layers;
     lo.layer_count = opt.layer_count;
+    lo.clock = opt.clock;
+    lo.declares = opt.declares;
+    lo.mirage_inc = MirageIncCheck::Always;  // the layers reach POV-Ray through mirage.inc only
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
     ctx.scene = std::move(loaded->scene);
@@ -161,14 +164,15 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     auto accel = SceneAccel::build(scene);
     if (!accel) return accel.error();
     ctx.accel = std::make_shared<const SceneAccel>(std::move(*accel));
-    if (!(ctx.eye_y > 0.0)) {
-        // Named with the scene's own heights, and its planes as the likely ground.
-        std::optional<double> lowest;
-        if (!ctx.accel->finite_bounds().empty()) lowest = ctx.accel->finite_bounds().lo.y + ground;
-        return make_error(
-            camera_below_ground_message(ground != 0.0 ? as_parsed : scene, ground, lowest) +
-            (scene.has_camera ? "" : " (the scene has no camera: POV-Ray's default is at y = 0)"));
-    }
+    // (Heights above the atmosphere's ground: the camera's against the scene as parsed.)
+    if (auto s = check_camera_above_ground(ground != 0.0 ? as_parsed : scene, ground,
+                                           [&]() -> std::optional<double> {
+                                               const Aabb& b = ctx.accel->finite_bounds();
+                                               if (b.empty()) return std::nullopt;
+                                               return b.lo.y + ground;
+                                           });
+        !s)
+        return s.error();
 
     // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
     const glm::dvec3& eye = ctx.camera.location;

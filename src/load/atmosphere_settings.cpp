@@ -8,6 +8,7 @@
 
 #include "atmosphere/exact_path.h"
 #include "atmosphere/general_profile.h"
+#include "util/edit_distance.h"
 #include "util/format.h"
 
 namespace mirage {
@@ -65,19 +66,6 @@ bool internal_name(const std::string& name) {
 }
 
 std::string where(const Declared& d) { return to_string(d.loc) + ": "; }
-
-// Edit distance, for "did you mean".
-size_t distance(const std::string& a, const std::string& b) {
-    std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j)
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
 
 class Reader {
   public:
@@ -317,15 +305,7 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
         if (name.rfind("Mirage_", 0) != 0) continue;
         const auto& known = known_names();
         if (std::find(known.begin(), known.end(), name) != known.end()) continue;
-        std::string best;
-        size_t best_d = 4;
-        for (const std::string& k : known) {
-            const size_t dist = distance(name, k);
-            if (dist < best_d) {
-                best_d = dist;
-                best = k;
-            }
-        }
+        const std::string best = closest_name(name, known, 4);
         return make_error(where(d) + "unknown setting " + name +
                           (best.empty() ? "" : " (did you mean " + best + "?)"));
     }

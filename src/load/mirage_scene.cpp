@@ -1,10 +1,16 @@
 #include "load/mirage_scene.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <limits>
 
 #include "load/library_paths.h"
 #include "scene/camera.h"
+#include "scene/ground.h"
+#include "scene/keywords.h"
 #include "util/format.h"
 
 namespace mirage {
@@ -20,7 +26,50 @@ Status check_options(const SceneLoadOptions& o) {
     if (o.layer_count) {
         if (auto s = check_layer_count(*o.layer_count, "--count"); !s) return s;
     }
+    if (o.clock && !(std::abs(*o.clock) <= std::numeric_limits<float>::max()))
+        return make_error("--clock " + shortest(*o.clock) +
+                          ": beyond the range of POV-Ray's clock (a float, at most 3.4e+38)");
     return check_library_paths(o.library_paths);
+}
+
+/// POV-Ray's still at `clock` (+K): the clock as the float POV-Ray holds, clock_on set, the
+/// six frame identifiers 0 (vfe/vfe.cpp; src/animate/frame_plan.cpp plans the same).
+AnimationClock still_at(double clock) {
+    AnimationClock still;
+    still.clock = static_cast<float>(clock);
+    still.clock_on = true;
+    return still;
+}
+
+/// A Mirage_ setting the scene declares (the first by name), with its place, for the message
+/// of a scene that never includes mirage.inc.
+std::string first_setting(const Scene& scene) {
+    for (const auto& [name, d] : scene.symbols)
+        if (name.rfind("Mirage_", 0) == 0) return name + " at " + to_string(d.loc);
+    return "";
+}
+
+/// A scene that never includes mirage.inc, refused as `check` asks.
+Status check_mirage_inc(const Scene& scene, const AtmosphereSettings& settings,
+                        MirageIncCheck check) {
+    if (check == MirageIncCheck::None || includes_mirage_inc(scene)) return Ok{};
+    const std::string add =
+        "add #include \"mirage.inc\" after its #version line (plain POV-Ray finds it with "
+        "+Lpov_includes)";
+    if (settings.declared) {
+        const std::string setting = first_setting(scene);
+        return make_error(scene.file +
+                          ": the scene never includes mirage.inc, so POV-Ray renders it without "
+                          "the atmosphere it declares" +
+                          (setting.empty() ? "" : " (" + setting + ")") + ": " + add);
+    }
+    if (check == MirageIncCheck::IfDeclared) return Ok{};
+    return make_error(scene.file +
+                      ": the scene never includes mirage.inc and declares no atmosphere: there is "
+                      "nothing to compile; " +
+                      add +
+                      ", after a Mirage_ setting such as #declare Mirage_Preset = "
+                      "\"hot-road\"; (pov_includes/mirage.inc lists them)");
 }
 
 }  // namespace
@@ -103,19 +152,64 @@ Result<MirageScene> load_mirage_scene(const SceneLoadOptions& options) {
     po.strict = options.strict;
     po.limits = options.limits;
     po.object_queries = options.object_queries;
-    po.animation = options.animation;
+    po.animation = options.clock ? std::optional(still_at(*options.clock)) : options.animation;
+    po.declares = options.declares;
     auto parsed = parse_scene_file(options.scene, po);
     if (!parsed) return parsed.error();
     std::error_code ec;
     if (std::filesystem::file_size(options.scene, ec) == 0 && !ec)
         return make_error(options.scene + ": the file is empty: there is no scene to read");
     loaded.scene = std::move(*parsed);
+    // Without a camera POV-Ray renders from its default one, at the origin: on the ground.
+    if (!loaded.scene.has_camera)
+        return make_error(options.scene +
+                          ": the scene has no camera: POV-Ray would render it from its default "
+                          "camera at the origin, on the ground; add one, such as camera { "
+                          "location <0, 1.7, -10> look_at <0, 1.7, 0> }");
     auto settings = settle_mirage_scene(loaded.scene, options);
     if (!settings) return settings.error();
+    if (auto s = check_mirage_inc(loaded.scene, *settings, options.mirage_inc); !s)
+        return s.error();
     loaded.settings = std::move(*settings);
     // A sounding is an input of the scene: listed with its files, so no output replaces it.
     for (const std::string& f : loaded.settings.input_files) loaded.scene.files.push_back(f);
     return loaded;
+}
+
+bool includes_mirage_inc(const Scene& scene) {
+    for (std::size_t i = 1; i < scene.files.size(); ++i)
+        if (std::filesystem::path(scene.files[i]).filename() == "mirage.inc") return true;
+    return false;
+}
+
+Status check_camera_above_ground(const Scene& scene, double ground_height,
+                                 const std::function<std::optional<double>()>& lowest_object_y) {
+    if (scene.camera.location.y - ground_height > 0.0) return Ok{};
+    return make_error(camera_below_ground_message(scene, ground_height, lowest_object_y()));
+}
+
+Result<std::pair<std::string, double>> parse_declare(const std::string& text) {
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos)
+        return make_error(text + ": give NAME=VALUE, as POV-Ray's Declare=NAME=VALUE");
+    const std::string name = text.substr(0, eq), value = text.substr(eq + 1);
+    const bool identifier =
+        !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+        std::all_of(name.begin(), name.end(),
+                    [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+    if (!identifier)
+        return make_error(text + ": '" + name +
+                          "' is not a name POV-Ray can declare (letters, digits and '_', not "
+                          "beginning with a digit)");
+    if (is_reserved_word(name))
+        return make_error(text + ": '" + name + "' is a word of POV-Ray's language");
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (value.empty() || std::isspace(static_cast<unsigned char>(value[0])) ||
+        end != value.c_str() + value.size() || !std::isfinite(v))
+        return make_error(text + ": '" + value +
+                          "' is not a number (POV-Ray 3.7's Declare= takes numbers only)");
+    return std::pair{name, v};
 }
 
 }  // namespace mirage

@@ -8,8 +8,11 @@
 //   compare, animate, cli
 #pragma once
 
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "load/atmosphere_settings.h"
@@ -26,6 +29,15 @@ constexpr int kMaxImageSide = 20000;
 /// (atmosphere/sampler.h, kMinToleranceRad).
 constexpr double kMinPixelRad = 1e-7;
 
+/// When a scene that never includes mirage.inc is refused.  Without it POV-Ray renders no
+/// mirage: the compiled layers reach POV-Ray only through it (pov_includes/mirage.inc).
+enum class MirageIncCheck {
+    None,        // not checked (tools that read a scene's settings only)
+    IfDeclared,  // when the scene declares an atmosphere (trace: it would render a mirage
+                 // that POV-Ray never shows)
+    Always,      // compile: its layers have no other way into the scene
+};
+
 struct SceneLoadOptions {
     std::string scene;                        // the .pov file
     int width = 320, height = 240;            // the render's size, pixels
@@ -35,6 +47,11 @@ struct SceneLoadOptions {
     std::optional<LayerMode> layers;          // --layers: replaces Mirage_Layers
     std::optional<int> layer_count;           // --count: replaces Mirage_Layer_Count
     std::optional<AnimationClock> animation;  // this frame's clock (unset: the thread's)
+    std::optional<double> clock;              // --clock (POV-Ray's +K): a still at this clock,
+                                              // in place of `animation`
+    std::map<std::string, double> declares;   // --declare (POV-Ray's Declare=), defined before
+                                              // the scene is parsed
+    MirageIncCheck mirage_inc = MirageIncCheck::None;
     ParseLimits limits;
     ObjectQueries object_queries;  // trace() and the like (ParseOptions::object_queries)
 };
@@ -58,13 +75,31 @@ Status check_image_size(int width, int height);
 Status check_library_paths(const std::vector<std::string>& paths);
 
 /// Reads the scene file: checks the size, parses with the user's include directories, then
-/// the scene's own directory, the project's pov_includes and POV-Ray's, reads and checks the
-/// Mirage_ settings, applies the options' replacements and checks the camera.  An error
-/// names the file (and its line and column) or the option at fault.
+/// the scene's own directory, the project's pov_includes and POV-Ray's, refuses a scene
+/// without a camera, reads and checks the Mirage_ settings, applies the options'
+/// replacements, checks the camera and the include of mirage.inc (SceneLoadOptions::
+/// mirage_inc).  An error names the file (and its line and column) or the option at fault.
 Result<MirageScene> load_mirage_scene(const SceneLoadOptions& options);
 
 /// What load_mirage_scene checks after the parse, for a scene parsed already: the Mirage_
 /// settings with the options' replacements, and the camera's place.
 Result<AtmosphereSettings> settle_mirage_scene(const Scene& scene, const SceneLoadOptions& options);
+
+/// Whether the scene, or a file it includes, includes mirage.inc (the parser lists every file
+/// it read in Scene::files).
+bool includes_mirage_inc(const Scene& scene);
+
+/// Checks that the camera is above the atmosphere's ground (y = `ground_height`, from
+/// Mirage_Ground_Height), with camera_below_ground_message's message (scene/ground.h): the one
+/// check of compile and trace.  `scene` as parsed (not lowered); `lowest_object_y`, asked only
+/// when the camera is refused, gives the lowest point of the scene's bounded objects, as
+/// parsed, if any (for a scene without a horizontal plane under the camera).
+Status check_camera_above_ground(const Scene& scene, double ground_height,
+                                 const std::function<std::optional<double>()>& lowest_object_y);
+
+/// Reads `--declare NAME=VALUE` (POV-Ray's Declare=NAME=VALUE): NAME an identifier POV-Ray
+/// can declare, VALUE a number (POV-Ray 3.7's Declare= takes numbers only).  An error names
+/// the text and the part at fault.
+Result<std::pair<std::string, double>> parse_declare(const std::string& text);
 
 }  // namespace mirage

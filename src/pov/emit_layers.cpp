@@ -165,6 +165,11 @@ std::string render_ini(const IniSettings& st) {
         out << "Antialias=Off\n";
     }
     for (const auto& p : st.library_paths) out << "Library_Path=" << quote(p) << "\n";
+    // The clock as the float POV-Ray holds (its nine digits give that float back); the
+    // declared numbers in full.
+    if (st.clock) out << "Clock=" << sig(static_cast<float>(*st.clock), 9) << "\n";
+    for (const auto& [name, value] : st.declares)
+        out << "Declare=" << name << "=" << g17(value) << "\n";
     out << "Declare=Mirage_Compiled=1\n";
     return out.str();
 }

@@ -10,6 +10,7 @@
 // bounds it tightly; layers are invisible (rgbf 1, no finish) and cast no shadow.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,6 +69,8 @@ struct IniSettings {
     std::vector<std::string> library_paths;  // absolute, searched in order
     bool antialias = false;
     double antialias_threshold = 0.3;
+    std::optional<double> clock;             // Clock= (POV-Ray's +K): the still's clock
+    std::map<std::string, double> declares;  // Declare=NAME=VALUE, before Mirage_Compiled
 };
 
 /// The text of the .ini that renders the scene with its compiled layers.

@@ -57,11 +57,26 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     lo.strict = true;  // the tracer renders every object: none may be left out silently
     lo.object_queries = tracer_object_queries();
     lo.tolerance_px = opt.tolerance_px;
+    lo.clock = opt.clock;
+    lo.declares = opt.declares;
+    // The mirage traced must be one POV-Ray shows too; straight rays need no mirage.inc.
+    lo.mirage_inc = opt.atmosphere ? MirageIncCheck::IfDeclared : MirageIncCheck::None;
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
     const AtmosphereSettings& settings = loaded->settings;
-    // Heights above the atmosphere's ground (scene/ground.h); straight rays need no ground.
-    if (opt.atmosphere && settings.declared) lower_scene(loaded->scene, settings.ground_height);
+    if (opt.atmosphere && settings.declared) {
+        // A camera under the atmosphere's ground is refused as compile refuses it (its rays
+        // would start under the ground and see the ground's underside).
+        auto lowest = [&]() -> std::optional<double> {
+            auto accel = SceneAccel::build(loaded->scene);
+            if (!accel || accel->finite_bounds().empty()) return std::nullopt;
+            return accel->finite_bounds().lo.y;
+        };
+        if (auto s = check_camera_above_ground(loaded->scene, settings.ground_height, lowest); !s)
+            return s.error();
+        // Heights above the atmosphere's ground (scene/ground.h); straight rays need no ground.
+        lower_scene(loaded->scene, settings.ground_height);
+    }
     const Scene& scene = loaded->scene;
     // The image may replace no file the scene was read from; refused before the render.
     OutputSet outputs(scene.files);

@@ -5,6 +5,7 @@
 // cores and writes the image through a temporary name.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,8 @@ struct TraceOptions {
     bool reference_sampling = false;         // per-ray paths sampled to the tolerance all along
     std::vector<std::string> library_paths;  // extra include directories, searched first
     bool progress = true;                    // progress bar on stderr when it is a terminal
+    std::optional<double> clock;             // --clock (POV-Ray's +K): a still at this clock
+    std::map<std::string, double> declares;  // --declare (POV-Ray's Declare=)
 };
 
 struct TraceReport {

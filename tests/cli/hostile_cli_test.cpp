@@ -75,7 +75,7 @@ TEST(HostileCli, NoOutputReplacesAnInput) {
                          "file it includes)\n");
     EXPECT_EQ(snapshot(dir), before);
     // An included file is an input too.
-    write_bytes(dir / "air.inc", "#declare Mirage_Preset = \"paper\";\n");
+    write_bytes(dir / "air.inc", "#declare Mirage_Preset = \"paper\";\n#include \"mirage.inc\"\n");
     write_bytes(dir / "inc.pov",
           "#include \"air.inc\"\ncamera { location <0, 1.5, 0> look_at <0, 1.5, 1> }\n");
     before = snapshot(dir);

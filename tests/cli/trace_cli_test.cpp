@@ -82,8 +82,7 @@ TEST(TraceCli, UsageErrorsComeFromTheCommandLineParser) {
     auto flag = run_tool("trace " + scene + " -o /tmp/x.png --bogus");
     EXPECT_EQ(flag.exit_code, 2);
     EXPECT_EQ(flag.err,
-              "The following argument was not expected: --bogus\n"
-              "Run with --help for more information.\n");
+              "mirage trace: unknown option --bogus (mirage trace --help lists its options)\n");
     auto no_output = run_tool("trace " + scene);
     EXPECT_EQ(no_output.exit_code, 2);
     EXPECT_EQ(no_output.err, "--output is required\nRun with --help for more information.\n");

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "scene/ground.h"
+
 namespace mirage {
 namespace {
 
@@ -130,6 +132,137 @@ TEST_F(MirageSceneLoad, AFileThatIsNoSceneSaysWhy) {
     EXPECT_EQ(load_error("/dev/zero"),
               "/dev/zero: is not a regular file (a device, a pipe or a socket?): scenes are read "
               "from files");
+}
+
+TEST_F(MirageSceneLoad, ASceneWithoutACameraIsRefusedFirst) {
+    // Before its settings are read: the bad tolerance is not the message.
+    const fs::path p = dir_ / "nocam.pov";
+    std::ofstream(p) << "#declare Mirage_Preset = \"paper\";\n#declare Mirage_Tolerance = 0;\n"
+                        "sphere { <0, 1, 10>, 1 }\n";
+    EXPECT_EQ(load_error(p.string()),
+              p.string() +
+                  ": the scene has no camera: POV-Ray would render it from its default camera at "
+                  "the origin, on the ground; add one, such as camera { location <0, 1.7, -10> "
+                  "look_at <0, 1.7, 0> }");
+}
+
+TEST_F(MirageSceneLoad, TheIncludeOfMirageIncIsCheckedAsTheCommandAsks) {
+    const std::string message =
+        ": add #include \"mirage.inc\" after its #version line (plain POV-Ray finds it with "
+        "+Lpov_includes)";
+    // Settings without the include: POV-Ray would render no mirage.
+    const std::string bare = scene("#version 3.7;\n#declare Mirage_Preset = \"paper\";");
+    SceneLoadOptions o;
+    o.mirage_inc = MirageIncCheck::IfDeclared;
+    EXPECT_EQ(load_error(bare, o),
+              bare +
+                  ": the scene never includes mirage.inc, so POV-Ray renders it without the "
+                  "atmosphere it declares (Mirage_Preset at " +
+                  bare + ":2:10)" + message);
+    o.mirage_inc = MirageIncCheck::Always;
+    EXPECT_NE(load_error(bare, o).find("never includes mirage.inc"), std::string::npos);
+    o.mirage_inc = MirageIncCheck::None;  // the loader's own default: not checked
+    o.scene = bare;
+    EXPECT_TRUE(load_mirage_scene(o).ok());
+    // No atmosphere and no include: a plain scene, refused only where the include is required.
+    const std::string plain = scene("#version 3.7;");
+    o.mirage_inc = MirageIncCheck::IfDeclared;
+    o.scene = plain;
+    EXPECT_TRUE(load_mirage_scene(o).ok());
+    o.mirage_inc = MirageIncCheck::Always;
+    EXPECT_EQ(load_error(plain, o),
+              plain +
+                  ": the scene never includes mirage.inc and declares no atmosphere: there is "
+                  "nothing to compile; add #include \"mirage.inc\" after its #version line "
+                  "(plain POV-Ray finds it with +Lpov_includes), after a Mirage_ setting such "
+                  "as #declare Mirage_Preset = \"hot-road\"; (pov_includes/mirage.inc lists "
+                  "them)");
+    // Included through another include: found.
+    std::ofstream(dir_ / "air.inc") << "#declare Mirage_Preset = \"paper\";\n"
+                                       "#include \"mirage.inc\"\n";
+    o.scene = scene("#version 3.7;\n#include \"air.inc\"");
+    auto loaded = load_mirage_scene(o);
+    ASSERT_TRUE(loaded.ok()) << loaded.message();
+    EXPECT_TRUE(includes_mirage_inc(loaded->scene));
+}
+
+TEST_F(MirageSceneLoad, TheShippedScenesIncludeMirageInc) {
+    for (const auto& e : fs::directory_iterator(fs::path(MIRAGE_SOURCE_DIR) / "scenes")) {
+        if (e.path().extension() != ".pov") continue;
+        SceneLoadOptions o;
+        o.scene = e.path().string();
+        o.strict = false;
+        o.width = 64;
+        o.height = 48;
+        o.mirage_inc = MirageIncCheck::Always;
+        auto r = load_mirage_scene(o);
+        EXPECT_TRUE(r.ok()) << r.message();
+    }
+}
+
+TEST_F(MirageSceneLoad, ACameraUnderTheGroundHasOneMessage) {
+    SceneLoadOptions o;
+    o.scene = scene("#declare Mirage_Preset = \"paper\";\nplane { y, 0 }", "<0, -0.5, 0>");
+    auto r = load_mirage_scene(o);
+    ASSERT_TRUE(r.ok()) << r.message();
+    int asked = 0;
+    auto lowest = [&]() -> std::optional<double> {
+        ++asked;
+        return 0.0;
+    };
+    const Status s = check_camera_above_ground(r->scene, 0.0, lowest);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.message(), camera_below_ground_message(r->scene, 0.0, 0.0));
+    EXPECT_NE(s.message().find(o.scene + ":3:1: the camera at y = -0.5 is not above the ground"),
+              std::string::npos)
+        << s.message();
+    // Above the ground (Mirage_Ground_Height lowers it): accepted, the objects not looked at.
+    asked = 0;
+    EXPECT_TRUE(check_camera_above_ground(r->scene, -1.0, lowest).ok());
+    EXPECT_EQ(asked, 0);
+    EXPECT_FALSE(check_camera_above_ground(r->scene, -0.5, lowest).ok());  // on it: refused
+}
+
+TEST_F(MirageSceneLoad, TheClockAndTheDeclaredNumbersReachTheParse) {
+    const fs::path p = dir_ / "frame.pov";
+    std::ofstream(p) << "camera { location <0, 1 + clock + Lift, 0> look_at <0, 1, 10> }\n"
+                        "#declare On = clock_on;\n";
+    SceneLoadOptions o;
+    o.scene = p.string();
+    o.declares = {{"Lift", 2.0}};
+    auto still = load_mirage_scene(o);
+    ASSERT_TRUE(still.ok()) << still.message();
+    EXPECT_DOUBLE_EQ(still->scene.camera.location.y, 3.0);
+    EXPECT_EQ(std::get<double>(still->scene.symbols.at("On").value), 0.0);
+    o.clock = 0.1;
+    auto frame = load_mirage_scene(o);
+    ASSERT_TRUE(frame.ok()) << frame.message();
+    // POV-Ray's clock is a float: 0.1 as that float.
+    EXPECT_EQ(frame->scene.camera.location.y, 1.0 + static_cast<float>(0.1) + 2.0);
+    EXPECT_EQ(std::get<double>(frame->scene.symbols.at("On").value), 1.0);
+    o.clock = 1e39;
+    EXPECT_EQ(load_error(p.string(), o),
+              "--clock 1e+39: beyond the range of POV-Ray's clock (a float, at most 3.4e+38)");
+}
+
+TEST(ParseDeclare, NameAndNumber) {
+    auto d = parse_declare("Lift=2.5e-1");
+    ASSERT_TRUE(d.ok()) << d.message();
+    EXPECT_EQ(d->first, "Lift");
+    EXPECT_DOUBLE_EQ(d->second, 0.25);
+    EXPECT_EQ(parse_declare("Lift").message(),
+              "Lift: give NAME=VALUE, as POV-Ray's Declare=NAME=VALUE");
+    EXPECT_EQ(parse_declare("Lift=high").message(),
+              "Lift=high: 'high' is not a number (POV-Ray 3.7's Declare= takes numbers only)");
+    EXPECT_EQ(parse_declare("Lift=").message(),
+              "Lift=: '' is not a number (POV-Ray 3.7's Declare= takes numbers only)");
+    EXPECT_EQ(parse_declare("Lift=1e999").message(),
+              "Lift=1e999: '1e999' is not a number (POV-Ray 3.7's Declare= takes numbers only)");
+    EXPECT_EQ(parse_declare("2x=1").message(),
+              "2x=1: '2x' is not a name POV-Ray can declare (letters, digits and '_', not "
+              "beginning with a digit)");
+    EXPECT_EQ(parse_declare("sphere=1").message(),
+              "sphere=1: 'sphere' is a word of POV-Ray's language");
 }
 
 }  // namespace
