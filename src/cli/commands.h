@@ -11,6 +11,7 @@ void setup_trace_command(CLI::App& app);
 void setup_compare_command(CLI::App& app);
 void setup_animate_command(CLI::App& app);
 void setup_study_command(CLI::App& app);
+void setup_frame_command(CLI::App& app);
 
 /// For options that name a file or a folder: an empty value (`-o ''`) is refused as the
 /// option is read, instead of standing for "not given".
