@@ -314,6 +314,11 @@ ObjectReading read_object(const Atmosphere& atmosphere, const FrameView& view,
     const Section s = section_of(view, object);
     r.distance = s.distance;
     r.top = object.hi.y;
+    {
+        double x, y;
+        const glm::dvec3 c = 0.5 * (object.lo + object.hi) - view.camera.location;
+        if (project(view, c, x, y)) r.column = x;
+    }
     const double grazing = grazing_elevation(atmosphere, view.eye_y);
     r.direct = image_span(atmosphere, view, s, false, grazing);
     r.mirrored = image_span(atmosphere, view, s, true, grazing);
@@ -607,6 +612,17 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
                                                         metres(r.vanishing, u)
                                                   : "is lost beyond " + metres(r.farthest, u));
         advice.push_back(s);
+        if (r.distance > r.farthest) {
+            // Too far: the turned rays pass above it.  Nearer, within its range.
+            for (const DistanceOption& d : f.distances)
+                if (d.object == k)
+                    advice.push_back("  move it nearer, to " + metres(d.distance, u) +
+                                     ": its mirrored image would be " +
+                                     sig(d.mirrored.angular_size_rad() * deg, 3) + " deg, " +
+                                     sig(d.mirrored.angular_size_rad() / f.pixel_rad, 3) +
+                                     " rows tall");
+            continue;
+        }
         // Lower the camera: the highest of the lower heights that brings the vanishing distance
         // below the object's distance, else the lowest tried (an eye at the top's own height
         // sees it along rays that turn at once, a sliver at the horizon: not counted).

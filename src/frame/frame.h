@@ -100,6 +100,7 @@ struct ObjectReading {
     FrameObject object;
     double distance = 0.0;    // horizontal, eye to the box's centre, scene units
     double top = 0.0;         // the box's top above the ground, scene units
+    double column = std::numeric_limits<double>::quiet_NaN();  // its centre's image column
     ImageSpan direct;         // seen along rays that meet it before any turn
     ImageSpan mirrored;       // seen along rays that turn first (inferior mirage)
     // Where the mirrored image of a point at its top height is seen from (mirror_reach, as

@@ -180,6 +180,7 @@ nlohmann::json frame_json(const FrameReading& f) {
         o["kind"] = r.object.kind;
         o["distance_m"] = m(r.distance, f);
         o["top_m"] = m(r.top, f);
+        o["column"] = r.column;
         o["direct"] = image_json(r.direct);
         o["mirrored"] = image_json(r.mirrored);
         o["vanishing_distance_m"] = m(r.vanishing, f);
@@ -274,8 +275,8 @@ Image frame_overlay(const FrameReading& f, const Image& background) {
                 blend(x1, y, OverlayKey::kMirrored, 1.0f);
             }
         }
-        if (std::isfinite(r.vanishing_row)) {
-            const double col = r.direct.visible ? r.direct.column : r.mirrored.column;
+        if (std::isfinite(r.vanishing_row) && std::isfinite(r.column)) {
+            const double col = r.column;
             line(r.vanishing_row, OverlayKey::kVanishing, static_cast<int>(col) - half,
                  static_cast<int>(col) + half);
         }
