@@ -1,11 +1,11 @@
 // own_scene.pov: a scene as a user might write one, with a camera at eye height (1.7 m), a house
 // of boxes, a car and a ball on a pole over a hot road.  In real air (hot-road) the mirage is
-// there but a fraction of a degree tall: `mirage frame scenes/own_scene.pov` says how large it
-// is in this frame and what would show it (docs/framing.md).  Declare before the include:
+// there but a fraction of a degree tall: `mirage frame` says how large it is in this frame and
+// what would show it (docs/framing.md; own_scene_far.pov and own_scene_exaggerated.pov follow
+// its advice).  Declare before including this file:
 //   Frame_Angle, Frame_Eye (m), Frame_Far (how far the objects are moved back, m)
-//
-//   build/mirage frame scenes/own_scene.pov
-//   build/mirage trace scenes/own_scene.pov -o own.png
+//   build/mirage frame docs/examples/own_scene.pov
+//   build/mirage trace docs/examples/own_scene.pov -o own.png
 #version 3.7;
 
 #declare Mirage_Preset = "hot-road";
