@@ -340,7 +340,8 @@ ObjectReading read_object(const Atmosphere& atmosphere, const FrameView& view,
         const double y0 = view.eye_y;
         const double straight = std::atan2(r.top - y0, r.vanishing);
         const double spread = (std::isfinite(grazing) ? 2.0 * std::abs(grazing) : 0.0) + 1e-3;
-        double lo = std::max(straight - spread, -kSteepest), hi = std::min(straight + spread, kSteepest);
+        double lo = std::max(straight - spread, -kSteepest),
+               hi = std::min(straight + spread, kSteepest);
         auto above = [&](double e) {
             auto p = ExactPath::make(atmosphere, y0, 0.5 * kPi - e);
             if (!p || (p->hits_ground() && p->dz_ground() < r.vanishing)) return false;
@@ -376,8 +377,8 @@ double camera_angle_deg(const Camera& camera) {
 Camera with_angle(const Camera& camera, double angle_deg) {
     Camera c = camera;
     // POV-Ray's `angle`: direction's length |right| / (2 tan(angle / 2)).
-    c.direction = glm::normalize(camera.direction) * (0.5 * glm::length(camera.right) /
-                                                      std::tan(0.5 * angle_deg * kPi / 180.0));
+    c.direction = glm::normalize(camera.direction) *
+                  (0.5 * glm::length(camera.right) / std::tan(0.5 * angle_deg * kPi / 180.0));
     return c;
 }
 
@@ -433,8 +434,8 @@ bool mirrored_from(double distance, double vanishing, double farthest) {
 }  // namespace
 
 Result<FrameReading> frame_scene(const FrameOptions& options) {
-    SceneLoadOptions lo = scene_load_options(options.scene, options.width, options.height,
-                                             options.library_paths);
+    SceneLoadOptions lo =
+        scene_load_options(options.scene, options.width, options.height, options.library_paths);
     lo.strict = false;  // the objects' boxes are enough
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
@@ -465,6 +466,7 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
     auto atmosphere = scene_atmosphere(settings, tolerance_rad);
     if (!atmosphere) return make_error(options.scene + ": " + atmosphere.message());
     const double R = atmosphere->earth_radius();
+    f.earth_radius = R;
 
     auto objects = frame_objects(scene);
     if (!objects) return objects.error();
@@ -503,8 +505,8 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
         FrameView v = view;
         v.camera = with_angle(scene.camera, a);
         const ColumnReading c = read_column(*atmosphere, v);
-        f.lenses.push_back({a, c.turning_low.count, c.turning_low_in_reach.count,
-                            c.turning_high.count});
+        f.lenses.push_back(
+            {a, c.turning_low.count, c.turning_low_in_reach.count, c.turning_high.count});
     }
     // Camera heights: the scene's and lower ones.
     const double eye_m = scene.camera.location.y * settings.unit_m;
@@ -582,7 +584,8 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
                              " deg below the horizon, and only what stands beyond about " +
                              metres(f.ground_ends, u) +
                              " (where the grazing ray touches the ground) can be mirrored whole; "
-                             "the scene reaches " + metres(view.reach, u));
+                             "the scene reaches " +
+                             metres(view.reach, u));
         const int rows = f.column.turning_low.count;
         if (rows < target) {
             for (const LensOption& l : f.lenses) {
@@ -598,18 +601,16 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
             advice.push_back(s);
         }
     }
-    const double lens_pixel_rad =
-        lens ? pixel_angle_rad(with_angle(scene.camera, lens->angle_deg), options.width,
-                               options.height)
-             : f.pixel_rad;
+    const double lens_pixel_rad = lens ? pixel_angle_rad(with_angle(scene.camera, lens->angle_deg),
+                                                         options.width, options.height)
+                                       : f.pixel_rad;
     for (int k = 0; k < static_cast<int>(f.objects.size()); ++k) {
         const ObjectReading& r = f.objects[k];
         if (seen(r.mirrored, f.pixel_rad) || !std::isfinite(r.vanishing)) continue;
         const std::string name = short_name(r.object);
-        std::string s = name + " is " + metres(r.distance, u) + " away; the mirrored image of its " +
-                        metres(r.top, u) + " top " +
-                        (r.distance < r.vanishing ? "vanishes nearer than " +
-                                                        metres(r.vanishing, u)
+        std::string s = name + " is " + metres(r.distance, u) +
+                        " away; the mirrored image of its " + metres(r.top, u) + " top " +
+                        (r.distance < r.vanishing ? "vanishes nearer than " + metres(r.vanishing, u)
                                                   : "is lost beyond " + metres(r.farthest, u));
         advice.push_back(s);
         if (r.distance > r.farthest) {

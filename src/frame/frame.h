@@ -45,7 +45,7 @@ RayOutcome ray_outcome(const Atmosphere& atmosphere, double y0, double elevation
 /// The view a frame is read in: the camera (a perspective one) at its height above the
 /// atmosphere's ground, the image size and the scene's horizontal reach.
 struct FrameView {
-    Camera camera;     // heights above the ground (the scene lowered by Mirage_Ground_Height)
+    Camera camera;  // heights above the ground (the scene lowered by Mirage_Ground_Height)
     int width = 320, height = 240;
     double eye_y = 0.0;  // the eye's model height (flattened on the curved Earth)
     double reach = 0.0;  // horizontal reach of the scene from the eye, scene units
@@ -79,7 +79,7 @@ ColumnReading read_column(const Atmosphere& atmosphere, const FrameView& view);
 struct FrameObject {
     std::string name;  // "box at scene.pov:12:3"
     FileLoc loc;
-    std::string kind;  // the shape's keyword, or "union", "merge", "intersection"
+    std::string kind;             // the shape's keyword, or "union", "merge", "intersection"
     glm::dvec3 lo{0.0}, hi{0.0};  // its box, heights above the ground
 };
 
@@ -98,11 +98,11 @@ struct ImageSpan {
 
 struct ObjectReading {
     FrameObject object;
-    double distance = 0.0;    // horizontal, eye to the box's centre, scene units
-    double top = 0.0;         // the box's top above the ground, scene units
+    double distance = 0.0;  // horizontal, eye to the box's centre, scene units
+    double top = 0.0;       // the box's top above the ground, scene units
     double column = std::numeric_limits<double>::quiet_NaN();  // its centre's image column
-    ImageSpan direct;         // seen along rays that meet it before any turn
-    ImageSpan mirrored;       // seen along rays that turn first (inferior mirage)
+    ImageSpan direct;    // seen along rays that meet it before any turn
+    ImageSpan mirrored;  // seen along rays that turn first (inferior mirage)
     // Where the mirrored image of a point at its top height is seen from (mirror_reach, as
     // `mirage path --object-height`): nearer than `vanishing`, or farther than `farthest`, no
     // ray from the eye turns and reaches it.  NaN when the air has no such ray.
@@ -135,21 +135,21 @@ struct LensOption {
 };
 
 struct HeightOption {
-    double eye_height = 0.0;          // above the ground, scene units
+    double eye_height = 0.0;  // above the ground, scene units
     double apparent_depression_rad = 0.0;
-    double ground_ends = 0.0;         // where the grazing ray touches the ground (inf: never)
+    double ground_ends = 0.0;  // where the grazing ray touches the ground (inf: never)
     int band_rows = 0;
-    std::vector<double> vanishing;    // per object, its top's vanishing distance (NaN: none)
+    std::vector<double> vanishing;  // per object, its top's vanishing distance (NaN: none)
 };
 
 struct DistanceOption {
-    int object = -1;            // index into FrameReading::objects
-    double distance = 0.0;      // scene units
-    ImageSpan mirrored;         // its mirrored image there
+    int object = -1;        // index into FrameReading::objects
+    double distance = 0.0;  // scene units
+    ImageSpan mirrored;     // its mirrored image there
 };
 
 struct ExaggerationOption {
-    double factor = 1.0;              // times the scene's own (Mirage_Exaggeration)
+    double factor = 1.0;  // times the scene's own (Mirage_Exaggeration)
     double apparent_depression_rad = 0.0;
     int band_rows = 0;
     int band_rows_in_reach = 0;
@@ -161,18 +161,19 @@ struct ExaggerationOption {
 struct FrameReading {
     std::string scene;
     std::vector<std::string> files;  // every file the scene was read from
-    std::string atmosphere;     // the settings' label
-    double unit_m = 1.0;        // metres per scene unit
-    double exaggeration = 1.0;  // the scene's Mirage_Exaggeration
+    std::string atmosphere;          // the settings' label
+    double unit_m = 1.0;             // metres per scene unit
+    double earth_radius = 0.0;       // of the model's flattened frame, scene units (0: flat ground)
+    double exaggeration = 1.0;       // the scene's Mirage_Exaggeration
     FrameView view;
     double pixel_rad = 0.0;
     double true_horizon_row = 0.0;
     bool inferior = false, superior = false;  // rays turn low / high somewhere below / above
     double apparent_horizon_rad = 0.0;        // elevation of the grazing ray (inferior)
     double apparent_horizon_row = 0.0;
-    double ground_ends = 0.0;       // the grazing ray's turning distance, scene units
+    double ground_ends = 0.0;            // the grazing ray's turning distance, scene units
     double band_top_in_reach_rad = 0.0;  // highest ray turning within the reach (inferior)
-    double apex_limit_rad = 0.0;    // superior: the highest ray that still comes down
+    double apex_limit_rad = 0.0;         // superior: the highest ray that still comes down
     ColumnReading column;
     std::vector<ObjectReading> objects;
     std::vector<LensOption> lenses;

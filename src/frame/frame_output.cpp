@@ -61,10 +61,15 @@ std::string frame_text(const FrameReading& f) {
     o << "true horizon row " << rows_text(f.true_horizon_row) << " (the horizontal direction)\n";
     if (f.inferior) {
         const double depression = -f.apparent_horizon_rad;
-        o << "apparent horizon row " << rows_text(f.apparent_horizon_row) << ", "
-          << deg(depression) << " (" << sig(depression / f.pixel_rad, 3)
+        o << "apparent horizon row " << rows_text(f.apparent_horizon_row) << ", " << deg(depression)
+          << " (" << sig(depression / f.pixel_rad, 3)
           << " rows) below the true horizon: the grazing ray, touching the ground "
           << sig(m(f.ground_ends, f), 4) << " m away; steeper rays meet the ground\n";
+        if (f.earth_radius > 0.0)
+            o << "  (on the curved Earth, radius " << sig(m(f.earth_radius, f) / 1000.0, 5)
+              << " km: heights are above the sphere, and the apparent horizon is the visible "
+                 "horizon, its dip the Earth's curvature and the air's bending together; the "
+                 "rays above it pass over the horizon)\n";
         o << "mirage band  " << span_text(f.column.turning_low)
           << ": rays that turn before the ground (the mirrored sky)\n";
         o << "  in reach   " << span_text(f.column.turning_low_in_reach)
@@ -80,7 +85,8 @@ std::string frame_text(const FrameReading& f) {
           << deg(f.apex_limit_rad) << "\n";
         o << "  in reach   " << span_text(f.column.turning_high_in_reach) << "\n";
     }
-    if (!f.inferior && !f.superior) o << "no ray of the centre column turns: no mirage in this frame\n";
+    if (!f.inferior && !f.superior)
+        o << "no ray of the centre column turns: no mirage in this frame\n";
     o << "\nobjects (heights above the ground; images in the vertical plane through the eye and "
          "the object's centre)\n";
     for (const ObjectReading& r : f.objects) {
@@ -91,8 +97,7 @@ std::string frame_text(const FrameReading& f) {
         o << "    mirrored image  " << image_text(r.mirrored) << "\n";
         if (std::isfinite(r.vanishing)) {
             o << "    its top is mirrored from eye distances " << sig(m(r.vanishing, f), 4)
-              << " to " << sig(m(r.farthest, f), 4)
-              << " m (nearer, its mirrored image vanishes)";
+              << " to " << sig(m(r.farthest, f), 4) << " m (nearer, its mirrored image vanishes)";
             if (std::isfinite(r.vanishing_row))
                 o << "; vanishing mark at row " << rows_text(r.vanishing_row);
             o << "\n";
@@ -152,6 +157,7 @@ nlohmann::json frame_json(const FrameReading& f) {
     j["width"] = v.width;
     j["height"] = v.height;
     j["atmosphere"] = f.atmosphere;
+    j["earth_radius_m"] = m(f.earth_radius, f);
     j["exaggeration"] = f.exaggeration;
     j["eye_height_m"] = m(v.camera.location.y, f);
     j["angle_deg"] = camera_angle_deg(v.camera);

@@ -51,8 +51,8 @@ TEST(Exaggeration, OneLeavesTheRenderByteIdentical) {
     const auto a = test_temp_path("plain.png"), b = test_temp_path("one.png"),
                c = test_temp_path("ten.png");
     for (const auto& [scene, out] : {std::pair{plain, a}, std::pair{one, b}, std::pair{ten, c}}) {
-        const auto run = run_tool("trace " + testing::quoted(scene) + " -o " + testing::quoted(out) +
-                                  " -W 80 -H 60 -q --threads 1");
+        const auto run = run_tool("trace " + testing::quoted(scene) + " -o " +
+                                  testing::quoted(out) + " -W 80 -H 60 -q --threads 1");
         ASSERT_EQ(run.exit_code, 0) << run.err;
     }
     EXPECT_FALSE(read_bytes(a).empty());
@@ -76,8 +76,7 @@ TEST(Exaggeration, ScalesTheIndexExcessOverTheGround) {
               std::string::npos)
         << k4->settings.profile_label;
     for (double y : {0.1, 0.5, 2.0, 10.0})
-        EXPECT_NEAR(eta_sq(q, y) - eta_sq(q, 0.0), 0.04 * (eta_sq(p, y) - eta_sq(p, 0.0)),
-                    1e-15);
+        EXPECT_NEAR(eta_sq(q, y) - eta_sq(q, 0.0), 0.04 * (eta_sq(p, y) - eta_sq(p, 0.0)), 1e-15);
     // 1 is no exaggeration at all: the same profile to the bit, and no word of it.
     auto one = load(write_scene(
         "k1.pov", "#declare Mirage_Preset = \"paper\";\n#declare Mirage_Exaggeration = 1;"));
@@ -151,8 +150,9 @@ TEST(Exaggeration, RangeAndPlaceAreChecked) {
     auto zero = load(write_scene(
         "z.pov", "#declare Mirage_Preset = \"hot-road\";\n#declare Mirage_Exaggeration = 0;"));
     ASSERT_FALSE(zero.ok());
-    EXPECT_NE(zero.message().find("z.pov:3:10: Mirage_Exaggeration = 0 must be from 0.001 to 10000"),
-              std::string::npos)
+    EXPECT_NE(
+        zero.message().find("z.pov:3:10: Mirage_Exaggeration = 0 must be from 0.001 to 10000"),
+        std::string::npos)
         << zero.message();
     auto none = load(write_scene("n.pov", "#declare Mirage_Exaggeration = 10;"));
     ASSERT_FALSE(none.ok());

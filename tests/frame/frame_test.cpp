@@ -39,8 +39,7 @@ std::string write_scene(const std::string& name, const std::string& settings, do
     return p.string();
 }
 
-Result<FrameReading> read(const std::string& scene, bool advise = false, int w = 320,
-                          int h = 240) {
+Result<FrameReading> read(const std::string& scene, bool advise = false, int w = 320, int h = 240) {
     FrameOptions o;
     o.scene = scene;
     o.width = w;
@@ -66,9 +65,8 @@ bool row_turns_low(const Atmosphere& atm, const Camera& camera, int w, int h, in
 
 TEST(Frame, MirageBandRowsAreTheRowsWhoseExactRayTurns) {
     // Hot road at 1.7 m through a 4 degree lens: the band is some tens of rows.
-    const std::string scene =
-        write_scene("band.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7, 4,
-                    "box { <-1, 0, 700>, <1, 2, 702> }\n");
+    const std::string scene = write_scene("band.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7,
+                                          4, "box { <-1, 0, 700>, <1, 2, 702> }\n");
     auto f = read(scene);
     ASSERT_TRUE(f.ok()) << f.message();
     ASSERT_TRUE(f->inferior);
@@ -102,8 +100,8 @@ TEST(Frame, MirageBandRowsAreTheRowsWhoseExactRayTurns) {
     EXPECT_NEAR(f->apparent_horizon_rad, grazing, 1e-12);
     // ... and where it touches the ground, the closed form's X(0 -> y0).
     const double beta = p.eta0;
-    const double x = 2.0 * beta / (p.alpha * p.eta1) *
-                     std::atanh(std::sqrt(-std::expm1(-p.alpha * 1.7)));
+    const double x =
+        2.0 * beta / (p.alpha * p.eta1) * std::atanh(std::sqrt(-std::expm1(-p.alpha * 1.7)));
     EXPECT_NEAR(f->ground_ends, x, 1e-6 * x);
 }
 
@@ -139,9 +137,8 @@ TEST(Frame, VanishingDistanceIsThatOfMiragePathObjectHeight) {
 TEST(Frame, MirroredImageIsWhereTheTurnedRaysOfItsColumnMeetIt) {
     // A wide box straight ahead, far enough to be mirrored: the centre column's rays that turn
     // and then meet it span the reported mirrored image.
-    const std::string scene =
-        write_scene("image.pov", "#declare Mirage_Preset = \"hot-road\";", 1.2, 3,
-                    "box { <-20, 0, 800>, <20, 3, 805> }\n");
+    const std::string scene = write_scene("image.pov", "#declare Mirage_Preset = \"hot-road\";",
+                                          1.2, 3, "box { <-20, 0, 800>, <20, 3, 805> }\n");
     auto f = read(scene);
     ASSERT_TRUE(f.ok()) << f.message();
     ASSERT_EQ(f->objects.size(), 1u);
@@ -170,19 +167,18 @@ TEST(Frame, MirroredImageIsWhereTheTurnedRaysOfItsColumnMeetIt) {
 }
 
 TEST(Frame, LensAdviceFiguresAreTheBandRowsWithThatAngle) {
-    const std::string scene =
-        write_scene("lens.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7, 50,
-                    "box { <-1, 0, 30>, <1, 1.5, 34> }\n");
+    const std::string scene = write_scene("lens.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7,
+                                          50, "box { <-1, 0, 30>, <1, 1.5, 34> }\n");
     auto f = read(scene, true);
     ASSERT_TRUE(f.ok()) << f.message();
     ASSERT_GE(f->lenses.size(), 3u);
     EXPECT_LT(f->column.turning_low.count, 8);  // hardly visible at angle 50
     for (const LensOption& l : f->lenses) {
         // The same scene written with that angle reads the same band.
-        const std::string other = write_scene("lens_" + std::to_string(int(l.angle_deg * 10)) +
-                                                  ".pov",
-                                              "#declare Mirage_Preset = \"hot-road\";", 1.7,
-                                              l.angle_deg, "box { <-1, 0, 30>, <1, 1.5, 34> }\n");
+        const std::string other =
+            write_scene("lens_" + std::to_string(int(l.angle_deg * 10)) + ".pov",
+                        "#declare Mirage_Preset = \"hot-road\";", 1.7, l.angle_deg,
+                        "box { <-1, 0, 30>, <1, 1.5, 34> }\n");
         auto g = read(other);
         ASSERT_TRUE(g.ok()) << g.message();
         EXPECT_EQ(g->column.turning_low.count, l.band_rows) << "angle " << l.angle_deg;
@@ -190,15 +186,15 @@ TEST(Frame, LensAdviceFiguresAreTheBandRowsWithThatAngle) {
     // The advice names an angle and the band's rows with it.
     bool named = false;
     for (const std::string& a : f->advice)
-        if (a.find("mirage band is") != std::string::npos && a.find("with angle") != std::string::npos)
+        if (a.find("mirage band is") != std::string::npos &&
+            a.find("with angle") != std::string::npos)
             named = true;
     EXPECT_TRUE(named) << frame_text(*f);
 }
 
 TEST(Frame, CameraHeightAdviceIsTheVanishingDistanceFromThatHeight) {
-    const std::string scene =
-        write_scene("height.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7, 10,
-                    "sphere { <0, 1, 200>, 0.5 }\n");
+    const std::string scene = write_scene("height.pov", "#declare Mirage_Preset = \"hot-road\";",
+                                          1.7, 10, "sphere { <0, 1, 200>, 0.5 }\n");
     auto f = read(scene, true);
     ASSERT_TRUE(f.ok()) << f.message();
     ASSERT_GE(f->heights.size(), 2u);
@@ -228,6 +224,34 @@ TEST(Frame, OverlayMarksTheHorizonsAndTheBand) {
                              OverlayKey::kApparentHorizon[2]));
     // Between them the band's tint; below, the plain ground.
     EXPECT_NE(img.at(10, (r0 + rg) / 2), img.at(10, rg + 5));
+}
+
+TEST(Frame, CommandPrintsTheReadingAsJsonAndWritesTheOverlay) {
+    const std::string scene =
+        write_scene("cli.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7, 4,
+                    "box { <-1, 0, 900>, <1, 2.5, 902> }\n");
+    const auto png = test_temp_path("cli_overlay.png");
+    const auto run = run_tool("frame " + testing::quoted(scene) + " --json --plain -o " +
+                              testing::quoted(png));
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    auto f = read(scene);
+    ASSERT_TRUE(f.ok()) << f.message();
+    EXPECT_EQ(int(j["mirage_band"]["count"]), f->column.turning_low.count);
+    EXPECT_DOUBLE_EQ(double(j["apparent_horizon"]["row"]), f->apparent_horizon_row);
+    ASSERT_EQ(j["objects"].size(), 1u);
+    EXPECT_DOUBLE_EQ(double(j["objects"][0]["vanishing_distance_m"]), f->objects[0].vanishing);
+    EXPECT_EQ(j["objects"][0]["place"], to_string(f->objects[0].object.loc));
+    EXPECT_FALSE(testing::read_bytes(png).empty());
+    EXPECT_NE(std::string(j["overlay_legend"]).find("red line the apparent horizon"),
+              std::string::npos);
+    // The overlay may not replace the scene it read.
+    const std::string before = testing::read_bytes(scene);
+    const auto over = run_tool("frame " + testing::quoted(scene) + " --plain -o " +
+                               testing::quoted(scene));
+    EXPECT_EQ(over.exit_code, 1);
+    EXPECT_NE(over.err.find("mirage frame: "), std::string::npos) << over.err;
+    EXPECT_EQ(testing::read_bytes(scene), before);
 }
 
 TEST(Frame, RefusesWhatItCannotRead) {
