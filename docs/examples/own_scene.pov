@@ -8,7 +8,7 @@
 //   build/mirage trace docs/examples/own_scene.pov -o own.png
 #version 3.7;
 
-#declare Mirage_Preset = "hot-road";
+#ifndef (Mirage_Preset) #declare Mirage_Preset = "hot-road"; #end
 #include "mirage.inc"
 
 #ifndef (Frame_Angle) #declare Frame_Angle = 50; #end

@@ -550,8 +550,9 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
         }
         if (best.mirrored.visible) f.distances.push_back(best);
     }
-    // Exaggerations (not air), times the scene's own.
-    for (double k : {3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0}) {
+    // Exaggerations (not air), times the scene's own: weaker and stronger.
+    for (double k :
+         {0.001, 0.003, 0.01, 0.03, 0.1, 0.3, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0}) {
         AtmosphereSettings s = settings;
         if (!exaggerate_atmosphere(s, k, "exaggeration")) continue;
         auto air = scene_atmosphere(s, tolerance_rad);
@@ -559,6 +560,7 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
         ExaggerationOption o;
         o.factor = s.exaggeration;
         o.apparent_depression_rad = -grazing_elevation(*air, view.eye_y);
+        o.apparent_row = elevation_row(view, -o.apparent_depression_rad);
         const ColumnReading c = read_column(*air, view);
         o.band_rows = c.turning_low.count;
         o.band_rows_in_reach = c.turning_low_in_reach.count;
@@ -566,6 +568,7 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
             auto reach = r.top > 0.0 ? mirror_reach(*air, view.eye_y, r.top)
                                      : Result<MirrorReach>(make_error("below the ground"));
             o.vanishing.push_back(reach ? reach->nearest : kNaN);
+            o.farthest.push_back(reach ? reach->farthest : kNaN);
             if (reach && mirrored_from(r.distance, reach->nearest, reach->farthest))
                 ++o.mirrored_objects;
         }
@@ -574,8 +577,27 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
 
     // The advice, in sentences with the figures above.
     const double deg = 180.0 / kPi, u = settings.unit_m;
-    const int target = std::max(8, options.height / 12);
     auto& advice = f.advice;
+    // The factors nearest 1 first: the least change that does it.
+    std::vector<const ExaggerationOption*> by_change;
+    for (const ExaggerationOption& e : f.exaggerations) by_change.push_back(&e);
+    std::stable_sort(by_change.begin(), by_change.end(), [&](auto* a, auto* b) {
+        return std::abs(std::log(a->factor / f.exaggeration)) <
+               std::abs(std::log(b->factor / f.exaggeration));
+    });
+    auto exaggeration_advice = [&](int k, const ObjectReading& r) {
+        for (const ExaggerationOption* e : by_change)
+            if (mirrored_from(r.distance, e->vanishing[k], e->farthest[k])) {
+                advice.push_back(
+                    "  or change the air's strength (not air): with "
+                    "Mirage_Exaggeration = " +
+                    shortest(e->factor) + " its top is mirrored from " +
+                    metres(e->vanishing[k], u) + " to " + metres(e->farthest[k], u) +
+                    " and the band is " + std::to_string(e->band_rows) + " rows");
+                return;
+            }
+    };
+    const int target = std::max(8, options.height / 12);
     const LensOption* lens = nullptr;  // the widest angle that shows the band to the target
     if (f.inferior) {
         if (std::isfinite(f.ground_ends) && f.ground_ends > view.reach)
@@ -586,6 +608,21 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
                              " (where the grazing ray touches the ground) can be mirrored whole; "
                              "the scene reaches " +
                              metres(view.reach, u));
+        if (f.apparent_horizon_row > options.height) {
+            std::string s = "the apparent horizon lies below the frame (row " +
+                            sig(f.apparent_horizon_row, 4) + " of " +
+                            std::to_string(options.height) + "): the ground shows only within " +
+                            metres(f.ground_ends, u) + " and all below the horizon is mirrored sky";
+            for (const ExaggerationOption* e : by_change)
+                if (e->factor < f.exaggeration && e->apparent_row < 0.9 * options.height &&
+                    e->apparent_row > f.true_horizon_row + 2.0) {
+                    s += "; with Mirage_Exaggeration = " + shortest(e->factor) +
+                         " (not air) it would be at row " + sig(e->apparent_row, 4) + ", " +
+                         sig(e->apparent_depression_rad * deg, 3) + " deg below the horizon";
+                    break;
+                }
+            advice.push_back(s);
+        }
         const int rows = f.column.turning_low.count;
         if (rows < target) {
             for (const LensOption& l : f.lenses) {
@@ -622,6 +659,7 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
                                      sig(d.mirrored.angular_size_rad() * deg, 3) + " deg, " +
                                      sig(d.mirrored.angular_size_rad() / f.pixel_rad, 3) +
                                      " rows tall");
+            exaggeration_advice(k, r);
             continue;
         }
         // Lower the camera: the highest of the lower heights that brings the vanishing distance
@@ -650,15 +688,7 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
                          " rows with angle " + sig(lens->angle_deg, 3) + ")";
                 advice.push_back(s);
             }
-        for (const ExaggerationOption& e : f.exaggerations)
-            if (mirrored_from(r.distance, e.vanishing[k], kInf)) {
-                advice.push_back("  or exaggerate the air (not air): with Mirage_Exaggeration = " +
-                                 shortest(e.factor) +
-                                 " the mirrored image of its top vanishes nearer than " +
-                                 metres(e.vanishing[k], u) + " and the band is " +
-                                 std::to_string(e.band_rows) + " rows");
-                break;
-            }
+        exaggeration_advice(k, r);
     }
     if (f.superior && f.column.turning_high.count < target) {
         const LensOption* pick = nullptr;

@@ -153,7 +153,9 @@ struct ExaggerationOption {
     double apparent_depression_rad = 0.0;
     int band_rows = 0;
     int band_rows_in_reach = 0;
+    double apparent_row = 0.0;      // the apparent horizon's image row
     std::vector<double> vanishing;  // per object
+    std::vector<double> farthest;   // per object
     int mirrored_objects = 0;       // objects within their [vanishing, farthest]
 };
 
