@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "../cli/run_tool.h"
 #include "../test_temp.h"
@@ -58,6 +59,29 @@ TEST(Exaggeration, OneLeavesTheRenderByteIdentical) {
     EXPECT_FALSE(read_bytes(a).empty());
     EXPECT_EQ(read_bytes(a), read_bytes(b));
     EXPECT_NE(read_bytes(a), read_bytes(c));  // and a factor does change the render
+}
+
+TEST(Exaggeration, CompileBandsTheExaggeratedAir) {
+    const std::string plain = write_scene("cplain.pov", "#declare Mirage_Preset = \"hot-road\";");
+    const std::string one = write_scene(
+        "cone.pov", "#declare Mirage_Preset = \"hot-road\";\n#declare Mirage_Exaggeration = 1;");
+    const std::string k30 = write_scene(
+        "ck30.pov", "#declare Mirage_Preset = \"hot-road\";\n#declare Mirage_Exaggeration = 30;");
+    std::vector<std::string> layers, reports;
+    for (const std::string& scene : {plain, one, k30}) {
+        const auto dir = test_temp_path("compiled_" + std::to_string(layers.size()));
+        const auto run = run_tool("compile " + testing::quoted(scene) + " -W 64 -H 48 -o " +
+                                  testing::quoted(dir));
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        layers.push_back(read_bytes(dir / "layers.csv"));
+        reports.push_back(read_bytes(dir / "report.json"));
+    }
+    EXPECT_FALSE(layers[0].empty());
+    EXPECT_EQ(layers[0], layers[1]);
+    EXPECT_NE(layers[0], layers[2]);
+    EXPECT_EQ(reports[0].find("not air"), std::string::npos);
+    EXPECT_NE(reports[2].find("hot-road (inferior), exaggerated 30 times (not air)"),
+              std::string::npos);
 }
 
 TEST(Exaggeration, ScalesTheIndexExcessOverTheGround) {
