@@ -47,12 +47,13 @@ void setup_frame_command(CLI::App& app) {
     sub->add_option("-L,--library-path", o->frame.library_paths,
                     "extra include directory (searched first)");
     sub->callback([o] {
+        if (!o->overlay.empty())
+            if (auto s = check_image_name(o->overlay); !s) fail(s.message());
         auto reading = frame_scene(o->frame);
         if (!reading) fail(reading.message());
         OutputSet outputs(reading->files);
         if (!o->overlay.empty()) {
             if (auto s = outputs.check(o->overlay); !s) fail(s.message());
-            if (auto s = check_image_name(o->overlay); !s) fail(s.message());
             Image background;
             if (!o->plain) {
                 auto traced = frame_background(o->frame);
