@@ -204,7 +204,9 @@ ProfileFunction flatten(const ProfileFunction& f, double R, double extension_m) 
     return g;
 }
 
-Result<AirModel> make_air_model(const AirSpec& spec) {
+namespace {
+
+Result<AirModel> make_described_air_model(const AirSpec& spec) {
     if (auto s = validate(spec.index); !s) return s.error();
     if (!(std::isfinite(spec.ground_pressure_pa) && spec.ground_pressure_pa > 0.0))
         return make_error("pressure " + shortest(spec.ground_pressure_pa / 100.0) +
@@ -387,6 +389,25 @@ Result<AirModel> make_air_model(const AirSpec& spec) {
     return model;
 }
 
+}  // namespace
+
+Result<AirModel> make_air_model(const AirSpec& spec) {
+    auto model = make_described_air_model(spec);
+    if (!model || spec.exaggeration == 1.0) return model;
+    const double k = spec.exaggeration;
+    if (!(k > 0.0 && std::isfinite(k)))
+        return make_error("exaggeration " + shortest(k) + " must be a finite number > 0");
+    ProfileFunction& f = model->physical;
+    const double n0_sq = f.n0_sq;
+    f.excess = [k, e = f.excess](double y) { return k * e(y); };
+    f.excess_slope = [k, e = f.excess_slope](double y, int side) { return k * e(y, side); };
+    model->refractivity = [k, n0_sq, m = model->refractivity](double y) {
+        const double n = 1.0 + m(y);
+        return std::sqrt(n0_sq + k * (n * n - n0_sq)) - 1.0;
+    };
+    return model;
+}
+
 Result<std::shared_ptr<const QuadraticProfile>> fit_air(const AirSpec& spec,
                                                         const FitSettings& settings,
                                                         FitReport* report) {
@@ -399,7 +420,7 @@ Result<std::shared_ptr<const QuadraticProfile>> fit_air(const AirSpec& spec,
         const auto& s = spec.sounding;
         const double n0 = s.index.front();
         std::vector<double> e;
-        for (double n : s.index) e.push_back((n - n0) * (n + n0));
+        for (double n : s.index) e.push_back(spec.exaggeration * (n - n0) * (n + n0));
         const QuadraticSpline sp = make_shape_preserving_spline(s.height_m, e);
         auto q = QuadraticProfile::make(sp.knots, sp.slopes, sp.curvatures, n0 * n0, 0.0);
         if (!q) return q.error();

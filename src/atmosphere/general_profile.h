@@ -82,6 +82,9 @@ struct AirSpec {
                                          // above the highest feature)
     double earth_radius_m = 0.0;         // 0: flat ground
     double earth_extension_m = 10000.0;  // with curvature: the model goes this far above the top
+    // Not air: n^2 - n0^2 multiplied by this over the whole profile, before the Earth's
+    // flattening (Mirage_Exaggeration, docs/framing.md).  1: the air as described.
+    double exaggeration = 1.0;
 };
 
 /// The air as functions of the height above the ground.
@@ -93,7 +96,9 @@ struct AirModel {
     double top = 0.0;
 };
 
-/// Checks the spec and builds its functions.  Refusals name the value and its limit.
+/// Checks the spec and builds its functions.  Refusals name the value and its limit.  With an
+/// exaggeration k != 1 the index is n_k^2 = n0^2 + k (n^2 - n0^2) (the temperature and the
+/// pressure stay those described).
 Result<AirModel> make_air_model(const AirSpec& spec);
 
 /// Temperature of the forms at height y, K.

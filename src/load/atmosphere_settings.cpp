@@ -31,6 +31,7 @@ const char* const kKnown[] = {
     "Mirage_Ground_Height",
     "Mirage_Layers",
     "Mirage_Layer_Count",
+    "Mirage_Exaggeration",
     // real air (the general engine)
     "Mirage_Sounding",
     "Mirage_Sounding_Max_Gap",
@@ -384,6 +385,13 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     if (forms || r.has("Mirage_Earth_Radius")) {
         if (auto st = read_real_air(r, scene, s); !st) return st.error();
     }
+    MIRAGE_TRY(exaggeration, ranged(r, "Mirage_Exaggeration", kMinExaggeration, kMaxExaggeration,
+                                    "times the air's index excess over the ground's"));
+    if (exaggeration) {
+        const std::string name = r.at("Mirage_Exaggeration") + "Mirage_Exaggeration = " +
+                                 shortest(*exaggeration);
+        if (auto st = exaggerate_atmosphere(s, *exaggeration, name); !st) return st.error();
+    }
     MIRAGE_TRY(tol, r.number("Mirage_Tolerance"));
     if (tol) {
         if (auto c = check_tolerance_px(*tol, r.at("Mirage_Tolerance") + "Mirage_Tolerance ="); !c)
@@ -443,6 +451,39 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
         s.layer_count = static_cast<int>(*count);
     }
     return s;
+}
+
+Status exaggerate_atmosphere(AtmosphereSettings& s, double k, const std::string& name) {
+    if (k == 1.0) return Ok{};
+    if (!(k >= kMinExaggeration && k <= kMaxExaggeration))
+        return make_error(name + ": the exaggeration must be from " + shortest(kMinExaggeration) +
+                          " to " + shortest(kMaxExaggeration));
+    if (!bends_rays(s))
+        return make_error(name + ": there is no index gradient to exaggerate: declare an "
+                                 "atmosphere (Mirage_Preset, ...) first");
+    // n_k^2 = n0^2 + k (n^2 - n0^2): the exponential profiles' eta1^2 times k.
+    const double root_k = std::sqrt(k);
+    if (s.profile.kind != ProfileKind::None) {
+        s.profile.eta1 *= root_k;
+        const std::string made = name + ": the exaggerated profile's ";
+        if (auto v = validate(s.profile, ProfileNames{made + "eta0", made + "eta1", made + "alpha"});
+            !v)
+            return v.error();
+    }
+    if (s.air) {
+        AirSpec spec = *s.air;
+        if (spec.source == AirSpec::Source::Exponential) {
+            spec.exponential = s.profile;
+        } else {
+            spec.exaggeration *= k;
+            if (auto model = make_air_model(spec); !model)
+                return make_error(name + ": " + model.message());
+        }
+        s.air = std::make_shared<const AirSpec>(std::move(spec));
+    }
+    s.exaggeration *= k;
+    s.profile_label += ", exaggerated " + shortest(s.exaggeration) + " times (not air)";
+    return Ok{};
 }
 
 Status check_tolerance_px(double px, const std::string& name) {

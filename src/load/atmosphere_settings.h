@@ -42,6 +42,10 @@ constexpr double kMaxLapseKPerKm = 100.0;    // |Mirage_Lapse|
 constexpr int kMaxInversions = 8;            // Mirage_Inversion, Mirage_Inversion_2, ...
 // The fitted model's |n_fit - n| bound: chosen from the path tolerance so that ray directions
 // stay within half of it (pi sqrt(eps) <= tolerance / 2), within these limits.
+// Mirage_Exaggeration (not air): from a thousandth of the air's index gradient to ten thousand
+// times it, past the paper's profile (about 6000 times the hot road's n^2 - n0^2).
+constexpr double kMinExaggeration = 1e-3;
+constexpr double kMaxExaggeration = 1e4;
 constexpr double kMinFitTolerance = 1e-13;
 constexpr double kMaxFitTolerance = 1e-10;
 
@@ -61,6 +65,7 @@ struct AtmosphereSettings {
     // exponential profile on the curved Earth.
     std::shared_ptr<const AirSpec> air;
     std::vector<std::string> input_files;  // files the atmosphere was read from (a sounding)
+    double exaggeration = 1.0;  // Mirage_Exaggeration: n^2 - n0^2 times this (not air)
 };
 
 /// Whether the scene's atmosphere bends rays at all.
@@ -73,6 +78,14 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene);
 
 /// The names of the settings a scene may declare (mirage.inc's own names left out).
 std::vector<std::string> atmosphere_setting_names();
+
+/// Exaggerates the air (Mirage_Exaggeration, not air): n_k(y)^2 = n(0)^2 + k (n(y)^2 - n(0)^2)
+/// at every height, the ground's index kept (the exponential profiles' eta1^2 times k; real
+/// air's n^2 - n0^2 times k before the Earth's flattening, which stays as it is).  Rays' curvature
+/// y'' = (n^2)' / (2 beta^2) is then k times as large for the same invariant.  k = 1 changes
+/// nothing.  An error, prefixed with `name` (the setting with its place), for k out of
+/// [kMinExaggeration, kMaxExaggeration], no gradient, or a profile the factor makes invalid.
+Status exaggerate_atmosphere(AtmosphereSettings& settings, double k, const std::string& name);
 
 /// Checks a tolerance in pixels against its range; `name` says where it was given, with its
 /// place: "--tolerance", "scene.pov:3:10: Mirage_Tolerance =".  The one message of every

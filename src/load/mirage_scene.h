@@ -5,7 +5,7 @@
 // The modules of src/, lowest first; each includes only from those before it (checked by
 // tests/layout/module_order_test.cpp):
 //   util, atmosphere, scene, load, image, layers, pov, report, trace, compile, trace_scene,
-//   compare, animate, cli
+//   compare, animate, frame, cli
 #pragma once
 
 #include <functional>
