@@ -2,10 +2,12 @@
 // 20 K exp(-y / 0.3 m), bends rays up by a few tenths of a degree: from an eye 1.5 m above the
 // road, rays that leave more than 0.34 degrees below the horizon reach the asphalt within
 // 300 m, and the rays above them turn a few cm over it and rise again.  There the road shows
-// the sky, its gradient and its clouds upside down, like water; a car 600 m away stands on its
-// own inverted image, its wheels hidden below the fold, and the posts along the verge and a
-// van at 900 m hang mirrored in the same "wet road" (the inferior mirage).  The index
-// differences are those of real air (n - 1 = 2.8e-4), so the view is narrow: one degree high.
+// the sky, its gradient and its clouds upside down, like water, with a row of trees 3.2 km
+// away mirrored at its far shore; a car 600 m away stands on its own inverted image (the
+// rays that reach it lowest pass 0.48 m above the road, through its wheels), and the posts
+// along the verge and a van at 900 m hang mirrored in the same "wet road" (the inferior
+// mirage).  The index differences are those of real air (n - 1 = 2.8e-4), so the view is
+// narrow: 2 degrees wide, 1.5 high, level.
 //
 //   build/mirage trace scenes/road.pov -W 640 -H 480 -o road.png           (the exact paths)
 //   build/mirage compile scenes/road.pov -W 640 -H 480 -o build/road --render  (POV-Ray)
