@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "image/image_io.h"
-#include "test_temp.h"
 #include "load/library_paths.h"
 #include "scene/parser.h"
+#include "test_temp.h"
 #include "trace/pigment_eval.h"
 
 namespace mirage {
