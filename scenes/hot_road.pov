@@ -7,6 +7,10 @@
 // The sounding is traced by the general engine, on the curved Earth.
 //
 //   build/mirage trace scenes/hot_road.pov -W 960 -H 360 -o hot_road.png
+//   build/mirage compile scenes/hot_road.pov -W 960 -H 360 -o build/hot_road --render  (POV-Ray)
+// Plain POV-Ray (`povray +Lpov_includes scenes/hot_road.pov`) renders it without the mirage,
+// with a warning: the bands and the camera that make the mirage are what `mirage compile`
+// writes.
 #version 3.7;
 
 #declare Mirage_Sounding  = "hot_road.csv";  // beside this file
@@ -24,15 +28,20 @@ camera {
 
 light_source { <-2000, 3000, -1000>, color rgb <1, 0.98, 0.92> }
 
+// The sky by the direction's height y.  `scale 2.2 translate -1.1 * y` spreads y from -1 to
+// 1 over the pattern's 0.05 to 0.95, so it never wraps (plain `gradient y` jumps to the map's
+// far end just below the horizontal); the entry for height Y sits at 0.5 + Y / 2.2, and
+// below the horizon the sky keeps its haze.
 sky_sphere {
     pigment {
         gradient y
         color_map {
-            [0.000 color rgb <0.92, 0.93, 0.96>]
-            [0.004 color rgb <0.70, 0.80, 0.95>]
-            [0.020 color rgb <0.35, 0.55, 0.90>]
-            [1.000 color rgb <0.15, 0.30, 0.75>]
+            [0.5               color rgb <0.92, 0.93, 0.96>]
+            [0.5 + 0.004 / 2.2 color rgb <0.70, 0.80, 0.95>]
+            [0.5 + 0.020 / 2.2 color rgb <0.35, 0.55, 0.90>]
+            [0.5 + 1.000 / 2.2 color rgb <0.15, 0.30, 0.75>]
         }
+        scale 2.2 translate -1.1 * y
     }
 }
 

@@ -4,7 +4,12 @@
 // are lifted above where they would be (looming), the far ice rises into view and the
 // nearly level rays are trapped, coming back down to the ice.  Real air, a long lens.
 //
-//   make render SCENE=scenes/looming.pov W=640 H=480
+//   make render SCENE=scenes/looming.pov W=640 H=480      (POV-Ray through the bands)
+//   build/mirage compile scenes/looming.pov -W 640 -H 480 -o build/looming --render
+//   build/mirage trace scenes/looming.pov -W 640 -H 480 -o looming.png   (the exact paths)
+// Plain POV-Ray (`povray +Lpov_includes scenes/looming.pov`) renders it without the mirage,
+// with a warning: the bands and the camera that make the mirage are what `mirage compile`
+// writes.
 #version 3.7;
 
 #declare Mirage_Air_Temperature    = 275;   // K, aloft
@@ -24,14 +29,19 @@ camera {
 
 light_source { <-3000, 2000, -2000>, color rgb <1, 0.97, 0.92> }
 
+// The sky by the direction's height y.  `scale 2.2 translate -1.1 * y` spreads y from -1 to
+// 1 over the pattern's 0.05 to 0.95, so it never wraps (plain `gradient y` jumps to the map's
+// far end just below the horizontal); the entry for height Y sits at 0.5 + Y / 2.2, and
+// below the horizon the sky keeps its haze.
 sky_sphere {
     pigment {
         gradient y
         color_map {
-            [0.000 color rgb <0.88, 0.90, 0.94>]
-            [0.010 color rgb <0.65, 0.75, 0.92>]
-            [1.000 color rgb <0.20, 0.35, 0.75>]
+            [0.5               color rgb <0.88, 0.90, 0.94>]
+            [0.5 + 0.010 / 2.2 color rgb <0.65, 0.75, 0.92>]
+            [0.5 + 1.000 / 2.2 color rgb <0.20, 0.35, 0.75>]
         }
+        scale 2.2 translate -1.1 * y
     }
 }
 

@@ -1,10 +1,20 @@
-// road.pov: a realistic hot road.  Air over sun-heated asphalt, T = 300 K + 20 K exp(-y/0.3 m),
-// bends rays up by a few tenths of a degree: through a long lens the road ahead shows the
-// sky and the cars mirrored in it (the "wet road" inferior mirage).  The index differences
-// are those of real air (n - 1 = 2.8e-4, steps of 1e-11 between layers), so the view is a
-// narrow one: about one degree high, objects 150 to 450 m away.
+// road.pov: a hot road through a long lens.  Air over sun-heated asphalt, T = 300 K +
+// 20 K exp(-y / 0.3 m), bends rays up by a few tenths of a degree: from an eye 1.5 m above the
+// road, rays that leave more than 0.34 degrees below the horizon reach the asphalt within
+// 300 m, and the rays above them turn a few cm over it and rise again.  There the road shows
+// the sky, its gradient and its clouds upside down, like water, with a row of trees 3.2 km
+// away mirrored at its far shore; a car 600 m away stands on its own inverted image (the
+// rays that reach it lowest pass 0.48 m above the road, through its wheels), and the posts
+// along the verge and a van at 900 m hang mirrored in the same "wet road" (the inferior
+// mirage).  The index differences are those of real air (n - 1 = 2.8e-4), so the view is
+// narrow: 2 degrees wide, 1.5 high, level.
 //
+//   build/mirage trace scenes/road.pov -W 640 -H 480 -o road.png           (the exact paths)
+//   build/mirage compile scenes/road.pov -W 640 -H 480 -o build/road --render  (POV-Ray)
 //   make render SCENE=scenes/road.pov W=640 H=480
+// Plain POV-Ray (`povray +Lpov_includes scenes/road.pov`) renders it without the mirage,
+// with a warning: the bands and the camera that make the mirage are what `mirage compile`
+// writes.
 #version 3.7;
 
 #declare Mirage_Preset    = "hot-road";
@@ -15,47 +25,114 @@ global_settings { assumed_gamma 1.0 }
 
 camera {
     location <0, 1.5, 0>            // eye 1.5 m above the road, level
-    look_at  <0, 1.5, 100>
+    look_at  <0, 1.5, 1000>
     right    x * image_width / image_height
-    angle    1.3334                 // horizontal field; 1 degree vertical at 4:3
+    angle    2                      // horizontal field; 1.5 degrees vertical at 4:3
 }
 
 light_source { <-2000, 3000, -1000>, color rgb <1, 0.98, 0.92> }
 
+// The sky by the direction's height y: hazy white at the horizon, clear blue a third of a
+// degree above it, and low clouds.  `scale 2.2 translate -1.1 * y` spreads y from -1 to 1
+// over the pattern's 0.05 to 0.95, so it never wraps (plain `gradient y` jumps to the map's
+// far end just below the horizontal); the entry for height Y sits at 0.5 + Y / 2.2.
 sky_sphere {
     pigment {
         gradient y
         color_map {
-            [0.000 color rgb <0.92, 0.93, 0.96>]
-            [0.004 color rgb <0.70, 0.80, 0.95>]
-            [0.020 color rgb <0.35, 0.55, 0.90>]
-            [1.000 color rgb <0.15, 0.30, 0.75>]
+            [0.5                color rgb <0.90, 0.91, 0.93>]
+            [0.5 + 0.002 / 2.2  color rgb <0.62, 0.74, 0.92>]
+            [0.5 + 0.0055 / 2.2 color rgb <0.28, 0.48, 0.88>]
+            [0.5 + 0.01 / 2.2   color rgb <0.16, 0.32, 0.76>]
         }
+        scale 2.2 translate -1.1 * y
+    }
+    pigment {
+        bozo
+        turbulence 0.4
+        color_map {
+            [0.00 color rgbt <1, 1, 1, 1>]
+            [0.60 color rgbt <1, 1, 1, 1>]
+            [0.80 color rgbt <0.97, 0.97, 0.98, 0.5>]
+            [1.00 color rgbt <1, 1, 1, 0.2>]
+        }
+        scale <0.003, 0.0008, 0.003>
     }
 }
 
-// Asphalt, with 10 m squares to read distances.
+// The ground: asphalt 8 m wide with 10 m squares to read distances and a dashed white centre
+// line, dry grass on the verges.  One plane, its pigment chosen across the road by x:
+// `gradient x scale 200 translate -100 * x` runs from 0 to 1 over x from -100 to 100 m (the
+// road's edges at 0.48 and 0.52), and the patterns inside are scaled by the same 200.
+#declare Asphalt = pigment { checker color rgb <0.21, 0.21, 0.22>, color rgb <0.24, 0.24, 0.25> scale 10 / 200 }
+#declare Centre_Line = pigment {
+    gradient z
+    color_map { [0.5 color rgb 0.9] [0.5 color rgb <0.21, 0.21, 0.22>] }
+    scale 12 / 200
+}
+#declare Grass = pigment {
+    bozo color_map { [0 color rgb <0.55, 0.48, 0.28>] [1 color rgb <0.40, 0.36, 0.20>] }
+    scale <8, 1, 40> / 200
+}
 plane {
     y, 0
-    pigment { checker color rgb <0.22, 0.22, 0.23>, color rgb <0.27, 0.27, 0.28> scale 10 }
+    pigment {
+        gradient x
+        pigment_map {
+            [0.48   Grass]
+            [0.48   Asphalt]
+            [0.4996 Asphalt]
+            [0.4996 Centre_Line]
+            [0.5004 Centre_Line]
+            [0.5004 Asphalt]
+            [0.52   Asphalt]
+            [0.52   Grass]
+        }
+        scale 200 translate -100 * x
+    }
     finish { ambient 0.2 diffuse 0.7 }
 }
 
-// A car at 200 m, a cyclist at 300 m, a lorry at 450 m.
+// A red car 600 m away, coming towards the eye.
 #declare Paint = finish { ambient 0.2 diffuse 0.6 specular 0.4 roughness 0.05 reflection 0.1 }
-box { <-3.0, 0.3, 198>, <-1.2, 1.1, 202> pigment { color rgb <0.75, 0.10, 0.08> } finish { Paint } }
-box { <-2.8, 1.1, 199>, <-1.4, 1.5, 201> pigment { color rgb <0.20, 0.25, 0.30> } finish { Paint } }
-cylinder { <-2.9, 0.3, 198.5>, <-1.3, 0.3, 198.5>, 0.3 pigment { color rgb 0.05 } }
-cylinder { <-2.9, 0.3, 201.5>, <-1.3, 0.3, 201.5>, 0.3 pigment { color rgb 0.05 } }
+union {
+    box { <-0.9, 0.3, -2.2>, <0.9, 1.0, 2.2> pigment { color rgb <0.80, 0.08, 0.06> } }
+    box { <-0.8, 1.0, -1.0>, <0.8, 1.45, 1.2> pigment { color rgb <0.15, 0.20, 0.28> } }
+    cylinder { <-0.95, 0.32, -1.4>, <0.95, 0.32, -1.4>, 0.32 pigment { color rgb 0.04 } }
+    cylinder { <-0.95, 0.32, 1.4>, <0.95, 0.32, 1.4>, 0.32 pigment { color rgb 0.04 } }
+    box { <-0.7, 0.55, -2.25>, <-0.4, 0.7, -2.2> pigment { color rgb <1, 1, 0.85> } finish { ambient 1 } }
+    box { <0.4, 0.55, -2.25>, <0.7, 0.7, -2.2> pigment { color rgb <1, 1, 0.85> } finish { ambient 1 } }
+    finish { Paint }
+    translate <-1.7, 0, 600>
+}
 
-cylinder { <1.6, 0, 300>, <1.6, 1.7, 300>, 0.25 pigment { color rgb <0.15, 0.45, 0.20> } }
-sphere { <1.6, 1.85, 300>, 0.15 pigment { color rgb <0.80, 0.65, 0.50> } }
+// A white van 900 m away, going away.
+union {
+    box { <-1.0, 0.35, -2.6>, <1.0, 2.4, 2.6> pigment { color rgb <0.92, 0.92, 0.90> } }
+    box { <-0.9, 1.3, -2.65>, <0.9, 2.2, -2.6> pigment { color rgb <0.20, 0.25, 0.30> } }
+    cylinder { <-1.05, 0.35, -1.8>, <1.05, 0.35, -1.8>, 0.35 pigment { color rgb 0.04 } }
+    cylinder { <-1.05, 0.35, 1.8>, <1.05, 0.35, 1.8>, 0.35 pigment { color rgb 0.04 } }
+    finish { Paint }
+    translate <1.8, 0, 900>
+}
 
-box { <2.2, 0.5, 445>, <4.8, 3.8, 455> pigment { color rgb <0.90, 0.90, 0.85> } finish { Paint } }
-box { <2.2, 0.5, 442>, <4.8, 2.6, 445> pigment { color rgb <0.15, 0.30, 0.60> } finish { Paint } }
+// Posts along both verges every 100 m.
+#declare Post = cylinder { <0, 0, 0>, <0, 1.2, 0>, 0.08 pigment { color rgb <0.95, 0.95, 0.95> } }
+#for (D, 200, 1400, 100)
+    object { Post translate <-4.5, 0, D> }
+    object { Post translate <4.5, 0, D> }
+#end
 
-// Posts along the verge every 50 m.
-#declare Post = cylinder { <0, 0, 0>, <0, 1.2, 0>, 0.1 pigment { color rgb <0.95, 0.95, 0.95> } }
-#for (D, 150, 450, 50)
-    object { Post translate <-0.015 * D, 0, D> }
+// A row of trees 3 to 3.6 km away on the horizon, hazy with distance: their trunks are
+// hidden below the fold and their crowns mirrored, which draws the "water's" far shore.
+#declare Crown = finish { ambient 0.75 diffuse 0 }   // far off: flat, hazy silhouettes
+// Undergrowth along the row, up to the crowns.
+box { <-100, 0, 3200>, <100, 4, 3210> pigment { color rgb <0.24, 0.33, 0.26> } finish { Crown } }
+#for (K, 0, 89)
+    #declare X = -90 + 2 * K + 1.3 * mod(K * 7, 3);
+    #declare Z = 3200 + 100 * mod(K * 3, 5);
+    #declare R = 1.8 + 0.5 * mod(K * 5, 4);
+    cylinder { <X, 0, Z>, <X, 3, Z>, 0.3 pigment { color rgb <0.25, 0.22, 0.20> } }
+    sphere { <X, 2 + R, Z>, R
+        pigment { color rgb <0.22, 0.32, 0.25> + 0.04 * mod(K * 7, 4) * <1, 0.8, 0.9> } finish { Crown } }
 #end

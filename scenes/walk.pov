@@ -1,13 +1,18 @@
 // walk.pov: walking toward the mirage.  Khote & Howard: "it is possible to walk towards the
 // mirage and it will disappear".  Two spheres floating 3.5 m above hot sand (balloons; the
-// `paper` atmosphere of desert.pov), approached from 60 m to 5 m as the clock runs from 0 to 1.  Far away the
-// spheres show below the horizon, upside down, in the light that dipped toward the hot sand
-// and turned; from about 13 m on no ray from the eye reaches them after a turn, and their
-// mirrored image is gone (mirage path --preset paper --eye-height 1.5 --object-height 3.5).
+// `paper` atmosphere of desert.pov), approached from 40 m to 5 m as the clock runs from 0 to
+// 1.  Far away the spheres show over their own images, upside down below them, in the light
+// that dipped toward the hot sand and turned; from about 13.5 m on no ray from the eye
+// reaches a sphere's lowest point after a turn, and the mirrored image is gone (mirage path
+// --preset paper --eye-height 1.5 --object-height 3.5: mirrored from 37.5 m to 13.5 m).
 //
 //   make animate                                   (this scene is the default, 24 frames)
 //   build/mirage animate scenes/walk.pov --frames 48 -W 320 -H 240 --model trace
-//   povray -D +KFF48 +Lpov_includes scenes/walk.pov  (plain POV-Ray: no atmosphere, a warning)
+//   build/mirage trace scenes/walk.pov -W 640 -H 480 -o walk.png     (clock 0, the first frame)
+//   build/mirage compile scenes/walk.pov -W 640 -H 480 -o build/walk --render   (the same, POV-Ray)
+// Plain POV-Ray (`povray +KFF24 +Lpov_includes scenes/walk.pov`) renders it without the
+// mirage, with a warning: the bands and the camera that make the mirage are what `mirage
+// compile` (or `mirage animate`) writes for each frame.
 //
 // The spheres' bottoms are above the eye: a camera ray that leaves the eye downwards can meet
 // them only after its turn, so every pixel of theirs below the horizon is mirrored.  They are
@@ -21,14 +26,14 @@
 
 global_settings { assumed_gamma 1.0 }
 
-#declare Walk_Start  = 60;          // m from the spheres at clock 0
+#declare Walk_Start  = 40;          // m from the spheres at clock 0
 #declare Walk_End    = 5;           // m at clock 1
 #declare Eye_Height  = 1.5;
 #declare Eye_Distance = Walk_Start + (Walk_End - Walk_Start) * clock;
 
 #declare Ball_Height = 4.5;         // centres, m
 #declare Ball_Radius = 1.0;
-#declare Ball_Z      = 60;          // the spheres stand here; the walker comes from z = 0
+#declare Ball_Z      = 60;          // the spheres stand here; the walker comes from z = 20
 #declare Red_Ball    = <0, Ball_Height, Ball_Z>;
 #declare Blue_Ball   = <3.5, Ball_Height, Ball_Z + 8>;
 
@@ -48,14 +53,17 @@ camera {
 
 light_source { <-30, 60, -20>, color rgb <1, 0.97, 0.9> }
 
+// The sky of desert.pov: `gradient y` over y from -1 to 1 (scale 2.2 translate -1.1 * y),
+// so that it never wraps; the entry for height Y is at 0.5 + Y / 2.2.
 sky_sphere {
     pigment {
         gradient y
         color_map {
-            [0.00 color rgb <0.85, 0.88, 0.95>]
-            [0.35 color rgb <0.35, 0.55, 0.90>]
-            [1.00 color rgb <0.10, 0.25, 0.70>]
+            [0.5              color rgb <0.85, 0.88, 0.95>]
+            [0.5 + 0.35 / 2.2 color rgb <0.35, 0.55, 0.90>]
+            [0.5 + 1.00 / 2.2 color rgb <0.10, 0.25, 0.70>]
         }
+        scale 2.2 translate -1.1 * y
     }
 }
 
@@ -68,7 +76,7 @@ plane {
 #ifndef (Marked_Flat)
     #declare Marked_Flat = 0;
 #end
-#declare Ball_Finish = finish { ambient 0.15 diffuse 0.6 specular 0.6 roughness 0.02 reflection 0.25 }
+#declare Ball_Finish = finish { ambient 0.2 diffuse 0.7 specular 0.3 roughness 0.05 }   // balloons: no mirror finish
 #if (Marked_Flat)
     // Flat and unlit: exactly rgb <1, 0, 1> and <0, 1, 1> in the image, nothing else is.
     #declare Red_Texture  = texture { pigment { color rgb <1, 0, 1> } finish { ambient 1 diffuse 0 } }
