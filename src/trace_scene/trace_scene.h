@@ -33,6 +33,7 @@ struct TraceOptions {
     bool reference_sampling = false;         // per-ray paths sampled to the tolerance all along
     std::vector<std::string> library_paths;  // extra include directories, searched first
     bool progress = true;                    // progress bar on stderr when it is a terminal
+    AntialiasSettings antialias;             // POV-Ray's +A, +AM, +R, +J; off by default
 };
 
 struct TraceReport {
@@ -47,6 +48,8 @@ struct TraceReport {
     int model_pieces = 0;       // real air: the fitted model's pieces (0: closed forms)
     RenderResult render;        // the image (linear) and the render's statistics
     std::string output;         // the file written, if any
+    // The files the scene was read from.
+    std::vector<std::string> files;
 };
 
 /// POV-Ray's output gamma: the rendered values are in the scene's working gamma
