@@ -4,7 +4,7 @@
 // --no-atmosphere --antialias 0.3 --antialias-method 1 --no-jitter` (and 2) at 160x120, must
 // agree to PSNR >= 35 dB, and be at least kGainDb closer to it than the same trace without
 // --antialias, so the comparison can fail on every scene: it is the antialiasing that
-// matches, not pictures too smooth to tell.
+// matches, not pictures too smooth to tell; and differ in at most 0.5% of the pixels.
 //
 // Images are kept under build/test_output/antialias_parity/<scene>/.
 #include <gtest/gtest.h>
@@ -32,14 +32,16 @@ constexpr int kW = 160, kH = 120;
 constexpr double kRequiredPsnrDb = 35.0;  // the figure
 // How much closer to POV-Ray's antialiased render the antialiased trace must be than the plain
 // one.  The smoother shipped scenes (desert, road, walk) are within 35 dB of it even without
-// antialiasing (39 to 42 dB with +AM1); measured gains are 26 to 40 dB and more (most renders
-// are identical), so a trace that does not antialias as POV-Ray does fails every scene.
+// antialiasing (39 to 42 dB with +AM1); the measured gains are 26 dB and more (most renders
+// are identical), so a trace that does not antialias fails on every scene.
 constexpr double kGainDb = 10.0;
-
-struct ParityScene {
-    std::string name;
-    std::string file;  // the .pov to render (written into the test's directory, or shipped)
-};
+// And as the atmosphere-off scene tests hold the plain trace (scene_image_diff_test.cpp): at
+// most 0.5% of the pixels more than 2.5/255 apart.  Most renders are identical; the most
+// measured is 51 pixels (handwritten, +AM2: method 2's corner rays down the image's centre
+// column have a direction with an x of exactly 0, where the plain tracer too differs from
+// POV-Ray, as a render 161 pixels wide shows).  Comparing colours in linear values instead of
+// after the +AG gamma leaves more than that apart on 14 of the 18 renders (1 to 2131 pixels),
+// though all of them pass 35 dB.
 
 /// The scene file: written from parity_scenes.h, or one of scenes/.
 fs::path scene_file(const std::string& name, const fs::path& dir) {
@@ -66,14 +68,14 @@ bool run(const std::vector<std::string>& argv, const fs::path& dir, const std::s
     return ok;
 }
 
-double psnr(const fs::path& a, const fs::path& b) {
+ImageComparison compare(const fs::path& a, const fs::path& b) {
     auto x = read_image(a.string());
     auto y = read_image(b.string());
     EXPECT_TRUE(x.ok() && y.ok()) << a << " " << b;
-    if (!x.ok() || !y.ok()) return 0.0;
+    if (!x.ok() || !y.ok()) return {};
     auto c = compare_images(*x, *y, 2.5 / 255.0);
     EXPECT_TRUE(c.ok()) << c.message();
-    return c.ok() ? c->psnr_db : 0.0;
+    return c.ok() ? *c : ImageComparison{};
 }
 
 class AntialiasParity : public ::testing::TestWithParam<std::string> {};
@@ -100,11 +102,16 @@ TEST_P(AntialiasParity, MatchesPovRaysAntialiasedRender) {
         ours.insert(ours.end(), {"--antialias", "0.3", "--antialias-method", method,
                                  "--antialias-depth", "3", "--no-jitter", "-o", ours_png});
         ASSERT_TRUE(run(ours, dir, "mirage_am" + method + ".log"));
-        const double antialiased = psnr(dir / pov_png, dir / ours_png);
-        const double without = psnr(dir / pov_png, dir / "mirage_plain.png");
-        std::printf("%s +AM%s: PSNR %.2f dB antialiased, %.2f dB without antialiasing\n",
-                    GetParam().c_str(), method.c_str(), antialiased, without);
+        const ImageComparison aa = compare(dir / pov_png, dir / ours_png);
+        const double antialiased = aa.psnr_db;
+        const double without = compare(dir / pov_png, dir / "mirage_plain.png").psnr_db;
+        std::printf(
+            "%s +AM%s: PSNR %.2f dB antialiased (%lld pixels over 2.5/255, max %.3f), %.2f dB "
+            "without antialiasing\n",
+            GetParam().c_str(), method.c_str(), antialiased, static_cast<long long>(aa.pixels_over),
+            aa.max_error, without);
         EXPECT_GE(antialiased, kRequiredPsnrDb) << "method " << method << ", images in " << dir;
+        EXPECT_LE(aa.pixels_over, kW * kH / 200) << "method " << method << ", images in " << dir;
         EXPECT_GE(antialiased, without + kGainDb)
             << "method " << method << ": no closer to POV-Ray than a plain trace, images in "
             << dir;
