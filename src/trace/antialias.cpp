@@ -28,6 +28,12 @@ std::uint64_t bits_of(double v) {
 /// [0, 1) from the top 53 bits.
 double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
 
+/// Whether two encoded colours differ by the threshold.  POV-Ray keeps colours, the gamma
+/// and the threshold (read as a float) in single precision; so does this.
+bool differ(const glm::vec3& a, const glm::vec3& b, float threshold) {
+    return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z) >= threshold;
+}
+
 /// Method 1 (+AM1), POV-Ray's NonAdaptiveSupersamplingM1: the pixels in raster order, each
 /// traced through its centre and compared with its left and top neighbours as they stand
 /// (a neighbour already supersampled counts with its average).  Where either difference
@@ -44,8 +50,10 @@ class NonRecursiveBlock {
           b_(block),
           sample_(sample),
           counters_(counters),
+          threshold_(static_cast<float>(settings.threshold)),
           stride_(block.x1 - block.x0 + 1),
           colour_(static_cast<std::size_t>(stride_) * (block.y1 - block.y0 + 1)),
+          encoded_(colour_.size()),
           done_(colour_.size(), 0) {}
 
     void render(Image& image) {
@@ -54,11 +62,9 @@ class NonRecursiveBlock {
             first_ray(b_.x0 - 1, y, true);
             for (int x = b_.x0; x < b_.x1; ++x) {
                 first_ray(x, y, false);
-                const glm::dvec3& c = colour_[at(x, y)];
-                const bool left_differs =
-                    antialias_distance(colour_[at(x - 1, y)], c, exponent_) >= s_.threshold;
-                const bool top_differs =
-                    antialias_distance(colour_[at(x, y - 1)], c, exponent_) >= s_.threshold;
+                const glm::vec3& c = encoded_[at(x, y)];
+                const bool left_differs = differ(encoded_[at(x - 1, y)], c, threshold_);
+                const bool top_differs = differ(encoded_[at(x, y - 1)], c, threshold_);
                 if (left_differs) supersample(x - 1, y);
                 if (top_differs) supersample(x, y - 1);
                 if (left_differs || top_differs) supersample(x, y);
@@ -78,6 +84,7 @@ class NonRecursiveBlock {
 
     void first_ray(int x, int y, bool frame) {
         colour_[at(x, y)] = sample_(x + 0.5, y + 0.5);
+        encoded_[at(x, y)] = antialias_encode(colour_[at(x, y)], exponent_);
         done_[at(x, y)] = frame;  // the frame is never supersampled
         ++counters_.samples;
     }
@@ -101,6 +108,7 @@ class NonRecursiveBlock {
         counters_.samples += static_cast<std::uint64_t>(n) * n;
         ++counters_.pixels_supersampled;
         colour_[at(x, y)] = sum / static_cast<double>(n * n + 1);
+        encoded_[at(x, y)] = antialias_encode(colour_[at(x, y)], exponent_);
     }
 
     const AntialiasSettings& s_;
@@ -108,8 +116,10 @@ class NonRecursiveBlock {
     PixelBlock b_;
     const SampleFunction& sample_;
     AntialiasCounters& counters_;
+    float threshold_;
     int stride_;
-    std::vector<glm::dvec3> colour_;
+    std::vector<glm::dvec3> colour_;  // the pixels as they stand
+    std::vector<glm::vec3> encoded_;  // the same after the antialias gamma, for comparisons
     std::vector<char> done_;
 };
 
@@ -129,23 +139,32 @@ class RecursiveBlock {
           cells_(1 << (settings.depth - 1)),
           // POV-Ray divides the jitter by the side of a grid twice as fine as the finest cut.
           jitter_(settings.jitter / ((1 << settings.depth) + 1)),
+          threshold_(static_cast<float>(settings.threshold)),
           grid_(static_cast<std::size_t>(cells_ + 1) * (cells_ + 1)),
+          grid_encoded_(grid_.size()),
           sampled_(grid_.size(), 0) {}
 
     void render(Image& image) {
         const int w = b_.x1 - b_.x0;
         const int h = b_.y1 - b_.y0;
         std::vector<glm::dvec3> corner(static_cast<std::size_t>(w + 1) * (h + 1));
-        for (int j = 0; j <= h; ++j)
-            for (int i = 0; i <= w; ++i) corner[j * (w + 1) + i] = sample_(b_.x0 + i, b_.y0 + j);
+        std::vector<glm::vec3> encoded(corner.size());
+        for (int j = 0; j <= h; ++j) {
+            for (int i = 0; i <= w; ++i) {
+                const std::size_t k = static_cast<std::size_t>(j) * (w + 1) + i;
+                corner[k] = sample_(b_.x0 + i, b_.y0 + j);
+                encoded[k] = antialias_encode(corner[k], exponent_);
+            }
+        }
         counters_.samples += corner.size();
         for (int j = 0; j < h; ++j) {
             for (int i = 0; i < w; ++i) {
                 std::fill(sampled_.begin(), sampled_.end(), 0);
-                set(0, 0, corner[j * (w + 1) + i]);
-                set(cells_, 0, corner[j * (w + 1) + i + 1]);
-                set(0, cells_, corner[(j + 1) * (w + 1) + i]);
-                set(cells_, cells_, corner[(j + 1) * (w + 1) + i + 1]);
+                const std::size_t k = static_cast<std::size_t>(j) * (w + 1) + i;
+                set(0, 0, corner[k], encoded[k]);
+                set(cells_, 0, corner[k + 1], encoded[k + 1]);
+                set(0, cells_, corner[k + w + 1], encoded[k + w + 1]);
+                set(cells_, cells_, corner[k + w + 2], encoded[k + w + 2]);
                 bool cut = false;
                 const glm::dvec3 c = subdivide(b_.x0 + i + 0.5, b_.y0 + j + 0.5, 0.5, 0, 0, cells_,
                                                s_.depth - 1, &cut);
@@ -160,8 +179,9 @@ class RecursiveBlock {
     std::size_t at(int gx, int gy) const {
         return static_cast<std::size_t>(gy) * (cells_ + 1) + gx;
     }
-    void set(int gx, int gy, const glm::dvec3& c) {
+    void set(int gx, int gy, const glm::dvec3& c, const glm::vec3& encoded) {
         grid_[at(gx, gy)] = c;
+        grid_encoded_[at(gx, gy)] = encoded;
         sampled_[at(gx, gy)] = 1;
     }
 
@@ -170,7 +190,8 @@ class RecursiveBlock {
         if (sampled_[at(gx, gy)]) return;
         glm::dvec2 p(x, y);
         if (jitter_ > 0.0) p += jitter_ * jitter_offset(s_.jitter_seed, x, y);
-        set(gx, gy, sample_(p.x, p.y));
+        const glm::dvec3 c = sample_(p.x, p.y);
+        set(gx, gy, c, antialias_encode(c, exponent_));
         ++counters_.samples;
     }
 
@@ -178,16 +199,14 @@ class RecursiveBlock {
     /// (gx + step, gy + step).
     glm::dvec3 subdivide(double x, double y, double d, int gx, int gy, int step, int level,
                          bool* cut) {
-        const glm::dvec3 c00 = grid_[at(gx, gy)];
-        const glm::dvec3 c10 = grid_[at(gx + step, gy)];
-        const glm::dvec3 c01 = grid_[at(gx, gy + step)];
-        const glm::dvec3 c11 = grid_[at(gx + step, gy + step)];
-        const auto differ = [&](const glm::dvec3& a, const glm::dvec3& b) {
-            return antialias_distance(a, b, exponent_) >= s_.threshold;
+        const std::size_t i00 = at(gx, gy), i10 = at(gx + step, gy), i01 = at(gx, gy + step),
+                          i11 = at(gx + step, gy + step);
+        const auto apart = [this](std::size_t a, std::size_t b) {
+            return differ(grid_encoded_[a], grid_encoded_[b], threshold_);
         };
-        if (level <= 0 || !(differ(c00, c01) || differ(c00, c10) || differ(c00, c11) ||
-                            differ(c01, c10) || differ(c01, c11) || differ(c10, c11))) {
-            return (c00 + c01 + c10 + c11) / 4.0;
+        if (level <= 0 || !(apart(i00, i01) || apart(i00, i10) || apart(i00, i11) ||
+                            apart(i01, i10) || apart(i01, i11) || apart(i10, i11))) {
+            return (grid_[i00] + grid_[i01] + grid_[i10] + grid_[i11]) / 4.0;
         }
         if (cut) *cut = true;
         const int half = step / 2;
@@ -212,7 +231,9 @@ class RecursiveBlock {
     AntialiasCounters& counters_;
     int cells_;      // the finest cuts across a pixel: 2^(depth - 1)
     double jitter_;  // the scale of the jitter offsets, pixels
-    std::vector<glm::dvec3> grid_;
+    float threshold_;
+    std::vector<glm::dvec3> grid_;         // the pixel's samples on its finest grid
+    std::vector<glm::vec3> grid_encoded_;  // the same after the antialias gamma
     std::vector<char> sampled_;
 };
 
@@ -256,14 +277,17 @@ double antialias_exponent(const GlobalSettings& global, double antialias_gamma) 
     return std::abs(1.0 - exponent) <= 0.01 ? 1.0 : exponent;
 }
 
+glm::vec3 antialias_encode(const glm::dvec3& colour, double exponent) {
+    const glm::vec3 c(colour);
+    if (exponent == 1.0) return c;
+    const float e = static_cast<float>(exponent);
+    return {std::pow(std::max(c.x, 0.0f), e), std::pow(std::max(c.y, 0.0f), e),
+            std::pow(std::max(c.z, 0.0f), e)};
+}
+
 double antialias_distance(const glm::dvec3& a, const glm::dvec3& b, double exponent) {
-    // POV-Ray encodes in single precision; the distance is a sum, so a colour's three
-    // channels are encoded the same way in both.
-    const auto encode = [exponent](double v) {
-        return exponent == 1.0 ? v : std::pow(std::max(v, 0.0), exponent);
-    };
-    return std::abs(encode(a.x) - encode(b.x)) + std::abs(encode(a.y) - encode(b.y)) +
-           std::abs(encode(a.z) - encode(b.z));
+    const glm::vec3 d = glm::abs(antialias_encode(a, exponent) - antialias_encode(b, exponent));
+    return static_cast<double>(d.x + d.y + d.z);
 }
 
 void AntialiasCounters::add(const AntialiasCounters& o) {

@@ -47,10 +47,15 @@ Status check_antialias(const AntialiasSettings& settings);
 /// working gamma to +AG; a scene before #version 3.7 without assumed_gamma has none).
 double antialias_exponent(const GlobalSettings& global, double antialias_gamma);
 
+/// A colour as POV-Ray compares it with the threshold: each channel clipped at 0 and raised
+/// to `exponent`, in single precision as POV-Ray's colours are.
+glm::vec3 antialias_encode(const glm::dvec3& colour, double exponent);
+
 /// POV-Ray's distance between two colours for the threshold: the sum of the absolute
-/// differences of red, green and blue after raising each (clipped at 0) to `exponent`.
-/// (POV-Ray adds the difference of the transmit channel, which is 0 for every pixel the
-/// tracer renders: a 3.7 scene's background is opaque without an alpha channel.)
+/// differences of red, green and blue after antialias_encode.  (POV-Ray adds the difference
+/// of the transmit channel, which is 0 for every pixel the tracer renders: a 3.7 scene's
+/// background is opaque without an alpha channel.)  The threshold is reached when the
+/// distance is at least the threshold, both in single precision.
 double antialias_distance(const glm::dvec3& a, const glm::dvec3& b, double exponent);
 
 /// The colour seen at an image position, in pixels from the image's top-left corner (a
