@@ -24,7 +24,8 @@ constexpr float kInk = 0.93f;     // the labels
 /// The first of the caption fonts OpenImageIO can draw with; empty when none.
 std::string find_label_font(int font_px) {
     for (const auto& name : caption_fonts()) {
-        OIIO::ImageBuf probe(OIIO::ImageSpec(8, 8, 3, OIIO::TypeDesc::FLOAT));
+        // The probe holds the glyph whole: OpenImageIO 2.4 asserts on text outside the image.
+        OIIO::ImageBuf probe(OIIO::ImageSpec(2 * font_px, 2 * font_px, 3, OIIO::TypeDesc::FLOAT));
         if (OIIO::ImageBufAlgo::render_text(probe, 0, font_px, "x", font_px, name)) return name;
     }
     return "";
@@ -40,16 +41,33 @@ void paste_codes(OIIO::ImageBuf& buf, const Image& codes, int x0, int y0) {
     }
 }
 
-/// A label centred in a strip `width` wide, drawn on the strip alone so that it cannot run
-/// into the other half.
+/// A label centred in a strip `width` x `height`, drawn on the strip alone so that it cannot
+/// run into the other half, and only when it fits (OpenImageIO 2.4 asserts on text that
+/// reaches past the image).
 void draw_label(OIIO::ImageBuf& buf, const std::string& text, const std::string& font, int font_px,
                 int x0, int y0, int width, int height) {
     OIIO::ImageBuf strip(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
     OIIO::ImageBufAlgo::fill(strip, {kGround, kGround, kGround});
-    OIIO::ImageBufAlgo::render_text(strip, width / 2, height / 2, text, font_px, font,
-                                    {kInk, kInk, kInk}, OIIO::ImageBufAlgo::TextAlignX::Center,
-                                    OIIO::ImageBufAlgo::TextAlignY::Center);
+    const OIIO::ROI extent = OIIO::ImageBufAlgo::text_size(text, font_px, font);
+    if (extent.defined() && extent.width() <= width && extent.height() <= height) {
+        const int x = (width - extent.width()) / 2 - extent.xbegin;
+        const int y = (height - extent.height()) / 2 - extent.ybegin;
+        OIIO::ImageBufAlgo::render_text(strip, x, y, text, font_px, font, {kInk, kInk, kInk});
+    }
     OIIO::ImageBufAlgo::paste(buf, x0, y0, 0, 0, strip);
+}
+
+/// The largest size up to `font_px` at which every label fits `width` x `height`.
+int fitting_font_px(const std::string& font, int font_px, int width, int height) {
+    for (; font_px > 6; --font_px) {
+        bool fits = true;
+        for (const char* label : {kWithoutMirageLabel, kWithMirageLabel}) {
+            const OIIO::ROI e = OIIO::ImageBufAlgo::text_size(label, font_px, font);
+            fits = fits && e.defined() && e.width() <= width && e.height() <= height;
+        }
+        if (fits) break;
+    }
+    return font_px;
 }
 
 }  // namespace
@@ -96,10 +114,10 @@ Result<SideBySideReport> trace_side_by_side(const TraceOptions& options) {
     paste_codes(buf, left, r.left_x, r.top_y);
     paste_codes(buf, right, r.right_x, r.top_y);
     if (!r.font.empty()) {
-        draw_label(buf, kWithoutMirageLabel, r.font, font_px, r.left_x, r.top_y + h + pad / 2, w,
+        const int px = fitting_font_px(r.font, font_px, w, strip_h);
+        draw_label(buf, kWithoutMirageLabel, r.font, px, r.left_x, r.top_y + h + pad / 2, w,
                    strip_h);
-        draw_label(buf, kWithMirageLabel, r.font, font_px, r.right_x, r.top_y + h + pad / 2, w,
-                   strip_h);
+        draw_label(buf, kWithMirageLabel, r.font, px, r.right_x, r.top_y + h + pad / 2, w, strip_h);
     }
     const OIIO::ImageSpec& spec = buf.spec();
     Image codes(spec.width, spec.height);

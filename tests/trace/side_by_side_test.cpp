@@ -95,6 +95,20 @@ TEST(SideBySide, AntialiasingAppliesToBothHalves) {
     EXPECT_EQ(both->with.mode, PathMode::PerRay);
 }
 
+TEST(SideBySide, TallImagesGetLargerLabels) {
+    // 400 rows ask for 25-pixel labels, larger than the probe for a font once was (OpenImageIO
+    // aborted on text outside it); 60 columns hold them only when made smaller.
+    const auto dir = test_dir("side_by_side", "tall");
+    TraceOptions o = options(scene_path("desert"), dir / "tall.png");
+    o.width = 60;
+    o.height = 400;
+    auto both = trace_side_by_side(o);
+    ASSERT_TRUE(both.ok()) << both.message();
+    auto image = read_image((dir / "tall.png").string());
+    ASSERT_TRUE(image.ok());
+    EXPECT_GT(image->height, 400);
+}
+
 TEST(SideBySide, RefusesWhatWouldNotShowTheMirage) {
     const auto dir = test_dir("side_by_side", "refused");
     // A scene without an atmosphere: both halves would be the same.
