@@ -40,7 +40,7 @@ constexpr double kGainDb = 10.0;
 // measured is 51 pixels (handwritten, +AM2: method 2's corner rays down the image's centre
 // column have a direction with an x of exactly 0, where the plain tracer too differs from
 // POV-Ray, as a render 161 pixels wide shows).  Comparing colours in linear values instead of
-// after the +AG gamma leaves more than that apart on 14 of the 18 renders (1 to 2131 pixels),
+// after the +AG gamma leaves more than that apart on 13 of the 18 renders (1 to 2131 pixels),
 // though all of them pass 35 dB.
 
 /// The scene file: written from parity_scenes.h, or one of scenes/.
