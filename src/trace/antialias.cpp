@@ -85,7 +85,7 @@ class NonRecursiveBlock {
     void first_ray(int x, int y, bool frame) {
         colour_[at(x, y)] = sample_(x + 0.5, y + 0.5);
         encoded_[at(x, y)] = antialias_encode(colour_[at(x, y)], exponent_);
-        done_[at(x, y)] = frame;  // the frame is never supersampled
+        done_[at(x, y)] = frame ? 1 : 0;  // the frame is never supersampled
         ++counters_.samples;
     }
 
