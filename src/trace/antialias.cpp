@@ -30,8 +30,9 @@ double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; 
 
 /// Whether two encoded colours differ by the threshold.  POV-Ray keeps colours, the gamma
 /// and the threshold (read as a float) in single precision; so does this.
-bool differ(const glm::vec3& a, const glm::vec3& b, float threshold) {
-    return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z) >= threshold;
+bool differ(const glm::vec4& a, const glm::vec4& b, float threshold) {
+    const glm::vec4 d = glm::abs(a - b);
+    return d.x + d.y + d.z + d.w >= threshold;
 }
 
 /// Method 1 (+AM1), POV-Ray's NonAdaptiveSupersamplingM1: the pixels in raster order, each
@@ -62,7 +63,7 @@ class NonRecursiveBlock {
             first_ray(b_.x0 - 1, y, true);
             for (int x = b_.x0; x < b_.x1; ++x) {
                 first_ray(x, y, false);
-                const glm::vec3& c = encoded_[at(x, y)];
+                const glm::vec4& c = encoded_[at(x, y)];
                 const bool left_differs = differ(encoded_[at(x - 1, y)], c, threshold_);
                 const bool top_differs = differ(encoded_[at(x, y - 1)], c, threshold_);
                 if (left_differs) supersample(x - 1, y);
@@ -97,7 +98,7 @@ class NonRecursiveBlock {
         const int n = s_.depth;
         const double cell = 1.0 / n;
         const double jitter = s_.jitter * cell;
-        glm::dvec3 sum = colour_[at(x, y)];
+        glm::dvec4 sum = colour_[at(x, y)];
         for (int j = 0; j < n; ++j) {
             for (int i = 0; i < n; ++i) {
                 glm::dvec2 p(x + (i + 0.5) * cell, y + (j + 0.5) * cell);
@@ -118,8 +119,8 @@ class NonRecursiveBlock {
     AntialiasCounters& counters_;
     float threshold_;
     int stride_;
-    std::vector<glm::dvec3> colour_;  // the pixels as they stand
-    std::vector<glm::vec3> encoded_;  // the same after the antialias gamma, for comparisons
+    std::vector<glm::dvec4> colour_;  // the pixels as they stand
+    std::vector<glm::vec4> encoded_;  // the same after the antialias gamma, for comparisons
     std::vector<char> done_;
 };
 
@@ -147,8 +148,8 @@ class RecursiveBlock {
     void render(Image& image) {
         const int w = b_.x1 - b_.x0;
         const int h = b_.y1 - b_.y0;
-        std::vector<glm::dvec3> corner(static_cast<std::size_t>(w + 1) * (h + 1));
-        std::vector<glm::vec3> encoded(corner.size());
+        std::vector<glm::dvec4> corner(static_cast<std::size_t>(w + 1) * (h + 1));
+        std::vector<glm::vec4> encoded(corner.size());
         for (int j = 0; j <= h; ++j) {
             for (int i = 0; i <= w; ++i) {
                 const std::size_t k = static_cast<std::size_t>(j) * (w + 1) + i;
@@ -166,7 +167,7 @@ class RecursiveBlock {
                 set(0, cells_, corner[k + w + 1], encoded[k + w + 1]);
                 set(cells_, cells_, corner[k + w + 2], encoded[k + w + 2]);
                 bool cut = false;
-                const glm::dvec3 c = subdivide(b_.x0 + i + 0.5, b_.y0 + j + 0.5, 0.5, 0, 0, cells_,
+                const glm::dvec4 c = subdivide(b_.x0 + i + 0.5, b_.y0 + j + 0.5, 0.5, 0, 0, cells_,
                                                s_.depth - 1, &cut);
                 counters_.pixels_supersampled += cut;
                 image.set(b_.x0 + i, b_.y0 + j, glm::vec3(c));
@@ -179,7 +180,7 @@ class RecursiveBlock {
     std::size_t at(int gx, int gy) const {
         return static_cast<std::size_t>(gy) * (cells_ + 1) + gx;
     }
-    void set(int gx, int gy, const glm::dvec3& c, const glm::vec3& encoded) {
+    void set(int gx, int gy, const glm::dvec4& c, const glm::vec4& encoded) {
         grid_[at(gx, gy)] = c;
         grid_encoded_[at(gx, gy)] = encoded;
         sampled_[at(gx, gy)] = 1;
@@ -190,14 +191,14 @@ class RecursiveBlock {
         if (sampled_[at(gx, gy)]) return;
         glm::dvec2 p(x, y);
         if (jitter_ > 0.0) p += jitter_ * jitter_offset(s_.jitter_seed, x, y);
-        const glm::dvec3 c = sample_(p.x, p.y);
+        const glm::dvec4 c = sample_(p.x, p.y);
         set(gx, gy, c, antialias_encode(c, exponent_));
         ++counters_.samples;
     }
 
     /// The square of half side `d` centred at (x, y), its corners at grid points (gx, gy) and
     /// (gx + step, gy + step).
-    glm::dvec3 subdivide(double x, double y, double d, int gx, int gy, int step, int level,
+    glm::dvec4 subdivide(double x, double y, double d, int gx, int gy, int step, int level,
                          bool* cut) {
         const std::size_t i00 = at(gx, gy), i10 = at(gx + step, gy), i01 = at(gx, gy + step),
                           i11 = at(gx + step, gy + step);
@@ -216,7 +217,7 @@ class RecursiveBlock {
         sample_once(gx + half, gy + step, x, y + d);
         sample_once(gx + half, gy + half, x, y);
         const double q = d / 2.0;
-        const glm::dvec3 sum =
+        const glm::dvec4 sum =
             subdivide(x - q, y - q, q, gx, gy, half, level - 1, nullptr) +
             subdivide(x - q, y + q, q, gx, gy + half, half, level - 1, nullptr) +
             subdivide(x + q, y - q, q, gx + half, gy, half, level - 1, nullptr) +
@@ -232,8 +233,8 @@ class RecursiveBlock {
     int cells_;      // the finest cuts across a pixel: 2^(depth - 1)
     double jitter_;  // the scale of the jitter offsets, pixels
     float threshold_;
-    std::vector<glm::dvec3> grid_;         // the pixel's samples on its finest grid
-    std::vector<glm::vec3> grid_encoded_;  // the same after the antialias gamma
+    std::vector<glm::dvec4> grid_;         // the pixel's samples on its finest grid
+    std::vector<glm::vec4> grid_encoded_;  // the same after the antialias gamma
     std::vector<char> sampled_;
 };
 
@@ -277,17 +278,18 @@ double antialias_exponent(const GlobalSettings& global, double antialias_gamma) 
     return std::abs(1.0 - exponent) <= 0.01 ? 1.0 : exponent;
 }
 
-glm::vec3 antialias_encode(const glm::dvec3& colour, double exponent) {
-    const glm::vec3 c(colour);
+glm::vec4 antialias_encode(const glm::dvec4& colour, double exponent) {
+    const glm::vec4 c(colour);
     if (exponent == 1.0) return c;
     const float e = static_cast<float>(exponent);
+    // The transmit channel is not encoded (GammaCurve::Encode leaves it).
     return {std::pow(std::max(c.x, 0.0f), e), std::pow(std::max(c.y, 0.0f), e),
-            std::pow(std::max(c.z, 0.0f), e)};
+            std::pow(std::max(c.z, 0.0f), e), c.w};
 }
 
-double antialias_distance(const glm::dvec3& a, const glm::dvec3& b, double exponent) {
-    const glm::vec3 d = glm::abs(antialias_encode(a, exponent) - antialias_encode(b, exponent));
-    return static_cast<double>(d.x + d.y + d.z);
+double antialias_distance(const glm::dvec4& a, const glm::dvec4& b, double exponent) {
+    const glm::vec4 d = glm::abs(antialias_encode(a, exponent) - antialias_encode(b, exponent));
+    return static_cast<double>(d.x + d.y + d.z + d.w);
 }
 
 void AntialiasCounters::add(const AntialiasCounters& o) {

@@ -47,20 +47,20 @@ Status check_antialias(const AntialiasSettings& settings);
 /// working gamma to +AG; a scene before #version 3.7 without assumed_gamma has none).
 double antialias_exponent(const GlobalSettings& global, double antialias_gamma);
 
-/// A colour as POV-Ray compares it with the threshold: each channel clipped at 0 and raised
-/// to `exponent`, in single precision as POV-Ray's colours are.
-glm::vec3 antialias_encode(const glm::dvec3& colour, double exponent);
+/// A sample as POV-Ray compares it with the threshold: red, green and blue each clipped at 0
+/// and raised to `exponent`, transmit as it is, in single precision as POV-Ray's colours are.
+glm::vec4 antialias_encode(const glm::dvec4& sample, double exponent);
 
-/// POV-Ray's distance between two colours for the threshold: the sum of the absolute
-/// differences of red, green and blue after antialias_encode.  (POV-Ray adds the difference
-/// of the transmit channel, which is 0 for every pixel the tracer renders: a 3.7 scene's
-/// background is opaque without an alpha channel.)  The threshold is reached when the
-/// distance is at least the threshold, both in single precision.
-double antialias_distance(const glm::dvec3& a, const glm::dvec3& b, double exponent);
+/// POV-Ray's distance between two samples for the threshold: the sum of the absolute
+/// differences of red, green, blue and transmit after antialias_encode.  The threshold is
+/// reached when the distance is at least the threshold, both in single precision.
+double antialias_distance(const glm::dvec4& a, const glm::dvec4& b, double exponent);
 
 /// The colour seen at an image position, in pixels from the image's top-left corner (a
-/// pixel's centre is at +0.5), in the scene's working space.
-using SampleFunction = std::function<glm::dvec3(double x, double y)>;
+/// pixel's centre is at +0.5), in the scene's working space, and its transmit: 1 where the
+/// camera gives no ray (POV-Ray marks such a position so; the colour is black), else 0 (a 3.7
+/// scene's background is opaque without an alpha channel, and the tracer writes none).
+using SampleFunction = std::function<glm::dvec4(double x, double y)>;
 
 /// A block of pixels: columns [x0, x1), rows [y0, y1).
 struct PixelBlock {

@@ -127,17 +127,18 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
     const auto work = [&](int thread) {
         const double cpu_start = thread_cpu_seconds();
         TraceCounters& mine = counters[thread];
-        // The colour seen through an image position (pixels from the top-left corner).
+        // The colour seen through an image position (pixels from the top-left corner), and
+        // its transmit: 1 where the camera gives no ray, as POV-Ray marks it.
         const auto shade = [&](double x, double y) {
             const CameraRay ray = pixel_ray(scene.camera, x, y, settings.width, settings.height);
-            if (!ray.traced) return glm::dvec3(0.0);  // POV-Ray leaves it black
+            if (!ray.traced) return glm::dvec4(0.0, 0.0, 0.0, 1.0);  // POV-Ray leaves it black
             RayStart start;
             start.origin = ray.origin;
             start.direction = ray.direction;
             start.image_position = glm::dvec2(x, y);
             const glm::dvec3 c = shader.trace_camera_ray(start, mine);
             MIRAGE_CHECK(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
-            return c;
+            return glm::dvec4(c, 0.0);
         };
         const SampleFunction sample = shade;
         for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {

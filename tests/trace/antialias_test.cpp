@@ -13,7 +13,10 @@ namespace {
 
 constexpr double kEdgeX = 10.3;  // white left of it, black right of it
 
-glm::dvec3 edge(double x, double /*y*/) { return glm::dvec3(x < kEdgeX ? 1.0 : 0.0); }
+/// A grey sample the camera traced (transmit 0).
+glm::dvec4 grey(double v) { return {v, v, v, 0.0}; }
+
+glm::dvec4 edge(double x, double /*y*/) { return grey(x < kEdgeX ? 1.0 : 0.0); }
 
 AntialiasSettings settings(AntialiasMethod method, int depth) {
     AntialiasSettings s;
@@ -38,7 +41,7 @@ Rendered render_block(const AntialiasSettings& s, const PixelBlock& b, const Sam
 
 TEST(Antialias, NonRecursiveLeavesAUniformImageAlone) {
     const auto s = settings(AntialiasMethod::NonRecursive, 3);
-    const auto r = render_block(s, {0, 0, 20, 6}, [](double, double) { return glm::dvec3(0.4); });
+    const auto r = render_block(s, {0, 0, 20, 6}, [](double, double) { return grey(0.4); });
     EXPECT_EQ(r.counters.pixels, 120u);
     EXPECT_EQ(r.counters.pixels_supersampled, 0u);
     // Each pixel's centre, and the row above and the column left of the block.
@@ -76,7 +79,7 @@ TEST(Antialias, NonRecursiveNeverSupersamplesAcrossABlockEdge) {
     // (black) the first of the next, compared with a pixel 31 traced afresh and never
     // supersampled (POV-Ray's blocks are independent).  So pixel 31 stays white and pixel 32
     // is supersampled to black; with one block of 64, pixel 31 gets (1 + 6) / 10.
-    const auto at_31_7 = [](double x, double) { return glm::dvec3(x < 31.7 ? 1.0 : 0.0); };
+    const auto at_31_7 = [](double x, double) { return grey(x < 31.7 ? 1.0 : 0.0); };
     AntialiasSettings s = settings(AntialiasMethod::NonRecursive, 3);
     Image image(64, 2);
     AntialiasCounters counters;
@@ -96,16 +99,28 @@ TEST(Antialias, ThresholdIsTheSumOfTheGammaEncodedChannelDifferences) {
     // channel (0.1) or the Euclidean distance (0.17) would not reach 0.3, nor would the
     // linear difference (0.0095).
     const auto step = [](double v) {
-        return [v](double x, double) { return glm::dvec3(x < 5.0 ? 0.0 : v); };
+        return [v](double x, double) { return grey(x < 5.0 ? 0.0 : v); };
     };
     const auto s = settings(AntialiasMethod::NonRecursive, 3);
     EXPECT_GT(render_block(s, {0, 0, 10, 2}, step(0.00320)).counters.pixels_supersampled, 0u);
     EXPECT_EQ(render_block(s, {0, 0, 10, 2}, step(0.00312)).counters.pixels_supersampled, 0u);
-    EXPECT_NEAR(antialias_distance(glm::dvec3(0.0), glm::dvec3(std::pow(0.1, 2.5)), 0.4), 0.3,
+    EXPECT_NEAR(antialias_distance(grey(0.0), grey(std::pow(0.1, 2.5)), 0.4), 0.3,
                 1e-6);  // single precision, as POV-Ray's
-    EXPECT_NEAR(antialias_distance({0.2, 0.5, 0.9}, {0.1, 0.7, 0.4}, 1.0), 0.1 + 0.2 + 0.5, 1e-6);
+    EXPECT_NEAR(antialias_distance({0.2, 0.5, 0.9, 0.0}, {0.1, 0.7, 0.4, 1.0}, 1.0),
+                0.1 + 0.2 + 0.5 + 1.0, 1e-6);
     // Negative channels are clipped at 0 before encoding.
-    EXPECT_DOUBLE_EQ(antialias_distance({-1.0, 0.0, 0.0}, glm::dvec3(0.0), 0.4), 0.0);
+    EXPECT_DOUBLE_EQ(antialias_distance({-1.0, 0.0, 0.0, 0.0}, grey(0.0), 0.4), 0.0);
+}
+
+TEST(Antialias, WhereTheCameraGivesNoRayTransmitCounts) {
+    // Black traced pixels beside positions with no camera ray (a fisheye's corners): POV-Ray
+    // marks those with transmit 1, so they differ by 1 from black and are supersampled.
+    const auto corner = [](double x, double) {
+        return x < 5.0 ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : grey(0.0);
+    };
+    const auto r = render_block(settings(AntialiasMethod::NonRecursive, 3), {0, 0, 10, 2}, corner);
+    EXPECT_EQ(r.counters.pixels_supersampled, 2u * 2u);  // pixels 4 and 5 of each row
+    for (float v : r.image.pixels) EXPECT_EQ(v, 0.0f);   // black all the same
 }
 
 TEST(Antialias, ExponentTranscodesTheWorkingGammaToTheAntialiasGamma) {
@@ -139,7 +154,7 @@ TEST(Antialias, RecursiveSubdividesWhereCornersDiffer) {
     }
     // A uniform block: every pixel the mean of its corners, only the corners traced.
     const auto uniform = render_block(settings(AntialiasMethod::Recursive, 3), {0, 0, 8, 4},
-                                      [](double, double) { return glm::dvec3(0.25); });
+                                      [](double, double) { return grey(0.25); });
     EXPECT_EQ(uniform.counters.samples, 9u * 5u);
     for (float v : uniform.image.pixels) EXPECT_FLOAT_EQ(v, 0.25f);
 }
@@ -147,7 +162,7 @@ TEST(Antialias, RecursiveSubdividesWhereCornersDiffer) {
 TEST(Antialias, RecursiveSamplesAtCornersNotCentres) {
     // A colour that changes within a pixel but equals at its corners: method 2 never sees it.
     const auto stripes = [](double x, double) {
-        return glm::dvec3(std::abs(x - std::round(x)) < 0.25 ? 1.0 : 0.0);
+        return grey(std::abs(x - std::round(x)) < 0.25 ? 1.0 : 0.0);
     };
     const auto r = render_block(settings(AntialiasMethod::Recursive, 3), {0, 0, 6, 2}, stripes);
     EXPECT_EQ(r.counters.pixels_supersampled, 0u);
@@ -182,7 +197,7 @@ TEST(Antialias, JitterMovesSubSamplesWithinHalfACellReproducibly) {
     EXPECT_GE(moved, 8);
     // The same seed gives the same image; another seed another (a colour that changes
     // everywhere, so that every moved sample shows).
-    const auto ramp = [](double x, double y) { return edge(x, y) + glm::dvec3(1e-3 * x * y); };
+    const auto ramp = [](double x, double y) { return edge(x, y) + grey(1e-3 * x * y); };
     const auto b = render_block(s, {0, 0, 20, 2}, ramp);
     EXPECT_EQ(b.image.pixels, render_block(s, {0, 0, 20, 2}, ramp).image.pixels);
     s.jitter_seed = 7;
