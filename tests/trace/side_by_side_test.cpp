@@ -133,6 +133,19 @@ TEST(SideBySide, RefusesWhatWouldNotShowTheMirage) {
     EXPECT_FALSE(over.ok());
 }
 
+TEST(SideBySide, WithoutAFontTheSummarySaysTheHalvesAreUnlabelled) {
+    SideBySideReport r;
+    r.output = "both.png";
+    r.font = "DejaVuSans";
+    EXPECT_EQ(side_by_side_summary(r).find("note:"), std::string::npos);
+    r.font.clear();
+    EXPECT_NE(side_by_side_summary(r).find("note: no font found for the labels (DejaVuSans, "
+                                           "Debian's fonts-dejavu-core): the halves are "
+                                           "unlabelled\n"),
+              std::string::npos)
+        << side_by_side_summary(r);
+}
+
 TEST(SideBySide, FromTheCommandLine) {
     const auto dir = test_dir("side_by_side", "cli");
     const auto out = dir / "both.png";
