@@ -4,12 +4,91 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "trace_scene/side_by_side.h"
 #include "trace_scene/trace_scene.h"
+#include "util/format.h"
 #include "util/text_escape.h"
 
 namespace mirage {
 
 namespace {
+
+/// POV-Ray's antialiasing options (+A, +AM, +R, +J) and --side-by-side.
+struct AntialiasCli {
+    CLI::Option* antialias = nullptr;   // --antialias: given when antialiasing
+    std::vector<CLI::Option*> with_it;  // options that need --antialias
+    int method = 1;                     // +AM
+    bool no_jitter = false;
+    bool side_by_side = false;
+
+    void add(CLI::App* sub, AntialiasSettings& aa) {
+        const std::string fallback = shortest(aa.threshold);
+        // Without a value --antialias takes +A's threshold (apply()); a value is checked here,
+        // so that a scene taken for one is named.
+        const CLI::Validator threshold(
+            [fallback](std::string& v) {
+                double d = 0.0;
+                if (v.empty() || v == "true" ||
+                    (CLI::detail::lexical_cast(v, d) && d >= 0.0 && d <= 1.0))
+                    return std::string();
+                return "'" + v +
+                       "' is not a threshold in [0, 1] (before the scene, write --antialias=" +
+                       fallback + ")";
+            },
+            "");
+        const std::string help =
+            "POV-Ray's +A: supersample where colours differ by THRESHOLD (default " + fallback +
+            ")";
+        antialias = sub->add_option("--antialias", aa.threshold, help)
+                        ->type_name("[THRESHOLD]")
+                        ->expected(0, 1)
+                        ->check(threshold);
+        with_it = {sub->add_option("--antialias-method", method,
+                                   "POV-Ray's +AM: 1 non-recursive, 2 adaptive recursive")
+                       ->check(CLI::IsMember({1, 2}))
+                       ->capture_default_str(),
+                   sub->add_option("--antialias-depth", aa.depth,
+                                   "POV-Ray's +R: method 1's rays per side, method 2's levels + 1")
+                       ->check(CLI::Range(1, 9))
+                       ->capture_default_str(),
+                   sub->add_option("--jitter", aa.jitter, "POV-Ray's +J: the sub-samples' jitter")
+                       ->check(CLI::Range(0.0, 1.0))
+                       ->capture_default_str()};
+        sub->add_flag("--no-jitter", no_jitter, "POV-Ray's -J: sub-samples on their grid");
+        sub->add_flag("--side-by-side,--before-after", side_by_side,
+                      "one PNG: the scene without the atmosphere (left) and with it (right), "
+                      "labelled");
+    }
+
+    /// Sets `t`'s antialiasing; with --side-by-side traces both halves and returns true.
+    bool apply(TraceOptions& t, bool quiet) const {
+        if (*antialias) {
+            t.antialias.method =
+                method == 2 ? AntialiasMethod::Recursive : AntialiasMethod::NonRecursive;
+            const auto& given = antialias->results();
+            if (given.empty() || given.front().empty() || given.front() == "true")
+                t.antialias.threshold = AntialiasSettings{}.threshold;
+        }
+        if (no_jitter) t.antialias.jitter = 0.0;
+        for (const CLI::Option* opt : with_it)
+            if (!*antialias && *opt)
+                std::cerr << "mirage trace: warning: " << opt->get_name()
+                          << " has no effect without --antialias (as in POV-Ray)\n";
+        if (!side_by_side) return false;
+        if (!t.atmosphere) {
+            std::cerr << "mirage trace: --side-by-side renders the scene without and with the "
+                         "atmosphere; drop --no-atmosphere\n";
+            throw CommandFailed{1};
+        }
+        auto both = trace_side_by_side(t);
+        if (!both) {
+            std::cerr << "mirage trace: " << escape_terminal(both.message()) << "\n";
+            throw CommandFailed{1};
+        }
+        if (!quiet) std::cout << side_by_side_summary(*both);
+        return true;
+    }
+};
 
 struct TraceCliOptions {
     TraceOptions trace;
@@ -18,6 +97,7 @@ struct TraceCliOptions {
     std::vector<std::string> declares;
     bool no_atmosphere = false;
     bool quiet = false;
+    AntialiasCli antialias;
 };
 
 }  // namespace
@@ -57,6 +137,7 @@ void setup_trace_command(CLI::App& app) {
         ->check(declare_text())
         ->allow_extra_args(false);  // one NAME=VALUE each time: the scene may follow
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
+    o->antialias.add(sub, o->trace.antialias);
     sub->footer(povray_switches_note(true));
     sub->callback([o, tol, clock] {
         TraceOptions t = o->trace;
@@ -65,6 +146,7 @@ void setup_trace_command(CLI::App& app) {
         t.declares = declared_numbers(o->declares);
         t.atmosphere = !o->no_atmosphere;
         t.progress = !o->quiet;
+        if (o->antialias.apply(t, o->quiet)) return;
         auto report = trace_scene(t);
         if (!report) {
             std::cerr << "mirage trace: " << escape_terminal(report.message()) << "\n";

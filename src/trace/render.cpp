@@ -77,6 +77,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                           "x" + std::to_string(settings.height));
     }
     if (settings.tile_size <= 0) return make_error("tile size must be positive");
+    if (auto s = check_antialias(settings.antialias); !s) return s.error();
     if (auto s = check_supported(scene); !s) return s.error();
     auto accel = SceneAccel::build(scene);
     if (!accel) return accel.error();
@@ -101,8 +102,13 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
 
     const auto start = std::chrono::steady_clock::now();
     const Shader shader(scene, *accel, propagator);
-    const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
-    const int tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
+    const AntialiasSettings& aa = settings.antialias;
+    // Antialiasing renders POV-Ray's blocks: method 1's comparisons at a block's edges depend
+    // on where the blocks are.
+    const int tile_size = aa.enabled() ? aa.block_size : settings.tile_size;
+    const double aa_exponent = antialias_exponent(scene.global, aa.gamma);
+    const int tiles_x = (settings.width + tile_size - 1) / tile_size;
+    const int tiles_y = (settings.height + tile_size - 1) / tile_size;
     const int tile_count = tiles_x * tiles_y;
     int threads = settings.threads > 0 ? settings.threads
                                        : static_cast<int>(std::thread::hardware_concurrency());
@@ -111,6 +117,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
     RenderResult result;
     result.image = Image(settings.width, settings.height);
     std::vector<TraceCounters> counters(threads);
+    std::vector<AntialiasCounters> aa_counters(threads);
     std::vector<double> cpu(threads, 0.0);
     std::atomic<int> next_tile{0};
     ProgressBar progress(settings.progress && isatty(fileno(stderr)) != 0, tile_count);
@@ -120,27 +127,32 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
     const auto work = [&](int thread) {
         const double cpu_start = thread_cpu_seconds();
         TraceCounters& mine = counters[thread];
+        // The colour seen through an image position (pixels from the top-left corner), and
+        // its transmit: 1 where the camera gives no ray, as POV-Ray marks it.
+        const auto shade = [&](double x, double y) {
+            const CameraRay ray = pixel_ray(scene.camera, x, y, settings.width, settings.height);
+            if (!ray.traced) return glm::dvec4(0.0, 0.0, 0.0, 1.0);  // POV-Ray leaves it black
+            RayStart start;
+            start.origin = ray.origin;
+            start.direction = ray.direction;
+            start.image_position = glm::dvec2(x, y);
+            const glm::dvec3 c = shader.trace_camera_ray(start, mine);
+            MIRAGE_CHECK(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+            return glm::dvec4(c, 0.0);
+        };
+        const SampleFunction sample = shade;
         for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
-            const int x0 = (tile % tiles_x) * settings.tile_size;
-            const int y0 = (tile / tiles_x) * settings.tile_size;
-            const int x1 = std::min(x0 + settings.tile_size, settings.width);
-            const int y1 = std::min(y0 + settings.tile_size, settings.height);
-            for (int y = y0; y < y1; ++y) {
-                for (int x = x0; x < x1; ++x) {
-                    const CameraRay ray =
-                        pixel_ray(scene.camera, x + 0.5, y + 0.5, settings.width, settings.height);
-                    if (!ray.traced) {
-                        result.image.set(x, y, glm::vec3(0.0f));  // POV-Ray leaves it black
-                        continue;
-                    }
-                    RayStart start;
-                    start.origin = ray.origin;
-                    start.direction = ray.direction;
-                    start.image_position = glm::dvec2(x + 0.5, y + 0.5);
-                    const glm::dvec3 c = shader.trace_camera_ray(start, mine);
-                    MIRAGE_CHECK(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
-                    result.image.set(x, y, glm::vec3(c));
-                }
+            const int x0 = (tile % tiles_x) * tile_size;
+            const int y0 = (tile / tiles_x) * tile_size;
+            const int x1 = std::min(x0 + tile_size, settings.width);
+            const int y1 = std::min(y0 + tile_size, settings.height);
+            if (aa.enabled()) {
+                antialias_block(aa, aa_exponent, {x0, y0, x1, y1}, sample, result.image,
+                                aa_counters[thread]);
+            } else {
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x)
+                        result.image.set(x, y, glm::vec3(shade(x + 0.5, y + 0.5)));
             }
             progress.advance();
         }
@@ -156,6 +168,8 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.stats.threads = threads;
     for (const auto& c : counters) result.stats.counters.add(c);
+    result.stats.antialiased = aa.enabled();
+    for (const auto& c : aa_counters) result.stats.antialias.add(c);
     for (const double c : cpu) result.stats.cpu_seconds += c;
     return result;
 }
@@ -175,6 +189,12 @@ std::string format_stats(const RenderStats& stats, int width, int height) {
         << " segments/ray, " << stats.queries_per_ray() << " tested/ray, " << stats.seconds
         << " s, " << stats.cpu_seconds << " s CPU, " << stats.mrays_per_second() << " Mrays/s on "
         << stats.threads << " thread" << (stats.threads == 1 ? "" : "s");
+    if (stats.antialiased) {
+        out.precision(1);
+        out << "; antialiased: " << stats.antialias.pixels_supersampled << " pixels supersampled ("
+            << 100.0 * stats.antialias.supersampled_share() << " %), " << stats.antialias.samples
+            << " positions sampled";
+    }
     return out.str();
 }
 

@@ -9,6 +9,7 @@
 #include "image/image.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "trace/antialias.h"
 #include "trace/propagator.h"
 #include "trace/shading.h"
 #include "util/result.h"
@@ -21,6 +22,8 @@ struct RenderSettings {
     int threads = 0;       // worker threads; 0 = all cores
     bool progress = true;  // progress bar on stderr, shown only when stderr is a terminal
     int tile_size = 32;    // side of the square tiles handed to the threads, in pixels
+    // POV-Ray's antialiasing; when on, the tiles are its render blocks (antialias.block_size)
+    AntialiasSettings antialias;
 };
 
 /// What a render did and how fast.
@@ -30,6 +33,9 @@ struct RenderStats {
     double seconds = 0.0;      // wall-clock time of the tracing
     double cpu_seconds = 0.0;  // processor time of the tracing threads, summed (a measure that
                                // other jobs on the machine disturb less than the wall clock)
+    // Whether POV-Ray's antialiasing was on, and its pixels supersampled and positions sampled.
+    bool antialiased = false;
+    AntialiasCounters antialias;
     /// Camera and reflected rays: the rays that went through the propagator.
     std::uint64_t rays() const { return counters.camera_rays + counters.reflected_rays; }
     /// Propagated rays plus shadow rays.
@@ -52,9 +58,10 @@ struct RenderResult {
 using PixelRayFunction =
     std::function<CameraRay(const Camera& camera, double x, double y, int width, int height)>;
 
-/// Renders the scene as POV-Ray renders it without antialiasing: one ray through each
-/// pixel's centre, shaded by Shader.  Fails (with the message of check_supported or of the
-/// geometry) for scenes outside the supported subset, and for non-positive sizes.
+/// Renders the scene as POV-Ray renders it: without antialiasing one ray through each
+/// pixel's centre, shaded by Shader; with it, POV-Ray's sampling method (trace/antialias.h).
+/// Fails (with the message of check_supported or of the geometry) for scenes outside the
+/// supported subset, for non-positive sizes and for antialias settings POV-Ray would clip.
 Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                             const Propagator& propagator,
                             const PixelRayFunction& pixel_ray = camera_ray);
@@ -63,7 +70,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
 Result<RenderResult> render(const Scene& scene, const RenderSettings& settings);
 
 /// A one-line summary: size, rays, segments per ray (and tested per ray), seconds (wall and
-/// processor), Mrays/s, threads.
+/// processor), Mrays/s, threads; when antialiased, the share of pixels supersampled.
 std::string format_stats(const RenderStats& stats, int width, int height);
 
 }  // namespace mirage

@@ -86,6 +86,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
 
     TraceReport report;
     report.scene = opt.scene;
+    report.files = scene.files;
     report.width = opt.width;
     report.height = opt.height;
     report.tolerance_px = settings.tolerance_px;
@@ -167,6 +168,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     rs.height = opt.height;
     rs.threads = opt.threads;
     rs.progress = opt.progress;
+    rs.antialias = opt.antialias;
     auto rendered = render(scene, rs, *propagator);
     if (!rendered) return rendered.error();
     report.render = std::move(*rendered);

@@ -36,6 +36,7 @@ struct TraceOptions {
     bool progress = true;                    // progress bar on stderr when it is a terminal
     std::optional<double> clock;             // --clock (POV-Ray's +K): a still at this clock
     std::map<std::string, double> declares;  // --declare (POV-Ray's Declare=)
+    AntialiasSettings antialias;             // POV-Ray's +A, +AM, +R, +J; off by default
 };
 
 struct TraceReport {
@@ -50,6 +51,8 @@ struct TraceReport {
     int model_pieces = 0;       // real air: the fitted model's pieces (0: closed forms)
     RenderResult render;        // the image (linear) and the render's statistics
     std::string output;         // the file written, if any
+    // The files the scene was read from.
+    std::vector<std::string> files;
 };
 
 /// POV-Ray's output gamma: the rendered values are in the scene's working gamma
