@@ -202,10 +202,12 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     const double same = 0.01 * pixel_rad;
     PixelEnds best;
     bool have = false;
+    std::vector<std::pair<PixelEnds, glm::dvec3>> tried;  // the candidates followed, not cut off
     for (const glm::dvec3& c : candidates) {
         // The candidates come best first: one within a hundredth of a pixel is kept.
         if (have && !best.cut_off && best.camera_error_rad <= same) break;
         const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
+        if (!p.cut_off) tried.emplace_back(p, c);
         if (p.cut_off && have) continue;
         const bool better = !have || (best.cut_off && !p.cut_off) ||
                             p.camera_error_rad < best.camera_error_rad - same ||
@@ -219,20 +221,33 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
         }
     }
     // A band path that meets something the exact path passes by (or passes what the exact
-    // path meets): aimed again through the exact path's point at that distance, a few times.
-    for (int round = 0; round < 4 && s.aim.through && best.camera_error_rad > same; ++round) {
-        // The nearer of the two ends that lie on a surface.
-        double r = kInf;
-        for (const RayEnd* end : {static_cast<const RayEnd*>(&best.band), &e})
-            if (end->hit)
-                r = std::min(r, std::hypot(end->point.x - s.eye.x, end->point.z - s.eye.z));
-        if (!std::isfinite(r)) break;
-        const auto c = s.aim.through(i, dir, r);
-        if (!c) break;
-        const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, *c, e);
-        if (p.cut_off || !(p.camera_error_rad < best.camera_error_rad - same)) break;
-        best = p;
-        *chosen = *c;
+    // path meets): aimed again through the exact path's point at that distance, a few times,
+    // from each candidate followed, the nearest first (the best one may lie on another sheet
+    // than the exact ray, a direct ray for a turned one, where no such aim helps).
+    std::stable_sort(tried.begin(), tried.end(), [](const auto& a, const auto& b) {
+        return a.first.camera_error_rad < b.first.camera_error_rad;
+    });
+    for (const auto& [start, start_dir] : tried) {
+        if (!s.aim.through || best.camera_error_rad <= same) break;
+        PixelEnds from = start;
+        for (int round = 0; round < 4 && from.camera_error_rad > same; ++round) {
+            // The nearer of the two ends that lie on a surface.
+            double r = kInf;
+            for (const RayEnd* end : {static_cast<const RayEnd*>(&from.band), &e})
+                if (end->hit)
+                    r = std::min(r, std::hypot(end->point.x - s.eye.x, end->point.z - s.eye.z));
+            if (!std::isfinite(r)) break;
+            const auto c = s.aim.through(i, dir, r);
+            if (!c) break;
+            const PixelEnds p =
+                band_against_exact(rendered, scene, accel, objects, exact, s, *c, e);
+            if (p.cut_off || !(p.camera_error_rad < from.camera_error_rad - same)) break;
+            from = p;
+            if (p.camera_error_rad < best.camera_error_rad - same) {
+                best = p;
+                *chosen = *c;
+            }
+        }
     }
     best.trace_level = band_trace_level(rendered, scene, objects, s, best.band);
     if (std::getenv("MIRAGE_DEBUG_AIM") &&

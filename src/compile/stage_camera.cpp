@@ -1,6 +1,7 @@
 // Stage "camera" of mirage compile (compile/stages.h): the corrected camera, every band ray
 // aimed through the point where its exact ray ends (layers/band_aim.h).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -60,10 +61,14 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
         } else {
             // Leaving for the sky in the exact ray's final direction: exact above the layers,
             // whatever the float iors make of the index over the top.
+            // Leaving downward, a ray with the same cosine turns and leaves as the rising one
+            // does: the sheet of the exact ray first.
             const double final_elevation = std::asin(std::clamp(end.direction.y, -1.0, 1.0));
             if (const auto e = walk->elevation_leaving_at(final_elevation); e && hl > 0.0)
-                out.push_back(mesh_camera_direction(
-                    glm::dvec3(std::cos(*e) * d.x / hl, std::sin(*e), std::cos(*e) * d.z / hl)));
+                for (double sign :
+                     rays.elevation[i] < 0.0 ? std::array{-1.0, 1.0} : std::array{1.0, -1.0})
+                    out.push_back(mesh_camera_direction(glm::dvec3(
+                        std::cos(*e) * d.x / hl, sign * std::sin(*e), std::cos(*e) * d.z / hl)));
             // Through the exact path's point at the scene's edge.
             const double r = rays.exit_dz[i];
             if (auto c = through(i, d, r, exact_height(i, r))) out.push_back(*c);

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "atmosphere/profile.h"
+#include "compile/pixel_check.h"
 #include "layers/fit.h"
 #include "layers/outcome.h"
 #include "scene/camera.h"
@@ -266,6 +267,51 @@ TEST(EmitFiles, TheIniFindsTheLayersFirstAndTheIncludeSplitsAtTheCamera) {
     EXPECT_NE(f.include.find("plane { y, "), std::string::npos);   // below the camera
     EXPECT_NE(f.include.find("plane { -y, "), std::string::npos);  // above it
     EXPECT_NE(f.include.find("<-100, "), std::string::npos);       // clipped to the reach
+}
+
+}  // namespace
+}  // namespace mirage
+
+namespace mirage {
+namespace {
+
+// For a ray leaving for the sky the aim's first candidates leave the layers in the exact
+// final direction on both sheets (a ray and its mirror image have one cosine), the exact
+// ray's own sheet first: a downward camera ray's turned one, a rising ray's direct one.
+TEST(CorrectedCameraAim, SkyRaysTryTheExactRaysSheetFirst) {
+    auto ctx = compile_settings(options_for("aim_sheet", kPaper, 40, 30));
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    const CameraRays rays = camera_rays(*ctx, 1);
+    auto d = design_layers(*ctx, rays);
+    ASSERT_TRUE(d.ok()) << d.message();
+    ASSERT_GT(d->stack.boundaries(), 0);
+    const BandAim aim = corrected_camera_aim(*ctx, ctx->rendered(d->stack), rays);
+    ASSERT_TRUE(aim);
+    int down = 0, up = 0;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const glm::dvec3 dir = rays.direction[i];
+        ExactEnd end;
+        end.hit = false;  // leaving upward, a little steeper than the ray set out
+        const double final_sine = std::min(0.9, std::fabs(dir.y) + 0.02);
+        const double hl = std::hypot(dir.x, dir.z);
+        end.direction = glm::dvec3(dir.x / hl * std::sqrt(1 - final_sine * final_sine), final_sine,
+                                   dir.z / hl * std::sqrt(1 - final_sine * final_sine));
+        std::vector<glm::dvec3> c;
+        aim.candidates(i, dir, end, c);
+        if (c.size() < 3) continue;  // no elevation leaves that way
+        // The two sheets: one cosine, opposite sines, the horizontal direction the camera's.
+        EXPECT_NEAR(c[0].y, -c[1].y, 1e-6) << i;
+        EXPECT_NEAR(c[0].x * dir.z - c[0].z * dir.x, 0.0, 1e-6) << i;
+        if (rays.elevation[i] < 0.0) {
+            EXPECT_LT(c[0].y, 0.0) << i;
+            ++down;
+        } else {
+            EXPECT_GT(c[0].y, 0.0) << i;
+            ++up;
+        }
+    }
+    EXPECT_GT(down, 100);
+    EXPECT_GT(up, 100);
 }
 
 }  // namespace
