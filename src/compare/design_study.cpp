@@ -16,14 +16,15 @@
 #include "compile/stages.h"
 #include "layers/graded.h"
 #include "layers/revolution.h"
-#include "pov/povray_path.h"
 #include "load/atmosphere_settings.h"
+#include "pov/povray_path.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
 #include "util/new_directories.h"
 #include "util/output_set.h"
 #include "util/parallel.h"
 #include "util/process.h"
+#include "util/stats.h"
 
 namespace fs = std::filesystem;
 
@@ -32,12 +33,6 @@ namespace mirage {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double percentile(std::vector<double> v, double q) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, static_cast<size_t>(std::floor(q * (v.size() - 1) + 0.5)))];
-}
 
 // The continuum of the camera's rays: elevations through the interval every sample of the
 // image covers, with the angle of a pixel row there, and each one's exact ray.

@@ -16,6 +16,7 @@
 #include "util/new_directories.h"
 #include "util/output_path.h"
 #include "util/output_set.h"
+#include "util/stats.h"
 #include "util/text_escape.h"
 
 namespace fs = std::filesystem;
@@ -25,16 +26,6 @@ namespace mirage {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double percentile(std::vector<double> v, double q) {
-    if (v.empty()) return 0.0;
-    // The value of rank i, found without sorting the rest (a report takes eight of these over
-    // every pixel).
-    const size_t i =
-        std::min(static_cast<size_t>(std::floor(q * (v.size() - 1) + 0.5)), v.size() - 1);
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(i), v.end());
-    return v[i];
-}
 
 /// Times the pipeline's stages into the report.
 class StageClock {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "util/check.h"
+#include "util/file_name.h"
 #include "util/output_path.h"
 
 namespace mirage {
@@ -21,13 +22,6 @@ namespace mirage {
 namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
-
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 /// OpenImageIO's message about the temporary file, told of the output it stands for, with the
 /// system's reason when there is one.
@@ -158,8 +152,7 @@ Status check_image_name(const std::string& path) {
         if (!out) return out.error();
         if (out->stream && out->target != "-") return Ok{};  // a device or a FIFO: PNG
     }
-    return make_error(path + ": unknown image type '" + ext +
-                      "' (use .png or .exr)");
+    return make_error(path + ": unknown image type '" + ext + "' (use .png or .exr)");
 }
 
 Status write_image(const Image& linear, const std::string& path, OutputSet* outputs) {

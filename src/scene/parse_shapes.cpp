@@ -10,6 +10,7 @@
 #include "scene/scene_parser.h"
 #include "scene/transform.h"
 #include "scene/truetype.h"
+#include "util/file_name.h"
 
 namespace mirage::scene_detail {
 namespace {
@@ -838,8 +839,7 @@ HeightField SceneParser::parse_height_field(const Token& kw) {
         if (type.empty()) {
             // The type from the extension (POV-Ray's InferFileTypeFromExt), else the
             // platform's default, PNG.
-            std::string ext = std::filesystem::path(name).extension().string();
-            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            const std::string ext = lower_extension(name);
             static const char* const kExtensions[] = {".tga",  ".png", ".pgm",  ".ppm", ".jpg",
                                                       ".jpeg", ".tif", ".tiff", ".exr", ".hdr",
                                                       ".gif",  ".iff", ".bmp",  ".pot", ""};
