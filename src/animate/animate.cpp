@@ -32,6 +32,7 @@
 #include "util/json_text.h"
 #include "util/new_directories.h"
 #include "util/process.h"
+#include "util/progress.h"
 #include "util/text_escape.h"
 
 namespace mirage {
@@ -120,40 +121,32 @@ std::vector<std::string> povray_frame_switches(const Animation& a, const Planned
     return s;
 }
 
-// The progress of the frames on stderr: a bar on a terminal, a line per finished frame.
+// The progress of the frames on stderr: the bar on a terminal (util/progress.h), a line per
+// finished frame, and without a terminal a line when frames done elsewhere are counted.
 class Progress {
   public:
-    Progress(bool on, int total) : on_(on), tty_(on && ::isatty(STDERR_FILENO)), total_(total) {}
+    Progress(bool on, int total)
+        : bar_("frames", total, on), counted_lines_(on && !::isatty(STDERR_FILENO)) {}
     void frame_done(const std::string& what, double seconds, bool ok) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        ++done_;
-        if (!on_) return;
-        if (tty_) std::cerr << "\r\033[K";
-        std::cerr << "  " << what << (ok ? ": " : ": FAILED after ") << sig(seconds, 3) << " s ("
-                  << done_ << "/" << total_ << ")\n";
-        bar();
-    }
-    void bar() {
-        if (!tty_ || total_ == 0) return;
-        const int width = 30, filled = width * done_ / total_;
-        std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] "
-                  << done_ << "/" << total_ << " frames" << std::flush;
+        bar_.message("  " + what + (ok ? ": " : ": FAILED after ") + sig(seconds, 3) + " s (" +
+                     std::to_string(++done_) + "/" + std::to_string(total()) + ")");
+        bar_.advance();
     }
     void set_done(int done) {
-        std::lock_guard<std::mutex> lock(mutex_);
         if (done == done_) return;
         done_ = done;
-        if (on_ && !tty_) std::cerr << "  " << done_ << "/" << total_ << " frames done\n";
-        bar();
+        if (counted_lines_)
+            bar_.message("  " + std::to_string(done) + "/" + std::to_string(total()) +
+                         " frames done");
+        bar_.set_done(done);
     }
-    void finish() {
-        if (tty_) std::cerr << "\r\033[K" << std::flush;
-    }
+    void finish() { bar_.finish(); }
 
   private:
-    bool on_, tty_;
-    int total_, done_ = 0;
-    std::mutex mutex_;
+    int total() const { return static_cast<int>(bar_.total()); }
+    ProgressBar bar_;
+    bool counted_lines_;
+    std::atomic<int> done_{0};
 };
 
 struct TaskOutcome {

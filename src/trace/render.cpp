@@ -16,37 +16,11 @@
 
 #include "trace/scene_accel.h"
 #include "util/check.h"
+#include "util/progress.h"
 
 namespace mirage {
 
 namespace {
-
-/// A progress bar on stderr, redrawn when the shown percentage changes.
-class ProgressBar {
-  public:
-    ProgressBar(bool enabled, int total) : enabled_(enabled), total_(total) {}
-    void advance() {
-        if (!enabled_) return;
-        const int done = ++done_;
-        const int percent = static_cast<int>(100LL * done / total_);
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (percent == shown_) return;
-        shown_ = percent;
-        constexpr int kWidth = 40;
-        const int filled = percent * kWidth / 100;
-        std::fprintf(stderr, "\rtrace [%.*s%*s] %3d%%", filled,
-                     "########################################", kWidth - filled, "", percent);
-        if (done == total_) std::fputc('\n', stderr);
-        std::fflush(stderr);
-    }
-
-  private:
-    bool enabled_;
-    int total_;
-    std::atomic<int> done_{0};
-    std::mutex mutex_;
-    int shown_ = -1;
-};
 
 /// Processor time of the calling thread, seconds.
 double thread_cpu_seconds() {
@@ -120,7 +94,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
     std::vector<AntialiasCounters> aa_counters(threads);
     std::vector<double> cpu(threads, 0.0);
     std::atomic<int> next_tile{0};
-    ProgressBar progress(settings.progress && isatty(fileno(stderr)) != 0, tile_count);
+    ProgressBar progress("trace", tile_count, settings.progress);
 
     // Every pixel depends on nothing but its position, so the tiles can go in any order on
     // any thread and the image is the same.

@@ -1,5 +1,6 @@
 // A progress bar on stderr for long loops, shown only when stderr is a terminal: the label,
-// a bar, the percentage and the time so far, redrawn when the percentage changes.
+// a bar, the percentage, the steps and the time so far, redrawn when the percentage changes.
+// Lines of news (a frame finished) are printed above it, on a terminal or not.
 #pragma once
 
 #include <atomic>
@@ -19,6 +20,12 @@ class ProgressBar {
 
     /// One more step done (thread-safe).
     void advance(long steps = 1);
+    /// `done` steps done in all (thread-safe): for work counted elsewhere.
+    void set_done(long done);
+    /// Prints `line` on a line of its own above the bar when enabled, whether or not stderr
+    /// is a terminal (thread-safe).
+    void message(const std::string& line);
+    long total() const { return total_; }
     /// Clears the bar's line (the destructor does it too).
     void finish();
 
@@ -27,7 +34,8 @@ class ProgressBar {
 
     std::string label_;
     long total_ = 1;
-    bool shown_ = false;
+    bool enabled_ = false;
+    std::atomic<bool> shown_{false};
     std::atomic<long> done_{0};
     std::atomic<int> percent_{-1};
     std::mutex mutex_;
