@@ -17,6 +17,7 @@ namespace {
 
 struct CompileCliOptions {
     CompileOptions compile;
+    std::string layout = "auto";  // --layout, read into compile.layout
     double tolerance = 0.0;
     double clock = 0.0;
     std::vector<std::string> declares;
@@ -63,7 +64,7 @@ void setup_compile_command(CLI::App& app) {
                     "image columns to fit the layers to, spread from the centre to the edge")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
-    sub->add_option("--layout", o->compile.layout,
+    sub->add_option("--layout", o->layout,
                     "nested (planes), gaps (slabs with gaps: double-precision refraction for "
                     "real air) or auto")
         ->check(CLI::IsMember({"auto", "nested", "gaps"}))
@@ -107,6 +108,8 @@ void setup_compile_command(CLI::App& app) {
                                                     : LayerMode::Adaptive;
         if (*count) c.layer_count = o->count;
         c.camera = o->camera == "perspective" ? CameraModel::Perspective : CameraModel::Corrected;
+        if (o->layout != "auto")
+            c.layout = o->layout == "gaps" ? LayerLayout::Gaps : LayerLayout::Nested;
         // The corrected camera without antialiasing shoots the pixel centres only: those are
         // the rays to check.  Antialiased it shoots samples of a 3 x 3 grid.
         c.samples_per_side = *samples ? o->check_samples

@@ -133,7 +133,7 @@ std::string row_id(CompareModel model, const std::string& setting) {
     return model_name(model) + "-" + setting;
 }
 
-enum class BandOutcome { Rendered, Skipped, OverBudget };
+enum class BandRunOutcome { Rendered, Skipped, OverBudget };
 
 /// A compiled scene rendered by POV-Ray: its log kept as dir/povray.log, its image at
 /// `image` (both through temporary names).
@@ -189,7 +189,7 @@ std::string over_budget_note(const std::string& model, int n, const std::string&
 /// Compiles one band design, renders it with POV-Ray and measures it.  A fatal error (POV-Ray
 /// cannot be started, the scene would be overwritten) is an error; a design that cannot be
 /// compiled or rendered is a note.
-Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
+Result<BandRunOutcome> run_band(Sweep& sw, CompareModel model, double setting,
                              CompileReport* over_budget) {
     CompareRow row;
     row.model = model;
@@ -232,11 +232,11 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     auto rep = compile_scene(c);
     if (!rep) {
         sw.note(label + ": skipped, mirage compile failed: " + rep.message());
-        return BandOutcome::Skipped;
+        return BandRunOutcome::Skipped;
     }
     if (rep->max_trace_level > kPovrayMaxTraceLevel) {
         if (over_budget) *over_budget = *rep;
-        return BandOutcome::OverBudget;
+        return BandRunOutcome::OverBudget;
     }
     // What compile had to give up (a refit within a tighter trace-level budget) explains an
     // error that does not fall with the tolerance.
@@ -250,7 +250,7 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     if (!run) return run.error();
     if (!run->ok) {
         sw.note(label + ": skipped, " + run->failure + ":\n" + log_tail(run->log_path, 5));
-        return BandOutcome::Skipped;
+        return BandRunOutcome::Skipped;
     }
     auto codes = read_image(sw.staged(image).string());
     if (!codes) return codes.error();
@@ -283,7 +283,7 @@ Result<BandOutcome> run_band(Sweep& sw, CompareModel model, double setting,
              "\nPOV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3)});
     sw.say(label + ": " + (!counted_layers ? std::to_string(row.layers) + " layers, " : "") +
            "POV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3));
-    return BandOutcome::Rendered;
+    return BandRunOutcome::Rendered;
 }
 
 /// Traces one polyline setting and measures it; a trace that fails is a note.
@@ -613,7 +613,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         CompileReport over;
         auto outcome = run_band(sw, CompareModel::UniformBands, n, &over);
         if (!outcome) return outcome.error();
-        if (*outcome == BandOutcome::OverBudget) {
+        if (*outcome == BandRunOutcome::OverBudget) {
             sw.note(over_budget_note("uniform-bands", n, "layers", over));
             stopped = true;
             break;
@@ -634,11 +634,11 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
             CompileReport over;
             auto outcome = run_band(sw, CompareModel::IndexStepBands, n, &over);
             if (!outcome) return outcome.error();
-            if (*outcome == BandOutcome::OverBudget) {
+            if (*outcome == BandRunOutcome::OverBudget) {
                 sw.note(over_budget_note("index-step-bands", n, "steps", over));
                 break;
             }
-            if (opt.steps.empty() && *outcome == BandOutcome::Rendered && sw.redesigned) {
+            if (opt.steps.empty() && *outcome == BandRunOutcome::Rendered && sw.redesigned) {
                 sw.note("index-step-bands: stopped at " + std::to_string(n) +
                         " steps, where mirage compile had to use fewer (above)");
                 break;
@@ -664,7 +664,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         CompileReport over;
         auto outcome = run_band(sw, CompareModel::AdaptiveBands, tol, &over);
         if (!outcome) return outcome.error();
-        if (*outcome == BandOutcome::OverBudget)
+        if (*outcome == BandRunOutcome::OverBudget)
             sw.note("adaptive " + shortest(tol) +
                     " px: skipped: a camera ray with its "
                     "reflections needs trace level " +
@@ -677,7 +677,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         CompileReport over;
         auto outcome = run_band(sw, CompareModel::CorrectedBands, n, &over);
         if (!outcome) return outcome.error();
-        if (*outcome == BandOutcome::OverBudget) {
+        if (*outcome == BandRunOutcome::OverBudget) {
             sw.note(over_budget_note("corrected-bands", n, "layers", over));
             break;
         }

@@ -13,6 +13,7 @@
 
 #include "atmosphere/profile.h"
 #include "load/atmosphere_settings.h"
+#include "pov/emit_layers.h"
 #include "util/result.h"
 
 namespace mirage {
@@ -31,7 +32,7 @@ struct CompileOptions {
     std::optional<int> layer_count;      // overrides Mirage_Layer_Count
     bool antialias = false;
     std::vector<std::string> library_paths;  // extra include directories, searched first
-    std::string layout = "auto";             // "nested", "gaps" or "auto" (by index contrast)
+    std::optional<LayerLayout> layout;       // unset: by the index contrast ("auto")
     int fit_columns = 1;                     // image columns the layers are fitted to
     // Also write the pixels' errors here (.exr; R the seen error in pixels, G the shift in
     // rows, B the reflections' error in pixels).

@@ -156,7 +156,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
                 " GiB of POV-Ray's memory), more than the limit of " + sig(kMaxMeshCameraFaces, 3) +
                 ": render smaller, or use --camera perspective");
     }
-    if (ctx.many_origins && opt.layout == "nested")
+    if (ctx.many_origins && opt.layout == LayerLayout::Nested)
         return make_error(place(ctx.camera.loc, scene.file) + "the " +
                           camera_type_name(ctx.camera.type) +
                           " camera's rays start at different points, inside different layers: "
@@ -268,12 +268,12 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     }
     // The layout: nested planes, or slabs with gaps where the index steps are so small that
     // POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
-    if (opt.layout == "gaps" || ctx.many_origins) {
+    if (opt.layout == LayerLayout::Gaps || ctx.many_origins) {
         // Rays from many origins start inside different layers: POV-Ray builds each one's
         // list of interiors in its bounding tree's order, which only the gap layout's
         // disjoint slabs (one interior at any point) make right.
         ctx.gaps = true;
-    } else if (opt.layout == "auto") {
+    } else if (!opt.layout) {
         if (ctx.air) {
             // Real air: its index changes by a few 1e-4 at most over the heights a scene
             // sees (the flattened profile's n* grows by 1.6e-4 per km on the curved Earth).
@@ -282,8 +282,6 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
             ctx.gaps =
                 std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
         }
-    } else if (opt.layout != "nested") {
-        return make_error("--layout " + opt.layout + ": expected nested, gaps or auto");
     }
     // Gaps thick enough that POV-Ray sees both of their faces along the steepest camera ray
     // (it ignores hits closer than MIN_ISECT_DEPTH = 1e-4 units to a ray's origin).
