@@ -25,10 +25,6 @@ namespace {
 // camera heights above the ground.
 constexpr double kUnboundedSceneExtent = 1000.0;
 
-std::string place(const FileLoc& loc, const std::string& file) {
-    return (loc.file.empty() ? file : to_string(loc)) + ": ";
-}
-
 // The |sin(elevation)| of the steepest ray POV-Ray may shoot through the image (antialiasing
 // samples reach the pixels' edges): over the image's edges and a grid inside, which holds
 // the steepest ray unless the camera looks nearly straight up or down.
@@ -139,7 +135,8 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     ctx.many_origins = !camera_has_one_viewpoint(ctx.camera);
     {
         auto footprint = pixel_footprint(ctx.camera, opt.width, opt.height);
-        if (!footprint) return make_error(place(ctx.camera.loc, scene.file) + footprint.message());
+        if (!footprint)
+            return make_error(place_prefix(ctx.camera.loc, scene.file) + footprint.message());
         ctx.footprint = *footprint;
     }
     // The corrected camera's meshes, about 60 bytes of text and 215 bytes of POV-Ray's memory a
@@ -157,7 +154,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
                 ": render smaller, or use --camera perspective");
     }
     if (ctx.many_origins && opt.layout == LayerLayout::Nested)
-        return make_error(place(ctx.camera.loc, scene.file) + "the " +
+        return make_error(place_prefix(ctx.camera.loc, scene.file) + "the " +
                           camera_type_name(ctx.camera.type) +
                           " camera's rays start at different points, inside different layers: "
                           "--layout nested needs them all in one (use gaps or auto)");

@@ -30,7 +30,7 @@ constexpr double kReachMargin = 1.25;
 constexpr double kUnboundedReachEyeHeights = 1e4;
 
 std::string place_of(const Camera& camera, const std::string& file) {
-    return (camera.loc.file.empty() ? file : to_string(camera.loc)) + ": ";
+    return place_prefix(camera.loc, file);
 }
 
 // The lowest and highest of the elevations where `holds` is true, each edge bisected between

@@ -112,7 +112,7 @@ Result<AtmosphereSettings> settle_mirage_scene(const Scene& scene,
     if (options.layer_count) settings->layer_count = *options.layer_count;
     // The camera: within reach, its rays defined, its pixels no finer than paths can follow.
     const Camera& camera = scene.camera;
-    const std::string at = (camera.loc.file.empty() ? scene.file : to_string(camera.loc)) + ": ";
+    const std::string at = place_prefix(camera.loc, scene.file);
     for (int i = 0; i < 3; ++i) {
         const double v = camera.location[i];
         if (std::abs(v) <= kMaxCoordinate) continue;

@@ -10,10 +10,6 @@
 namespace mirage {
 namespace {
 
-std::string place(const FileLoc& loc) {
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
-}
-
 void lower_primitive(Primitive& p, const Transform& down) {
     p.transform = compose_transforms(p.transform, down);
     transform_texture(p.texture, down);
@@ -58,7 +54,7 @@ PlanesBelow horizontal_planes_below(const Scene& scene, double below_y) {
 std::string camera_below_ground_message(const Scene& scene, double ground_height,
                                         std::optional<double> lowest_object_y) {
     const Camera& cam = scene.camera;
-    const std::string at = cam.loc.file.empty() ? scene.file + ": " : place(cam.loc) + ": ";
+    const std::string at = place_prefix(cam.loc, scene.file);
     std::string m =
         at + "the camera at y = " + shortest(cam.location.y) +
         " is not above the ground of the atmosphere (y = " + shortest(ground_height) +
@@ -67,12 +63,12 @@ std::string camera_below_ground_message(const Scene& scene, double ground_height
     if (planes.highest) {
         const HorizontalPlane& floor = *planes.highest;
         m += "; the scene's horizontal plane under the camera, at y = " + shortest(floor.height) +
-             " (" + place(floor.loc) +
+             " (" + to_string(floor.loc) +
              "), is a likely ground: #declare Mirage_Ground_Height = " + shortest(floor.height) +
              ";";
         if (planes.lowest->height < floor.height) {
             m += " (its lowest horizontal plane is at y = " + shortest(planes.lowest->height) +
-                 ", " + place(planes.lowest->loc) + ")";
+                 ", " + to_string(planes.lowest->loc) + ")";
         }
     } else if (lowest_object_y && *lowest_object_y < cam.location.y) {
         m += "; the scene has no horizontal plane below the camera; its objects reach down to "

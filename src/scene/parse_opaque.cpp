@@ -7,10 +7,6 @@
 namespace mirage::scene_detail {
 namespace {
 
-std::string where(const FileLoc& loc) {
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
-}
-
 bool one_of(const std::string& w, std::initializer_list<const char*> words) {
     for (const char* x : words) {
         if (w == x) return true;
@@ -152,10 +148,10 @@ void SceneParser::fail_opaque_use(const Token& name, const Symbol& symbol,
     std::string message;
     if (value.reason.empty()) {
         message = "unsupported " + value.what + " '" + name.text() + "' (declared at " +
-                  where(symbol.loc) + ")";
+                  to_string(symbol.loc) + ")";
     } else {
         message = value.reason + " (in the " + value.what + " '" + name.text() + "' declared at " +
-                  where(symbol.loc) + "; the reason at " + where(value.loc) + ")";
+                  to_string(symbol.loc) + "; the reason at " + to_string(value.loc) + ")";
     }
     try {
         fail(name, message);
@@ -175,7 +171,8 @@ const Value& SceneParser::use_value(const Token& name, const Symbol& symbol, con
         w + " '" + name.text() + "'" + (opaque->reason.empty() ? "" : " (" + opaque->reason + ")");
     if (opaque_capture_ && !opaque_capture_->captured) {
         opaque_capture_->captured = true;
-        opaque_capture_->reason = "uses the " + description + " declared at " + where(symbol.loc);
+        opaque_capture_->reason =
+            "uses the " + description + " declared at " + to_string(symbol.loc);
         opaque_capture_->loc = name.loc();
     }
     Value stand_in;
@@ -200,14 +197,14 @@ const Value& SceneParser::use_value(const Token& name, const Symbol& symbol, con
         ObjectNode unknown;
         unknown.kind = ObjectNode::Kind::Empty;
         unknown.loc = name.loc();
-        unknown.unknown = "object '" + name.text() + "' declared at " + where(symbol.loc) +
+        unknown.unknown = "object '" + name.text() + "' declared at " + to_string(symbol.loc) +
                           (opaque->reason.empty() ? "" : " (" + opaque->reason + ")");
         stand_in.data = std::move(unknown);
     } else {
         fail_opaque_use(name, symbol, *opaque);
     }
     if (!options_.strict) scene_.skipped.push_back(Skipped{description, name.loc()});
-    Value& slot = stand_ins_[name.text() + "@" + where(name.loc())];
+    Value& slot = stand_ins_[name.text() + "@" + to_string(name.loc())];
     slot = std::move(stand_in);
     return slot;
 }

@@ -25,11 +25,6 @@ double ground_slack(const glm::dvec3& p) {
     return 1e-9 * (1.0 + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
 }
 
-std::string place(const FileLoc& loc) {
-    if (loc.file.empty()) return "";
-    return to_string(loc) + ": ";
-}
-
 std::string degrees(double rad) {
     std::ostringstream out;
     out.precision(3);
@@ -636,7 +631,7 @@ Result<ScanlinePropagator> ScanlinePropagator::make(const CurvedSettings& settin
         } else {
             why = "the camera's up vector is not vertical";
         }
-        return make_error(place(camera.loc) +
+        return make_error(place_prefix(camera.loc) +
                           "scanline paths need a level camera (one path per image row is "
                           "rotated about the vertical): " +
                           why);

@@ -66,9 +66,7 @@ Result<RenderResult> render(const Scene& scene, const RenderSettings& settings,
                             std::isfinite(r.origin.z) && std::isfinite(r.direction.x) &&
                             std::isfinite(r.direction.y) && std::isfinite(r.direction.z);
         if (!finite || std::abs(glm::length(r.direction) - 1.0) > 1e-9) {
-            const std::string where =
-                scene.camera.loc.file.empty() ? "" : to_string(scene.camera.loc) + ": ";
-            return make_error(where +
+            return make_error(scene.camera.loc,
                               "camera: its vectors give no ray direction (zero or "
                               "parallel direction, right and up?)");
         }

@@ -3,13 +3,7 @@
 #include "trace/shape_intersect.h"
 
 namespace mirage {
-namespace {
-
-std::string place(const FileLoc& loc) {
-    return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 SceneExtent scene_extent(const Scene& scene, const SceneAccel& accel) {
     SceneExtent e;
@@ -44,7 +38,7 @@ SceneExtent scene_extent(const Scene& scene, const SceneAccel& accel) {
                 box.hi = glm::min(box.hi, b.hi);
             }
         }
-        const std::string what = u.what + " at " + place(u.loc);
+        const std::string what = u.what + " at " + to_string(u.loc);
         if (have && !box.empty()) {
             e.finite.extend(box);
             e.bounded.push_back(what + ": bounded by its bounded_by or clipped_by");

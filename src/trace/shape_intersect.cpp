@@ -29,11 +29,7 @@ constexpr int kSideHit = 3;
 // disambiguated by the direction.
 constexpr double kBoxCloseTolerance = 1.0e-6;
 
-std::string where(const Primitive& p) {
-    std::ostringstream out;
-    if (!p.loc.file.empty()) out << p.loc.file << ":" << p.loc.line << ":" << p.loc.column << ": ";
-    return out.str();
-}
+std::string where(const Primitive& p) { return place_prefix(p.loc); }
 
 std::string shape_name(const Shape& shape) { return shape_keyword(shape); }
 
@@ -125,7 +121,7 @@ void set_local_frame(PreparedShape& s, const Transform& t, const glm::dmat4& can
 }  // namespace
 
 bool sphere_roots(const glm::dvec3& centre, double radius_sq, const glm::dvec3& origin,
-                         const glm::dvec3& direction, bool allow_behind, double& t1, double& t2) {
+                  const glm::dvec3& direction, bool allow_behind, double& t1, double& t2) {
     const glm::dvec3 oc = centre - origin;
     const double oc_sq = glm::dot(oc, oc);
     const double t_closest = glm::dot(oc, direction);

@@ -99,18 +99,16 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         // camera with many origins, from the ray's own origin.
         auto footprint = pixel_footprint(scene.camera, opt.width, opt.height);
         if (!footprint)
-            return make_error(
-                (scene.camera.loc.file.empty() ? scene.file : to_string(scene.camera.loc)) + ": " +
-                footprint.message() + "; trace it with --no-atmosphere");
+            return make_error(place_prefix(scene.camera.loc, scene.file) + footprint.message() +
+                              "; trace it with --no-atmosphere");
         report.footprint = *footprint;
         const double distance = report.tolerance_px * report.footprint.distance;
         if (report.footprint.distance > 0.0 && !(distance >= kMinToleranceM))
-            return make_error(
-                (scene.camera.loc.file.empty() ? scene.file : to_string(scene.camera.loc)) +
-                ": the " + camera_type_name(scene.camera.type) + " camera's tolerance of " +
-                sig(report.tolerance_px, 3) + " px is " + sig(distance, 3) +
-                " units across its rays, less than the " + shortest(kMinToleranceM) +
-                " units mirage samples paths for (widen the view)");
+            return make_error(place_prefix(scene.camera.loc, scene.file) + "the " +
+                              camera_type_name(scene.camera.type) + " camera's tolerance of " +
+                              sig(report.tolerance_px, 3) + " px is " + sig(distance, 3) +
+                              " units across its rays, less than the " + shortest(kMinToleranceM) +
+                              " units mirage samples paths for (widen the view)");
     } else {
         report.footprint.angle_rad = report.pixel_rad;
     }

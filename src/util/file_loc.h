@@ -18,4 +18,15 @@ inline std::string to_string(const FileLoc& loc) {
     return loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
 }
 
+/// "file:line:column: ", the prefix of a message about `loc`, or "" when it has no file.
+inline std::string place_prefix(const FileLoc& loc) {
+    return loc.file.empty() ? std::string() : to_string(loc) + ": ";
+}
+
+/// The prefix of a message about something at `loc` that may have no place of its own (the
+/// camera of a scene that declares none): `loc`, else `file`.
+inline std::string place_prefix(const FileLoc& loc, const std::string& file) {
+    return (loc.file.empty() ? file : to_string(loc)) + ": ";
+}
+
 }  // namespace mirage

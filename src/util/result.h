@@ -5,6 +5,8 @@
 #include <utility>
 #include <variant>
 
+#include "util/file_loc.h"
+
 namespace mirage {
 
 /// An error carried back to the caller; `message` is complete and user-facing
@@ -43,5 +45,11 @@ struct Ok {};
 using Status = Result<Ok>;
 
 inline Error make_error(std::string message) { return Error{std::move(message)}; }
+
+/// An error about the place `loc`: "file:line:column: message" (the message alone when
+/// `loc` has no file).
+inline Error make_error(const FileLoc& loc, const std::string& message) {
+    return Error{place_prefix(loc) + message};
+}
 
 }  // namespace mirage

@@ -14,11 +14,7 @@
 
 namespace mirage {
 
-std::string primitive_place(const Primitive& p) {
-    std::ostringstream out;
-    if (!p.loc.file.empty()) out << p.loc.file << ":" << p.loc.line << ":" << p.loc.column << ": ";
-    return out.str();
-}
+std::string primitive_place(const Primitive& p) { return place_prefix(p.loc); }
 
 Result<std::shared_ptr<const ComplexShape>> prepare_complex_shape(const Primitive& primitive) {
     if (const auto* m = std::get_if<Mesh>(&primitive.shape)) return prepare_mesh(*m, primitive);
