@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "test_temp.h"
 #include "util/atomic_file.h"
@@ -38,7 +40,10 @@ sphere { <2.5, 1.6, 14>, 1 pigment { color rgb <0.8, 0.2, 0.1> } }
     o.graded_steps = {0.0, 8.0};
     o.rays_per_row = 4;
     o.render = false;
+    const auto before = std::chrono::steady_clock::now();
     auto r = run_design_study(o);
+    const double study_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
     ASSERT_TRUE(r.ok()) << r.message();
     EXPECT_EQ(r->rays, 4 * 36);
     EXPECT_LT(r->elevation_lo, 0.0);
@@ -53,17 +58,28 @@ sphere { <2.5, 1.6, 14>, 1 pigment { color rgb <0.8, 0.2, 0.1> } }
     // More equal layers: more crossings, a smaller error.
     EXPECT_GT(many.mean_crossings, few.mean_crossings);
     EXPECT_LT(many.p95_px, few.p95_px);
+    double compile_seconds = 0.0;  // of the plane designs, together
     for (const auto& row : r->rows) {
         EXPECT_LE(row.p50_px, row.p95_px) << row.design;
         EXPECT_LE(row.p95_px, row.max_px) << row.design;
         EXPECT_TRUE(fs::exists(fs::path(r->out_dir) / row.curve)) << row.design;
         if (row.geometry == "planes") {
             EXPECT_GE(row.seen_p95_px, 0.0) << row.design;  // checked pixel by pixel
-            EXPECT_GE(row.compile_seconds, 0.0) << row.design;
+            // Compile's time is the one its own report gives (in the design's work folder,
+            // named as its curve), a part of the study's.
+            const fs::path report =
+                fs::path(r->out_dir) / "work" / fs::path(row.curve).stem() / "report.json";
+            auto text = read_file(report.string());
+            ASSERT_TRUE(text.ok()) << text.message();
+            const auto json = nlohmann::json::parse(*text);
+            EXPECT_EQ(row.compile_seconds, json.at("seconds").get<double>()) << row.design;
+            EXPECT_GT(row.compile_seconds, 0.0) << row.design;
+            compile_seconds += row.compile_seconds;
         } else {
             EXPECT_EQ(row.seen_p95_px, -1.0) << row.design;  // 2D only
         }
     }
+    EXPECT_LE(compile_seconds, study_seconds);
     auto csv = read_csv_file(r->csv_path);
     ASSERT_TRUE(csv.ok()) << csv.message();
     EXPECT_EQ(csv->rows.size(), r->rows.size());

@@ -21,7 +21,7 @@
 #include "compile/compile.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
-#include "trace_scene/trace_scene.h"
+#include "trace_png.h"
 
 namespace mirage {
 namespace {
@@ -29,6 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::povray_available;
 using testing::test_dir;
+using testing::trace_png;
 
 constexpr int kW = 96, kH = 72;
 constexpr double kTraceTolerancePx = 0.1;
@@ -57,20 +58,6 @@ std::string scene_text(const std::string& camera) {
 }
 
 std::string shell_quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
-Result<Image> traced(const fs::path& scene, bool atmosphere, const fs::path& png) {
-    TraceOptions o;
-    o.scene = scene.string();
-    o.output = png.string();
-    o.width = kW;
-    o.height = kH;
-    o.tolerance_px = kTraceTolerancePx;
-    o.atmosphere = atmosphere;
-    o.progress = false;
-    auto r = trace_scene(o);
-    if (!r) return r.error();
-    return quantize_srgb8(r->render.image);
-}
 
 struct Case {
     const char* name;
@@ -110,9 +97,10 @@ TEST_P(ManyOriginsBands, PovRaysRenderMatchesTheTracerWithinTheReportedError) {
     ASSERT_EQ(std::system(command.c_str()), 0) << "see " << dir;
     auto pov = read_image(o.image);
     ASSERT_TRUE(pov.ok()) << pov.message();
-    auto exact = traced(scene, true, dir / "trace.png");
+    auto exact = trace_png(scene.string(), dir / "trace.png", kW, kH, kTraceTolerancePx);
     ASSERT_TRUE(exact.ok()) << exact.message();
-    auto straight = traced(scene, false, dir / "straight.png");
+    auto straight =
+        trace_png(scene.string(), dir / "straight.png", kW, kH, kTraceTolerancePx, false);
     ASSERT_TRUE(straight.ok()) << straight.message();
 
     std::vector<int> radius(report->pixel_shift_rows.size());

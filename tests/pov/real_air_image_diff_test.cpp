@@ -28,7 +28,7 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "pov/emit_camera.h"
-#include "trace_scene/trace_scene.h"
+#include "trace_png.h"
 
 namespace mirage {
 namespace {
@@ -36,6 +36,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::povray_available;
 using testing::test_dir;
+using testing::trace_png;
 
 constexpr int kW = 160, kH = 120;
 constexpr double kTraceTolerancePx = 0.1;
@@ -78,19 +79,6 @@ std::string hot_road_in(const fs::path& dir, bool flat, double excess_scale) {
             out << "#declare Mirage_Earth_Radius = 0;\n";
     }
     return (dir / "hot_road.pov").string();
-}
-
-Result<Image> trace_png(const std::string& scene, const fs::path& png) {
-    TraceOptions o;
-    o.scene = scene;
-    o.output = png.string();
-    o.width = kW;
-    o.height = kH;
-    o.tolerance_px = kTraceTolerancePx;
-    o.progress = false;
-    auto r = trace_scene(o);
-    if (!r) return r.error();
-    return quantize_srgb8(r->render.image);
 }
 
 struct Check {
@@ -153,7 +141,7 @@ TEST_P(RealAirImageDiff, HotRoadBandsMatchTheTracerWithinTheReportedError) {
     const std::string name = flat ? "flat" : "curved";
     const fs::path dir = test_dir("real_air_image_diff", name);
     const std::string scene = hot_road_in(dir / "scene", flat, 1.0);
-    auto traced = trace_png(scene, dir / "trace.png");
+    auto traced = trace_png(scene, dir / "trace.png", kW, kH, kTraceTolerancePx);
     ASSERT_TRUE(traced.ok()) << traced.message();
     auto c = check_bands(scene, dir, "bands", *traced);
     ASSERT_TRUE(c.ok()) << c.message();
@@ -195,14 +183,7 @@ struct CropRenders {
 };
 
 Result<CropRenders> render_crop(const std::string& scene, const fs::path& dir, const Crop& render) {
-    TraceOptions t;
-    t.scene = scene;
-    t.output = (dir / "trace.png").string();
-    t.width = kCropW;
-    t.height = kCropH;
-    t.tolerance_px = kTraceTolerancePx;
-    t.progress = false;
-    auto traced = trace_scene(t);
+    auto traced = trace_png(scene, dir / "trace.png", kCropW, kCropH, kTraceTolerancePx);
     if (!traced) return traced.error();
 
     CompileOptions o;
@@ -229,7 +210,7 @@ Result<CropRenders> render_crop(const std::string& scene, const fs::path& dir, c
         if (auto s = crop_mesh_camera_render(o.image); !s) return s.error();
     auto pov = read_image(o.image);
     if (!pov) return pov.error();
-    return CropRenders{*pov, quantize_srgb8(traced->render.image)};
+    return CropRenders{*pov, *traced};
 }
 
 /// The pixels of `inner` of either image without their colour within a row in the other, each

@@ -37,7 +37,7 @@
 #include "load/library_paths.h"
 #include "load/mirage_scene.h"
 #include "scene/parser.h"
-#include "trace_scene/trace_scene.h"
+#include "trace_png.h"
 
 namespace mirage {
 namespace {
@@ -45,6 +45,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::povray_available;
 using testing::test_dir;
+using testing::trace_png;
 
 constexpr int kW = 160, kH = 120;
 constexpr double kTraceTolerancePx = 0.1;
@@ -88,21 +89,6 @@ bool run_povray(const fs::path& dir, const std::string& args, const std::string&
     const std::string command = "cd " + shell_quoted(dir) + " && povray " + args + " > " +
                                 shell_quoted(dir / log) + " 2>&1";
     return std::system(command.c_str()) == 0;
-}
-
-/// The tracer's render as POV-Ray's PNG would hold it, also written to `png`.
-Result<Image> trace_png(const std::string& scene, bool atmosphere, const fs::path& png) {
-    TraceOptions o;
-    o.scene = scene;
-    o.output = png.string();
-    o.width = kW;
-    o.height = kH;
-    o.tolerance_px = kTraceTolerancePx;
-    o.atmosphere = atmosphere;
-    o.progress = false;
-    auto r = trace_scene(o);
-    if (!r) return r.error();
-    return quantize_srgb8(r->render.image);
 }
 
 /// Keeps the difference image and, if given, the mask beside the renders.
@@ -182,7 +168,7 @@ TEST_P(SceneImageDiff, AtmosphereOffMatchesPovRay) {
                              " +I" + shell_quoted(scene_) + " +Ostraight_povray.png";
     ASSERT_TRUE(run_povray(dir_, args, "straight_povray.log")) << "see " << dir_;
     auto pov = read_image((dir_ / "straight_povray.png").string());
-    auto ours = trace_png(scene_, false, dir_ / "straight_trace.png");
+    auto ours = trace_png(scene_, dir_ / "straight_trace.png", kW, kH, kTraceTolerancePx, false);
     ASSERT_TRUE(pov.ok() && ours.ok()) << pov.message() << ours.message();
     auto cmp = compare_images(*pov, *ours, 2.5 / 255.0);
     ASSERT_TRUE(cmp.ok());
@@ -195,7 +181,7 @@ TEST_P(SceneImageDiff, AtmosphereOffMatchesPovRay) {
 }
 
 TEST_P(SceneImageDiff, BandsMatchTheTracerWithinTheReportedError) {
-    auto traced = trace_png(scene_, true, dir_ / "trace.png");
+    auto traced = trace_png(scene_, dir_ / "trace.png", kW, kH, kTraceTolerancePx);
     ASSERT_TRUE(traced.ok()) << traced.message();
     auto c = check_bands(scene_, CompileOptions{}, dir_, "bands", *traced);
     ASSERT_TRUE(c.ok()) << c.message();
@@ -205,7 +191,7 @@ TEST_P(SceneImageDiff, BandsMatchTheTracerWithinTheReportedError) {
 }
 
 TEST_P(SceneImageDiff, PerspectiveBandsMatchTheTracerWithinTheReportedError) {
-    auto traced = trace_png(scene_, true, dir_ / "trace.png");
+    auto traced = trace_png(scene_, dir_ / "trace.png", kW, kH, kTraceTolerancePx);
     ASSERT_TRUE(traced.ok()) << traced.message();
     CompileOptions o;
     o.camera = CameraModel::Perspective;
@@ -231,7 +217,7 @@ Result<Profile> declared_profile(const std::string& scene) {
 }
 
 TEST_P(SceneImageDiff, TighterLayersComeCloserToTheTracer) {
-    auto traced = trace_png(scene_, true, dir_ / "trace.png");
+    auto traced = trace_png(scene_, dir_ / "trace.png", kW, kH, kTraceTolerancePx);
     ASSERT_TRUE(traced.ok()) << traced.message();
     // The layers fitted to the scene's own camera (the corrected camera's layers carry only
     // the paths' smooth part, and their count, not the tolerance, sets them).
@@ -255,7 +241,7 @@ TEST_P(SceneImageDiff, LayersOfAWrongAtmosphereFailTheCheck) {
     // The layers fitted to the scene's profile with half its index contrast (half the
     // temperature difference): their own report is as good as the right layers', and the
     // check above must see that the picture is not the scene's.
-    auto traced = trace_png(scene_, true, dir_ / "trace.png");
+    auto traced = trace_png(scene_, dir_ / "trace.png", kW, kH, kTraceTolerancePx);
     ASSERT_TRUE(traced.ok()) << traced.message();
     auto profile = declared_profile(scene_);
     ASSERT_TRUE(profile.ok()) << profile.message();

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <mutex>
 #include <vector>
 
+#include "recording_propagator.h"
 #include "scene/camera.h"
 #include "scene_builders.h"
 #include "trace/shading.h"
@@ -220,25 +220,6 @@ TEST(CurvedPropagator, ReflectedRaysFollowTheirOwnPathsFromTheEyesDistance) {
     }
     EXPECT_GT(fewer, 10);
 }
-
-/// Records every ray the shader propagates, and the paths, then follows them curved.
-class RecordingPropagator final : public Propagator {
-  public:
-    explicit RecordingPropagator(const CurvedSettings& s) : curved_(s) {}
-    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override {
-        PathHit hit = curved_.propagate(accel, start);
-        std::lock_guard<std::mutex> lock(mutex_);
-        starts.push_back(start);
-        hits.push_back(hit);
-        return hit;
-    }
-    mutable std::vector<RayStart> starts;
-    mutable std::vector<PathHit> hits;
-
-  private:
-    CurvedPropagator curved_;
-    mutable std::mutex mutex_;
-};
 
 /// Arc length of the exact path from its start to horizontal distance dz (Simpson).
 double arc_length(const ExactRay& ray, double dz) {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <mutex>
 
+#include "recording_propagator.h"
 #include "scene_builders.h"
 #include "trace/curved_propagator.h"
 #include "trace/single_precision.h"
@@ -218,31 +218,11 @@ TEST(Shading, ZeroRoughnessIsPovRaysExponentZero) {
                 1e-12);
 }
 
-/// Records the rays the shader hands to the propagator (the rays in the air) and follows
-/// them along the paper's curved paths.
-class RecordingCurved final : public Propagator {
-  public:
-    explicit RecordingCurved(const CurvedSettings& s) : curved_(s) {}
-    PathHit propagate(const SceneAccel& accel, const RayStart& start) const override {
-        PathHit hit = curved_.propagate(accel, start);
-        std::lock_guard<std::mutex> lock(mutex_);
-        starts.push_back(start);
-        hits.push_back(hit);
-        return hit;
-    }
-    mutable std::vector<RayStart> starts;
-    mutable std::vector<PathHit> hits;
-
-  private:
-    CurvedPropagator curved_;
-    mutable std::mutex mutex_;
-};
-
 TEST(Shading, RaysThroughGlassGoStraightInsideAndCurvedOutside) {
     CurvedSettings curved;
     curved.profile = *preset_profile("paper");
     curved.tolerance_rad = 1e-4;
-    const RecordingCurved recording(curved);
+    const RecordingPropagator recording(curved);
     Scene s;
     Finish clear;
     clear.ambient = glm::dvec3(0.0);

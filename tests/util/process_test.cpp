@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 
 #include "test_temp.h"
@@ -30,10 +31,22 @@ TEST(RunProcess, RunsInTheDirectoryWithOutputInTheLog) {
     auto r = run_process({"sh", "-c", "pwd; echo oops >&2; exit 3"}, dir.string(), log);
     ASSERT_TRUE(r.ok()) << r.message();
     EXPECT_EQ(r->exit_code, 3);
-    EXPECT_GE(r->seconds, 0.0);
     auto text = read_file(log);
     ASSERT_TRUE(text.ok());
     EXPECT_EQ(*text, fs::canonical(dir).string() + "\noops\n");
+}
+
+TEST(RunProcess, TimesTheProgramFromStartToExit) {
+    // A program that sleeps a known while ran at least that while, and run_process's time of
+    // it lies within the test's own time of the call (steady clock, as run_process's).
+    const double sleep_seconds = 0.3;
+    const auto before = std::chrono::steady_clock::now();
+    auto r = run_process({"sh", "-c", "sleep 0.3"}, "", "");
+    const auto after = std::chrono::steady_clock::now();
+    ASSERT_TRUE(r.ok()) << r.message();
+    ASSERT_EQ(r->exit_code, 0);
+    EXPECT_GE(r->seconds, sleep_seconds);
+    EXPECT_LE(r->seconds, std::chrono::duration<double>(after - before).count());
 }
 
 TEST(RunProcess, ProgramsThatCannotStartAreErrors) {
