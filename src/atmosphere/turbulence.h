@@ -3,7 +3,7 @@
 // give a ray along a polyline.
 //
 // Spectrum (Andrews & Phillips, "Laser Beam Propagation through Random Media", 2nd ed., 2005,
-// eq. 3.29 with the Tatarskii inner-scale cutoff):
+// ch. 3, the von Karman spectrum with Tatarskii's Gaussian inner-scale cutoff):
 //   Phi_n(kappa) = A C_n^2 (kappa^2 + kappa0^2)^(-11/6) exp(-kappa^2 / kappa_m^2),
 //   A = Gamma(8/3) sin(pi/3) / (4 pi^2) = 0.0330, kappa0 = 2 pi / L0, kappa_m = 5.92 / l0,
 // whose structure function in the inertial range l0 << r << L0 is Kolmogorov's

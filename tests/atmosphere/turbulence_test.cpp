@@ -44,7 +44,7 @@ double integrate_kappa(F f) {
 }
 
 TEST(Turbulence, KolmogorovConstantIsTatarskiis) {
-    // 0.033 is the rounded value everyone quotes (A&P eq. 3.20).
+    // 0.033 is the rounded value everyone quotes (A&P ch. 3).
     EXPECT_NEAR(kolmogorov_spectrum_constant(), 0.033005, 1e-6);
 }
 
@@ -158,12 +158,13 @@ TEST(Turbulence, StructureFunctionFollowsKolmogorov) {
 }
 
 // Per-axis variance of the angle of arrival of a plane wave at a point receiver, geometric optics:
-// <alpha^2> = 2 pi^2 L int kappa^3 Phi_n(kappa) dkappa (Tatarskii 1971; A&P 2005, sec. 6.4),
+// <alpha^2> = 2 pi^2 L int kappa^3 Phi_n(kappa) dkappa (Tatarskii 1971; A&P 2005, ch. 6),
 // with the Tatarskii/von Karman spectrum above
-// = 3.28 C_n^2 L l0^(-1/3) [1 - 0.72 (kappa0 l0)^(1/3)]   (A&P eq. 6.86 for D << l0; 3.28 =
+// = 3.28 C_n^2 L l0^(-1/3) [1 - 0.72 (kappa0 l0)^(1/3)]   (A&P for D << l0; 3.28 =
 // 2 pi^2 A Gamma(1/6) / 2 (5.92)^(1/3), the outer-scale factor to first order).  This is the
 // tilt the deflection() of a ray gives: the gradient's integral along one line, no aperture.
-// (2.91 C_n^2 L D^(-1/3) is the other limit, an aperture D >> l0, which a point does not have.)
+// (2.91 C_n^2 L D^(-1/3), often quoted, is the other limit: an aperture D >> l0, which averages
+// the small eddies a point receiver feels.)
 double tilt_variance_ap(const TurbulenceSettings& s, double length_m) {
     const double k0l0 = 2.0 * kPi / s.outer_scale_m * s.inner_scale_m;
     return 3.28 * s.cn2 * length_m * std::pow(s.inner_scale_m, -1.0 / 3.0) *
@@ -261,9 +262,10 @@ TEST(Turbulence, FramesAreTheAirMovedByTheWind) {
 
 // (c) The correlation of one ray's tilt at two times, the wind having moved the air by rho
 // across the ray, against the plane-wave tilt covariance for two parallel paths rho apart
-// (A&P sec. 6.4): B(rho) / B(0) with B(rho) = 4 pi^2 L int kappa^3 Phi_n J1(kappa rho) /
-// (kappa rho) dkappa for the tilt across both the ray and the displacement (wind along z,
-// ray along x, vertical tilt y).  Sample: 1500 realizations x 16 rays.
+// (derived as the variance above, with exp(i kappa . rho) under the integral): B(rho) / B(0),
+// B(rho) = 4 pi^2 L int kappa^3 Phi_n J1(kappa rho) / (kappa rho) dkappa, for the tilt across
+// both the ray and the displacement (wind along z, ray along x, vertical tilt y).  Sample: 1500
+// realizations x 16 rays, each ray's tilt now and after each of the four displacements.
 TEST(Turbulence, TiltsDecorrelateAsTheWindMovesTheAir) {
     TurbulenceSettings s;
     s.cn2 = 1e-13;
