@@ -109,6 +109,27 @@ TEST(Turbulence, IntegratedGradientIsTheLineIntegral) {
     EXPECT_LT(glm::length(exact - simpson), 1e-8 * glm::length(exact));
 }
 
+TEST(Turbulence, DeflectionIsAcrossEachSegmentAndScalesAsOneOverN) {
+    const TurbulentField f = make_field(TurbulenceSettings{});
+    const glm::dvec3 a(0.3, 1.0, -2.0), b(4.0, 1.2, 1.0);
+    const glm::dvec3 one[] = {a, b};
+    const glm::dvec3 bent = deflection(f, one, 0.0);
+    const glm::dvec3 d = glm::normalize(b - a);
+    const glm::dvec3 g = f.integrated_gradient(a, b, 0.0);
+    EXPECT_GT(glm::length(bent), 0.0);
+    EXPECT_LT(std::abs(glm::dot(bent, d)), 1e-12 * glm::length(bent));
+    EXPECT_LT(glm::length(bent - (g - glm::dot(g, d) * d)), 1e-12 * glm::length(bent));
+    EXPECT_LT(glm::length(deflection(f, one, 0.0, 1.0003) * 1.0003 - bent),
+              1e-12 * glm::length(bent));
+    // A polyline is the sum of its segments; a repeated point adds nothing.
+    const glm::dvec3 m = a + 0.4 * (b - a) + glm::dvec3(0.0, 0.3, 0.0);
+    const glm::dvec3 two[] = {a, m, m, b};
+    const glm::dvec3 first[] = {a, m}, second[] = {m, b};
+    EXPECT_LT(glm::length(deflection(f, two, 0.0) - deflection(f, first, 0.0) -
+                          deflection(f, second, 0.0)),
+              1e-12 * glm::length(bent));
+}
+
 // (a) D_n(r) = <(dn(x + r) - dn(x))^2> against C_n^2 r^(2/3) over a decade inside the inertial
 // range (l0 = 1 mm, L0 = 100 m; r = 2 cm to 50 cm, 20 to 500 l0).  Each estimate averages 8 seeds
 // x 4000 random points and random directions of r: 32000 pairs per separation, whose squared
@@ -212,8 +233,9 @@ TEST(Turbulence, AngleOfArrivalVarianceMatchesThePlaneWaveFormula) {
         const std::size_t per_batch = t.size() / batches;
         double variance = 0.0;
         for (std::size_t i = 0; i < t.size(); ++i) {
-            variance += t[i] * t[i] / t.size();
-            batch[std::min<std::size_t>(i / per_batch, batches - 1)] += t[i] * t[i] / per_batch;
+            variance += t[i] * t[i] / static_cast<double>(t.size());
+            batch[std::min<std::size_t>(i / per_batch, batches - 1)] +=
+                t[i] * t[i] / static_cast<double>(per_batch);
         }
         double spread = 0.0;
         for (double b : batch) spread += (b - variance) * (b - variance) / (batches - 1);
