@@ -43,6 +43,45 @@ Result<std::string> translate_word(const std::string& w, SwitchTarget target) {
             return make_error(w + ": give the name and the number: Declare=NAME=VALUE");
         return "--declare=" + rest;
     }
+    // POV-Ray's switches that turn something off: the display (mirage shows none) and
+    // antialiasing (off unless asked for) need nothing; jitter off is trace's --no-jitter.
+    if (w.size() == 2 && w[0] == '-' && (upper(w[1]) == 'D' || upper(w[1]) == 'A'))
+        return std::string();
+    if (w.size() == 2 && w[0] == '-' && upper(w[1]) == 'J')
+        return trace ? std::string("--no-jitter") : std::string();
+    // An .ini's spelling on the command line, Key=value, as POV-Ray takes it there too.
+    if (const auto eq = w.find('=');
+        eq != std::string::npos && eq > 0 && w[0] != '-' && w.find('/') > eq && is_letter(w[0])) {
+        std::string key = w.substr(0, eq);
+        for (char& c : key) c = upper(c);
+        const std::string value = w.substr(eq + 1);
+        const auto as = [&](const std::string& spelled) -> Result<std::string> {
+            return translate_word(spelled, target);
+        };
+        if (key == "WIDTH") return as("+W" + value);
+        if (key == "HEIGHT") return as("+H" + value);
+        if (key == "OUTPUT_FILE_NAME") return as("+O" + value);
+        if (key == "CLOCK") return as("+K" + value);
+        if (key == "LIBRARY_PATH") return as("+L" + value);
+        if (key == "ANTIALIAS_THRESHOLD") return as("+A" + value);
+        if (key == "ANTIALIAS_DEPTH") return as("+R" + value);
+        if (key == "SAMPLING_METHOD") return as("+AM" + value);
+        if (key == "ANTIALIAS") {
+            std::string v = value;
+            for (char& c : v) c = upper(c);
+            if (v == "ON" || v == "TRUE" || v == "YES" || v == "1") return as("+A");
+            if (v == "OFF" || v == "FALSE" || v == "NO" || v == "0") return std::string();
+            return make_error(w + ": Antialias is on or off");
+        }
+        if (key == "JITTER") {
+            std::string v = value;
+            for (char& c : v) c = upper(c);
+            if (v == "OFF" || v == "FALSE" || v == "NO" || v == "0") return as("-J");
+            if (v == "ON" || v == "TRUE" || v == "YES" || v == "1") return std::string();
+            return make_error(w + ": Jitter is on or off");
+        }
+        return w;  // a scene file whose name holds '=', or a value: left to the parser
+    }
     if (w.size() < 2 || w[0] != '+' || !is_letter(w[1])) return w;
     auto attached = [&](const std::string& example) {
         return make_error(w + ": POV-Ray's switches take their value attached: " + example);
@@ -136,7 +175,7 @@ Result<std::vector<std::string>> translate_povray_switches(
         }
         auto t = translate_word(w, target);
         if (!t) return t.error();
-        out.push_back(std::move(*t));
+        if (!t->empty()) out.push_back(std::move(*t));  // a switch that asks for nothing
     }
     return out;
 }

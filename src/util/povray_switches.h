@@ -20,7 +20,11 @@ enum class SwitchTarget { Trace, Compile };
 ///   +Wn -> --width=n, +Hn -> --height=n, +Ofile -> --output=file (compile: --image=file),
 ///   +Kx -> --clock=x, +Lpath -> --library-path=path, Declare=N=V -> --declare=N=V,
 ///   +A -> --antialias, +Ax -> --antialias=x (compile: x must be 0.3),
-///   +AMn -> --antialias-method=n, +Rn -> --antialias-depth=n (trace only).
+///   +AMn -> --antialias-method=n, +Rn -> --antialias-depth=n (trace only);
+///   -D and -A (display and antialiasing off) -> nothing, -J -> --no-jitter (trace; compile:
+///   nothing); an .ini's keys as POV-Ray's command line takes them too, Width=, Height=,
+///   Output_File_Name=, Clock=, Library_Path=, Antialias=on|off, Antialias_Threshold=,
+///   Antialias_Depth=, Sampling_Method=, Jitter=on|off, as the switches above.
 /// The letters are read in either case, as POV-Ray reads them; the value is attached, as
 /// POV-Ray takes it (`+W 640` is refused, saying so).  Words after "--" and the word after an
 /// option of `value_options` (the command's options that take a value: "-o", "--output", ...)

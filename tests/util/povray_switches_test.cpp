@@ -8,7 +8,8 @@ namespace {
 
 using Words = std::vector<std::string>;
 
-const Words kValueOptions = {"-o", "--output", "-L", "--library-path", "-W", "--image"};
+const Words kValueOptions = {"-o", "--output", "-L",       "--library-path",
+                             "-W", "--image",  "--declare"};
 
 Words trace_words(const Words& words) {
     auto r = translate_povray_switches(words, SwitchTarget::Trace, kValueOptions);
@@ -100,6 +101,36 @@ TEST(PovraySwitches, ValuesAndTheRestAreLeftAsTheyAre) {
     // Long options, short options, negative numbers and a lone '+' are no POV-Ray switches.
     EXPECT_EQ(trace_words({"--width=3", "-q", "-1", "+", "+3", "./+W.pov"}),
               (Words{"--width=3", "-q", "-1", "+", "+3", "./+W.pov"}));
+}
+
+}  // namespace
+}  // namespace mirage
+
+namespace mirage {
+namespace {
+
+TEST(PovraySwitches, OffSwitchesAskForNothingButJitter) {
+    EXPECT_EQ(trace_words({"-D", "s.pov", "-A", "+W64", "-J"}),
+              (Words{"s.pov", "--width=64", "--no-jitter"}));
+    EXPECT_EQ(compile_words({"-d", "s.pov", "-a", "-j", "+H48"}), (Words{"s.pov", "--height=48"}));
+}
+
+TEST(PovraySwitches, IniKeysAsTheSwitches) {
+    EXPECT_EQ(
+        trace_words({"s.pov", "Width=640", "height=480", "Output_File_Name=o.png", "Clock=0.25",
+                     "Library_Path=inc", "Antialias=on", "Antialias_Threshold=0.1",
+                     "Antialias_Depth=2", "Sampling_Method=2", "Jitter=off"}),
+        (Words{"s.pov", "--width=640", "--height=480", "--output=o.png", "--clock=0.25",
+               "--library-path=inc", "--antialias", "--antialias=0.1", "--antialias-depth=2",
+               "--antialias-method=2", "--no-jitter"}));
+    EXPECT_EQ(compile_words({"s.pov", "WIDTH=64", "Output_File_Name=o.png", "Antialias=off"}),
+              (Words{"s.pov", "--width=64", "--image=o.png"}));
+    // Checked as the switches are; other words with '=' left to the parser.
+    EXPECT_NE(trace_error({"s.pov", "Width=wide"}).find("whole number"), std::string::npos);
+    EXPECT_NE(trace_error({"s.pov", "Antialias=maybe"}).find("on or off"), std::string::npos);
+    EXPECT_NE(compile_error({"s.pov", "Sampling_Method=2"}).find("0.3 only"), std::string::npos);
+    EXPECT_EQ(trace_words({"a=b.pov", "dir/Width=3.pov", "--declare", "Width=3"}),
+              (Words{"a=b.pov", "dir/Width=3.pov", "--declare", "Width=3"}));
 }
 
 }  // namespace
