@@ -29,10 +29,6 @@ constexpr double kSteepest = 0.5 * kPi - 1e-6;  // elevations are kept within th
 constexpr double kReachMargin = 1.25;
 constexpr double kUnboundedReachEyeHeights = 1e4;
 
-std::string place_of(const Camera& camera, const std::string& file) {
-    return place_prefix(camera.loc, file);
-}
-
 // The lowest and highest of the elevations where `holds` is true, each edge bisected between
 // the sample where it holds and its neighbour where it does not.  `samples` sorted upwards.
 bool span_where(const std::function<bool(double)>& holds, const std::vector<double>& samples,
@@ -441,19 +437,23 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
     if (!loaded) return loaded.error();
     const AtmosphereSettings& settings = loaded->settings;
     Scene& scene = loaded->scene;
-    if (settings.declared) lower_scene(scene, settings.ground_height);
-    const std::string at = place_of(scene.camera, scene.file);
     if (scene.camera.type != CameraType::Perspective)
-        return make_error(at + "mirage frame reads a perspective camera, not a " +
+        return make_error(place_prefix(scene.camera.loc, scene.file) +
+                          "mirage frame reads a perspective camera, not a " +
                           camera_type_name(scene.camera.type) + " one");
     if (!bends_rays(settings))
         return make_error(scene.file +
                           ": the scene declares no atmosphere that bends rays: there is no "
                           "mirage to frame (declare Mirage_Preset, ...)");
-    if (!(scene.camera.location.y > 0.0))
-        return make_error(at + "the camera is at or below the ground (y = " +
-                          shortest(scene.camera.location.y + settings.ground_height) +
-                          "): a mirage is seen from above it");
+    // A camera under the atmosphere's ground: refused as compile and trace refuse it.
+    auto lowest = [&]() -> std::optional<double> {
+        auto accel = SceneAccel::build(scene);
+        if (!accel || accel->finite_bounds().empty()) return std::nullopt;
+        return accel->finite_bounds().lo.y;
+    };
+    if (auto s = check_camera_above_ground(scene, settings.ground_height, lowest); !s)
+        return s.error();
+    lower_scene(scene, settings.ground_height);
 
     FrameReading f;
     f.scene = options.scene;

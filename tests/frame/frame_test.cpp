@@ -17,6 +17,7 @@
 #include "atmosphere/profile.h"
 #include "frame/frame_output.h"
 #include "scene/camera.h"
+#include "trace_scene/trace_scene.h"
 
 namespace mirage {
 namespace {
@@ -227,12 +228,11 @@ TEST(Frame, OverlayMarksTheHorizonsAndTheBand) {
 }
 
 TEST(Frame, CommandPrintsTheReadingAsJsonAndWritesTheOverlay) {
-    const std::string scene =
-        write_scene("cli.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7, 4,
-                    "box { <-1, 0, 900>, <1, 2.5, 902> }\n");
+    const std::string scene = write_scene("cli.pov", "#declare Mirage_Preset = \"hot-road\";", 1.7,
+                                          4, "box { <-1, 0, 900>, <1, 2.5, 902> }\n");
     const auto png = test_temp_path("cli_overlay.png");
-    const auto run = run_tool("frame " + testing::quoted(scene) + " --json --plain -o " +
-                              testing::quoted(png));
+    const auto run =
+        run_tool("frame " + testing::quoted(scene) + " --json --plain -o " + testing::quoted(png));
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);
     auto f = read(scene);
@@ -247,8 +247,8 @@ TEST(Frame, CommandPrintsTheReadingAsJsonAndWritesTheOverlay) {
               std::string::npos);
     // The overlay may not replace the scene it read.
     const std::string before = testing::read_bytes(scene);
-    const auto over = run_tool("frame " + testing::quoted(scene) + " --plain -o " +
-                               testing::quoted(scene));
+    const auto over =
+        run_tool("frame " + testing::quoted(scene) + " --plain -o " + testing::quoted(scene));
     EXPECT_EQ(over.exit_code, 1);
     EXPECT_NE(over.err.find("mirage frame: "), std::string::npos) << over.err;
     EXPECT_EQ(testing::read_bytes(scene), before);
@@ -267,6 +267,22 @@ TEST(Frame, RefusesWhatItCannotRead) {
     EXPECT_NE(ortho.message().find("ortho.pov:3:1: mirage frame reads a perspective camera"),
               std::string::npos)
         << ortho.message();
+}
+
+// A camera under the ground: refused with the message trace (and compile) give.
+TEST(Frame, RefusesACameraUnderTheGroundAsTraceDoes) {
+    const std::string scene =
+        write_scene("under.pov", "#declare Mirage_Preset = \"hot-road\";", -0.5, 10, "");
+    auto under = read(scene);
+    ASSERT_FALSE(under.ok());
+    TraceOptions t;
+    t.scene = scene;
+    t.output = test_temp_path("under.png").string();
+    t.progress = false;
+    auto traced = trace_scene(t);
+    ASSERT_FALSE(traced.ok());
+    EXPECT_EQ(under.message(), traced.message());
+    EXPECT_NE(under.message().find("under.pov:4:1: "), std::string::npos) << under.message();
 }
 
 }  // namespace
