@@ -26,33 +26,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::povray_available;
+using testing::PovRayRun;
+using testing::run_povray;
 using testing::test_dir;
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
-
-// POV-Ray's log with its line wrapping undone (whitespace collapsed), and whether it rendered.
-struct PovRun {
-    bool ok = false;
-    std::string log;
-};
-
-PovRun povray(const fs::path& dir, const std::string& args) {
-    const fs::path log = dir / "povray.log";
-    PovRun r;
-    r.ok = std::system(
-               ("cd " + q(dir) + " && povray -D " + args + " > " + q(log) + " 2>&1").c_str()) == 0;
-    std::ifstream in(log);
-    std::ostringstream s;
-    s << in.rdbuf();
-    for (char c : s.str()) {
-        const bool space = std::isspace(static_cast<unsigned char>(c));
-        if (space && (r.log.empty() || r.log.back() == ' ')) continue;
-        r.log += space ? ' ' : c;
-    }
-    return r;
-}
 
 Declared declared(std::variant<double, glm::dvec3, std::string> v) {
     Declared d;
@@ -69,13 +49,13 @@ std::string compiled_check() {
 }
 
 // A scene that declares `declarations`, then runs the check.
-PovRun parse_with(const fs::path& dir, const std::string& declarations) {
+PovRayRun parse_with(const fs::path& dir, const std::string& declarations) {
     write(dir / "check.inc", compiled_check());
     write(dir / "scene.pov", "#version 3.7;\n" + declarations +
                                  "\n#include \"check.inc\"\n"
                                  "camera { location -3 * z look_at 0 }\n"
                                  "sphere { 0, 1 pigment { rgb 1 } }\n");
-    return povray(dir, "+W8 +H8 scene.pov");
+    return run_povray(dir, "+W8 +H8 scene.pov");
 }
 
 const char* kAsCompiled =
@@ -85,7 +65,7 @@ const char* kAsCompiled =
 
 TEST(SettingsCheck, TheSettingsAsCompiledPass) {
     if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
-    const PovRun r = parse_with(test_dir("compiled_stamp", "same"), kAsCompiled);
+    const PovRayRun r = parse_with(test_dir("compiled_stamp", "same"), kAsCompiled);
     EXPECT_TRUE(r.ok) << r.log;
 }
 
@@ -100,7 +80,7 @@ class SettingsChanged : public ::testing::TestWithParam<Changed> {};
 TEST_P(SettingsChanged, StopTheParseNamingTheSetting) {
     if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
     const Changed& c = GetParam();
-    const PovRun r = parse_with(test_dir("compiled_stamp", c.name), c.declarations);
+    const PovRayRun r = parse_with(test_dir("compiled_stamp", c.name), c.declarations);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.log.find("Parse halted by #error"), std::string::npos) << r.log;
     EXPECT_NE(r.log.find(c.message), std::string::npos) << r.log;
@@ -161,12 +141,12 @@ TEST(CompiledStamp, TheTemplateChangedAfterTheCompileStopsTheRender) {
     const fs::path dir = test_dir("compiled_stamp", "template");
     auto r = compile_desert(dir, CameraModel::Corrected);
     ASSERT_TRUE(r.ok()) << r.message();
-    const PovRun as_compiled = povray(dir, q(r->ini_path));
+    const PovRayRun as_compiled = run_povray(dir, q(r->ini_path));
     EXPECT_TRUE(as_compiled.ok) << as_compiled.log;
     std::string text = kDesert;
     text.replace(text.find("0.4584"), 6, "0.5");
     write(dir / "desert.pov", text);
-    const PovRun changed = povray(dir, q(r->ini_path));
+    const PovRayRun changed = run_povray(dir, q(r->ini_path));
     EXPECT_FALSE(changed.ok);
     EXPECT_NE(
         changed.log.find(
@@ -180,9 +160,9 @@ TEST(CompiledStamp, CorrectedLayersThroughTheTemplatesOwnCameraStop) {
     const fs::path dir = test_dir("compiled_stamp", "own_camera");
     auto r = compile_desert(dir, CameraModel::Corrected);
     ASSERT_TRUE(r.ok()) << r.message();
-    const PovRun own = povray(dir, "+W32 +H24 +L" + q(dir / "out") + " +L" +
-                                       q(fs::path(MIRAGE_SOURCE_DIR) / "pov_includes") +
-                                       " Declare=Mirage_Compiled=1 desert.pov");
+    const PovRayRun own = run_povray(dir, "+W32 +H24 +L" + q(dir / "out") + " +L" +
+                                              q(fs::path(MIRAGE_SOURCE_DIR) / "pov_includes") +
+                                              " Declare=Mirage_Compiled=1 desert.pov");
     EXPECT_FALSE(own.ok);
     EXPECT_NE(own.log.find("mirage: these layers are for the corrected camera: render desert.ini "
                            "beside them"),
@@ -195,9 +175,9 @@ TEST(CompiledStamp, PerspectiveLayersAtAnotherSizeStopWithBothSizes) {
     const fs::path dir = test_dir("compiled_stamp", "perspective_size");
     auto r = compile_desert(dir, CameraModel::Perspective);
     ASSERT_TRUE(r.ok()) << r.message();
-    const PovRun same = povray(dir, q(r->ini_path));
+    const PovRayRun same = run_povray(dir, q(r->ini_path));
     EXPECT_TRUE(same.ok) << same.log;
-    const PovRun other = povray(dir, q(r->ini_path) + " +W64 +H48");
+    const PovRayRun other = run_povray(dir, q(r->ini_path) + " +W64 +H48");
     EXPECT_FALSE(other.ok);
     EXPECT_NE(other.log.find("this atmosphere was compiled for 32x24, not 64x48"),
               std::string::npos)

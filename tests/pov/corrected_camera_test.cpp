@@ -33,24 +33,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::povray_available;
+using testing::run_povray;
 using testing::test_dir;
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
-
-bool povray(const fs::path& dir, const std::string& args, const std::string& log) {
-    const std::string command =
-        "cd " + q(dir) + " && povray -D " + args + " > " + q(dir / log) + " 2>&1";
-    return std::system(command.c_str()) == 0;
-}
-
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 const char* kWideScene = R"(#version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -98,15 +86,16 @@ TEST(CorrectedCamera, MeshCarryingThePerspectiveRaysRendersThePerspectiveImage) 
     rs.height = H;
     // The template never includes mirage.inc: declare what it would.
     write(dir / "render.pov", "#declare Mirage_Inc_Temp = 1;\n" + render_scene(rs));
-    ASSERT_TRUE(povray(
-        dir,
-        "-A +W" + std::to_string(W) + " +H" + std::to_string(H) + " +Iwide.pov +Operspective.png",
-        "perspective.log"));
-    ASSERT_TRUE(povray(dir,
-                       "-A +W" + std::to_string(W) + " +H" + std::to_string(H + 1) + " +L" +
-                           q(dir) + " +Irender.pov +Omesh.png",
-                       "mesh.log"))
-        << read_text(dir / "mesh.log");
+    ASSERT_TRUE(run_povray(dir,
+                           "-A +W" + std::to_string(W) + " +H" + std::to_string(H) +
+                               " +Iwide.pov +Operspective.png",
+                           "perspective.log")
+                    .ok);
+    const auto mesh = run_povray(dir,
+                                 "-A +W" + std::to_string(W) + " +H" + std::to_string(H + 1) +
+                                     " +L" + q(dir) + " +Irender.pov +Omesh.png",
+                                 "mesh.log");
+    ASSERT_TRUE(mesh.ok) << mesh.log;
     ASSERT_TRUE(crop_mesh_camera_render((dir / "mesh.png").string()).ok());
     auto a = read_image((dir / "perspective.png").string());
     auto b = read_image((dir / "mesh.png").string());
@@ -216,7 +205,8 @@ TEST_P(FlatScenes, PovRayShowsTheSurfacesTheExactRaysMeet) {
         auto r = compile_scene(o);
         ASSERT_TRUE(r.ok()) << r.message();
         ASSERT_EQ(r->camera, k == 0 ? "corrected" : "perspective");
-        ASSERT_TRUE(povray(dir, q(r->ini_path), "povray.log")) << read_text(dir / "povray.log");
+        const auto run = run_povray(dir, q(r->ini_path));
+        ASSERT_TRUE(run.ok) << run.log;
         if (k == 0) ASSERT_TRUE(crop_mesh_camera_render(r->image_path).ok());
         auto img = read_image(r->image_path);
         ASSERT_TRUE(img.ok());
@@ -254,14 +244,9 @@ TEST(CorrectedCamera, ARenderOfAnotherSizeStopsWithBothSizes) {
     o.library_paths = {std::string(MIRAGE_SOURCE_DIR) + "/pov_includes"};
     auto r = compile_scene(o);
     ASSERT_TRUE(r.ok()) << r.message();
-    EXPECT_FALSE(povray(dir, q(r->ini_path) + " +W64 +H48", "povray.log"));
-    // POV-Ray wraps its messages: the words, whitespace collapsed.
-    std::string log;
-    for (char c : read_text(dir / "povray.log")) {
-        const bool space = std::isspace(static_cast<unsigned char>(c));
-        if (space && (log.empty() || log.back() == ' ')) continue;
-        log += space ? ' ' : c;
-    }
+    const auto run = run_povray(dir, q(r->ini_path) + " +W64 +H48");
+    EXPECT_FALSE(run.ok);
+    const std::string& log = run.log;
     EXPECT_NE(log.find("this camera was solved for 32x24 (rendered 32x25"), std::string::npos)
         << log;
     EXPECT_NE(log.find("not 64x48"), std::string::npos) << log;

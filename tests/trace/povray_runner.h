@@ -2,6 +2,7 @@
 // (no display, no antialiasing, 8-bit PNG).
 #pragma once
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +44,33 @@ inline Result<Image> render_with_povray(const std::string& pov_text,
         return make_error("povray failed on " + pov.string() + ":\n" + text.str());
     }
     return read_image((dir / (name + ".png")).string());
+}
+
+/// What `povray -D ARGS` run in `dir` did: whether it succeeded, and its log (console output)
+/// with POV-Ray's line wrapping undone (every run of whitespace one space), so that a
+/// message can be found whole.
+struct PovRayRun {
+    bool ok = false;
+    std::string log;
+};
+
+inline PovRayRun run_povray(const std::filesystem::path& dir, const std::string& args,
+                            const std::string& log_name = "povray.log") {
+    const auto quoted = [](const std::filesystem::path& p) { return "'" + p.string() + "'"; };
+    const std::filesystem::path log = dir / log_name;
+    PovRayRun r;
+    r.ok =
+        std::system(("cd " + quoted(dir) + " && povray -D " + args + " > " + quoted(log) + " 2>&1")
+                        .c_str()) == 0;
+    std::ifstream in(log);
+    std::ostringstream text;
+    text << in.rdbuf();
+    for (char c : text.str()) {
+        const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
+        if (space && (r.log.empty() || r.log.back() == ' ')) continue;
+        r.log += space ? ' ' : c;
+    }
+    return r;
 }
 
 /// A fresh directory for a test's files under the build tree.
