@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <thread>
 
@@ -250,25 +248,6 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
         }
     }
     best.trace_level = band_trace_level(rendered, scene, objects, s, best.band);
-    if (std::getenv("MIRAGE_DEBUG_AIM") &&
-        best.camera_error_rad > std::atof(std::getenv("MIRAGE_DEBUG_AIM")) * pixel_rad) {
-        std::fprintf(stderr,
-                     "ray %zu: exact hit %d at (%.9g %.9g %.9g) dir (%g %g %g); %zu candidates, "
-                     "best camera err %g px refl %g\n",
-                     i, e.hit, e.point.x, e.point.y, e.point.z, e.direction.x, e.direction.y,
-                     e.direction.z, candidates.size(), best.camera_error_rad / pixel_rad,
-                     best.reflection_error_rad / pixel_rad);
-        for (const auto& c : candidates) {
-            const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
-            RayEnd b = band_end(rendered, objects, s.camera_y, s.eye, c, s.layers, s.layers_below);
-            std::fprintf(stderr,
-                         "   cand (%.9g %.9g %.9g): err %g px cut %d hit %d at (%.9g %.9g %.9g) "
-                         "prim %d dir (%g %g %g)\n",
-                         c.x, c.y, c.z, p.camera_error_rad / pixel_rad, p.cut_off, b.hit, b.point.x,
-                         b.point.y, b.point.z, b.primitive, b.direction.x, b.direction.y,
-                         b.direction.z);
-        }
-    }
     return best;
 }
 
