@@ -1,7 +1,8 @@
 #include "pov/emit_stamp.h"
 
-#include <charconv>
 #include <cmath>
+
+#include "util/format.h"
 
 namespace mirage {
 
@@ -19,20 +20,13 @@ std::optional<std::string> sdl_string(const std::string& s) {
     return out + "\"";
 }
 
-// The shortest decimal that reads back as `v`.
-std::string number(double v) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
-}
-
 std::string vector_text(const glm::dvec3& v) {
-    return "<" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ">";
+    return "<" + shortest(v.x) + ", " + shortest(v.y) + ", " + shortest(v.z) + ">";
 }
 
 // The value as the message shows it (an SDL string expression).
 std::string shown(const Declared& d) {
-    if (const double* v = std::get_if<double>(&d.value)) return "\"" + number(*v) + "\"";
+    if (const double* v = std::get_if<double>(&d.value)) return "\"" + shortest(*v) + "\"";
     if (const glm::dvec3* v = std::get_if<glm::dvec3>(&d.value))
         return "\"" + vector_text(*v) + "\"";
     const auto s = sdl_string(std::get<std::string>(d.value));
@@ -51,11 +45,11 @@ std::string now(const std::string& name, const Declared& d) {
 std::optional<std::string> differs(const std::string& name, const Declared& d) {
     if (const double* v = std::get_if<double>(&d.value)) {
         const double scale = std::max(std::fabs(*v), 1e-300);
-        return "abs(" + name + " - (" + number(*v) + ")) > " + number(1e-12 * scale);
+        return "abs(" + name + " - (" + shortest(*v) + ")) > " + shortest(1e-12 * scale);
     }
     if (const glm::dvec3* v = std::get_if<glm::dvec3>(&d.value)) {
         const double scale = std::max(std::fabs(v->x) + std::fabs(v->y) + std::fabs(v->z), 1e-300);
-        return "vlength(" + name + " - " + vector_text(*v) + ") > " + number(1e-12 * scale);
+        return "vlength(" + name + " - " + vector_text(*v) + ") > " + shortest(1e-12 * scale);
     }
     const auto s = sdl_string(std::get<std::string>(d.value));
     if (!s) return std::nullopt;
