@@ -55,8 +55,12 @@ Result<std::string> translate_word(const std::string& w, SwitchTarget target) {
         std::string key = w.substr(0, eq);
         for (char& c : key) c = upper(c);
         const std::string value = w.substr(eq + 1);
+        // As the switch it stands for; a refusal names the word as it was typed.
         const auto as = [&](const std::string& spelled) -> Result<std::string> {
-            return translate_word(spelled, target);
+            if (value.empty()) return make_error(w + ": give the value after '='");
+            auto r = translate_word(spelled, target);
+            if (r || r.message().rfind(spelled + ": ", 0) != 0) return r;
+            return make_error(w + r.message().substr(spelled.size()));
         };
         if (key == "WIDTH") return as("+W" + value);
         if (key == "HEIGHT") return as("+H" + value);

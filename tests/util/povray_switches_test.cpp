@@ -126,7 +126,10 @@ TEST(PovraySwitches, IniKeysAsTheSwitches) {
     EXPECT_EQ(compile_words({"s.pov", "WIDTH=64", "Output_File_Name=o.png", "Antialias=off"}),
               (Words{"s.pov", "--width=64", "--image=o.png"}));
     // Checked as the switches are; other words with '=' left to the parser.
-    EXPECT_NE(trace_error({"s.pov", "Width=wide"}).find("whole number"), std::string::npos);
+    EXPECT_EQ(trace_error({"s.pov", "Width=wide"}),
+              "Width=wide: the width must be a whole number of pixels (+W640)");
+    EXPECT_EQ(trace_error({"s.pov", "Antialias_Threshold="}),
+              "Antialias_Threshold=: give the value after '='");
     EXPECT_NE(trace_error({"s.pov", "Antialias=maybe"}).find("on or off"), std::string::npos);
     EXPECT_NE(compile_error({"s.pov", "Sampling_Method=2"}).find("0.3 only"), std::string::npos);
     EXPECT_EQ(trace_words({"a=b.pov", "dir/Width=3.pov", "--declare", "Width=3"}),
