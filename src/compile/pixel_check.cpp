@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "scene/camera.h"
+#include "layers/band_aim.h"
 #include "trace/curved_propagator.h"
 #include "util/check.h"
 #include "util/parallel.h"
@@ -185,6 +186,59 @@ PixelEnds band_against_exact(const LayerStack& rendered, const Scene& scene,
     return p;
 }
 
+// Which surface a band ray ends on: the primitive it meets (-1 the ground), or the sky (-2).
+int end_key(const RayEnd& b) { return b.hit ? b.primitive : -2; }
+
+// The elevation (rad) of a direction.
+double elevation_of(const glm::dvec3& d) { return std::asin(std::clamp(d.y / glm::length(d), -1.0, 1.0)); }
+
+// At an edge, where the exact ray passes close by one surface and meets another, the band rays
+// aimed so far may end on either side of it, each off the exact end.  The elevations between
+// the best of them and the nearest one that ends on another surface cross that edge: bisected
+// down to a millionth of a pixel, every ray followed a candidate, so that the band ray just on
+// the exact ray's side of the edge is found (the least error the layers allow there).
+template <typename Follow>
+void edge_search(const PixelEnds& best, const std::vector<std::pair<PixelEnds, glm::dvec3>>& tried,
+                 double same, double pixel_rad, const Follow& follow) {
+    const PixelEnds start = best;
+    const glm::dvec3* best_dir = nullptr;
+    for (const auto& [p, c] : tried)
+        if (p.camera_error_rad == start.camera_error_rad && end_key(p.band) == end_key(start.band))
+            best_dir = &c;
+    if (!best_dir) return;
+    const glm::dvec3 from_dir = *best_dir;
+    const double e_best = elevation_of(from_dir);
+    // For each other surface the rays ended on, the nearest elevation that ended there.
+    std::vector<glm::dvec3> others;
+    std::vector<int> keys;
+    for (const auto& [p, c] : tried) {
+        const int k = end_key(p.band);
+        if (k == end_key(start.band)) continue;
+        const auto it = std::find(keys.begin(), keys.end(), k);
+        if (it == keys.end()) {
+            keys.push_back(k);
+            others.push_back(c);
+        } else {
+            glm::dvec3& o = others[static_cast<size_t>(it - keys.begin())];
+            if (std::fabs(elevation_of(c) - e_best) < std::fabs(elevation_of(o) - e_best)) o = c;
+        }
+    }
+    const double hl = std::hypot(from_dir.x, from_dir.z);
+    for (const glm::dvec3& other : others) {
+        double a = e_best, b = elevation_of(other);
+        const int key_a = end_key(start.band);
+        for (int step = 0; step < 60 && std::fabs(b - a) > 1e-6 * pixel_rad; ++step) {
+            const double m = 0.5 * (a + b);
+            const glm::dvec3 d = mesh_camera_direction(glm::dvec3(
+                std::cos(m) * from_dir.x / hl, std::sin(m), std::cos(m) * from_dir.z / hl));
+            const PixelEnds p = follow(d);
+            if (p.cut_off) break;
+            if (p.camera_error_rad <= same) return;
+            (end_key(p.band) == key_a ? a : b) = m;
+        }
+    }
+}
+
 PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
                      const ObjectQuery& objects, const CurvedPropagator& exact,
                      const PixelCheckSettings& s, size_t i, const glm::dvec3& dir, double pixel_rad,
@@ -200,13 +254,13 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
     const double same = 0.01 * pixel_rad;
     PixelEnds best;
     bool have = false;
-    std::vector<std::pair<PixelEnds, glm::dvec3>> tried;  // the candidates followed, not cut off
-    for (const glm::dvec3& c : candidates) {
-        // The candidates come best first: one within a hundredth of a pixel is kept.
-        if (have && !best.cut_off && best.camera_error_rad <= same) break;
-        const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
+    // Every band ray followed and not cut off, with its direction.
+    std::vector<std::pair<PixelEnds, glm::dvec3>> tried;
+    // A candidate wins with a smaller camera error, or with one as small (to a hundredth of a
+    // pixel) and smaller reflections'.
+    auto consider = [&](const PixelEnds& p, const glm::dvec3& c) {
         if (!p.cut_off) tried.emplace_back(p, c);
-        if (p.cut_off && have) continue;
+        if (p.cut_off && have) return;
         const bool better = !have || (best.cut_off && !p.cut_off) ||
                             p.camera_error_rad < best.camera_error_rad - same ||
                             (p.camera_error_rad <= best.camera_error_rad + same &&
@@ -217,15 +271,27 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
             have = true;
             *chosen = c;
         }
+    };
+    auto follow = [&](const glm::dvec3& c) {
+        const PixelEnds p = band_against_exact(rendered, scene, accel, objects, exact, s, c, e);
+        consider(p, c);
+        return p;
+    };
+    // The camera ray's own end first (what the pixel shows), then its reflections'.  The
+    // candidates come best first: one within a hundredth of a pixel is kept.
+    for (const glm::dvec3& c : candidates) {
+        if (have && !best.cut_off && best.camera_error_rad <= same) break;
+        follow(c);
     }
     // A band path that meets something the exact path passes by (or passes what the exact
     // path meets): aimed again through the exact path's point at that distance, a few times,
     // from each candidate followed, the nearest first (the best one may lie on another sheet
     // than the exact ray, a direct ray for a turned one, where no such aim helps).
-    std::stable_sort(tried.begin(), tried.end(), [](const auto& a, const auto& b) {
+    std::vector<std::pair<PixelEnds, glm::dvec3>> starts = tried;
+    std::stable_sort(starts.begin(), starts.end(), [](const auto& a, const auto& b) {
         return a.first.camera_error_rad < b.first.camera_error_rad;
     });
-    for (const auto& [start, start_dir] : tried) {
+    for (const auto& [start, start_dir] : starts) {
         if (!s.aim.through || best.camera_error_rad <= same) break;
         PixelEnds from = start;
         for (int round = 0; round < 4 && from.camera_error_rad > same; ++round) {
@@ -237,16 +303,12 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
             if (!std::isfinite(r)) break;
             const auto c = s.aim.through(i, dir, r);
             if (!c) break;
-            const PixelEnds p =
-                band_against_exact(rendered, scene, accel, objects, exact, s, *c, e);
+            const PixelEnds p = follow(*c);
             if (p.cut_off || !(p.camera_error_rad < from.camera_error_rad - same)) break;
             from = p;
-            if (p.camera_error_rad < best.camera_error_rad - same) {
-                best = p;
-                *chosen = *c;
-            }
         }
     }
+    if (best.camera_error_rad > same) edge_search(best, tried, same, pixel_rad, follow);
     best.trace_level = band_trace_level(rendered, scene, objects, s, best.band);
     return best;
 }

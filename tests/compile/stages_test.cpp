@@ -7,6 +7,7 @@
 
 #include "atmosphere/profile.h"
 #include "compile/pixel_check.h"
+#include "layers/band_aim.h"
 #include "layers/fit.h"
 #include "layers/outcome.h"
 #include "scene/camera.h"
@@ -312,6 +313,76 @@ TEST(CorrectedCameraAim, SkyRaysTryTheExactRaysSheetFirst) {
     }
     EXPECT_GT(down, 100);
     EXPECT_GT(up, 100);
+}
+
+// At an object's edge the exact ray passes close by one surface and meets another, and no band
+// ray may do both: the aim still finds, along the pixel's sheet of directions, the band ray
+// that ends nearest the exact end.  Checked against a fan of band rays a twentieth of a pixel
+// apart, from three pixels under to three over the chosen one, offered on top of the aim's
+// own candidates wherever the chosen ray ends off the exact end: none ends nearer.
+TEST(CorrectedCameraAim, AtAnEdgeNoBandRayOnTheSheetEndsNearer) {
+    const std::string dir = temp_dir("aim_edge");
+    CompileOptions o;
+    o.scene = dir + "/edge.pov";
+    // Eight layers (a coarse smooth part), a long low bar 8 m out whose top the rays turning
+    // over the sand graze, a wall 30 m out behind it.
+    std::ofstream(o.scene) << R"(#version 3.7;
+#declare Mirage_Preset = "paper";
+#declare Mirage_Layer_Count = 8;
+#include "mirage.inc"
+camera { location <0, 1.5, 0> look_at <0, 1.3, 10> right x * image_width / image_height angle 16 }
+light_source { <-30, 60, -20>, color rgb 1 }
+plane { y, 0 pigment { color rgb 0.7 } }
+box { <-30, 0, 8>, <30, 0.35, 8.3> pigment { color rgb <0.2, 0.3, 0.8> } }
+box { <-40, 0, 30>, <40, 6, 31> pigment { color rgb <0.8, 0.7, 0.2> } }
+)";
+    o.width = 48;
+    o.height = 72;
+    o.out_dir = dir + "/out";
+    o.progress = false;
+    auto ctx = compile_settings(o);
+    ASSERT_TRUE(ctx.ok()) << ctx.message();
+    const CameraRays rays = camera_rays(*ctx, 1);
+    auto d = design_layers(*ctx, rays);
+    ASSERT_TRUE(d.ok()) << d.message();
+    const LayerStack rendered = ctx->rendered(d->stack);
+    PixelCheckSettings ps;
+    ps.width = rays.grid_width();
+    ps.height = rays.grid_height();
+    ps.eye = ctx->camera.location;
+    ps.camera_y = ctx->reference_y(rendered);
+    const double reach = ctx->layers_box.x1 - ps.eye.x;
+    ps.layers = {ps.eye.x - reach, ps.eye.x + reach, ps.eye.z - reach, ps.eye.z + reach};
+    ps.exact_tolerance_rad = 0.05 * rays.pixel_rad[0];
+    ps.aim = corrected_camera_aim(*ctx, rendered, rays);
+    const std::vector<bool> cut(rays.size(), false);
+    const ObjectQuery objects = object_query(*ctx->accel);
+    const PixelCheck chosen = check_pixels(rendered, ctx->profile, ctx->scene, *ctx->accel, objects,
+                                           rays.direction, rays.pixel_rad, cut, ps);
+    // The same check offered the fan too, where the chosen ray ends a tenth of a pixel off.
+    std::vector<size_t> off;
+    for (size_t i = 0; i < rays.size(); ++i)
+        if (chosen.camera_error_px[i] > 0.1f) off.push_back(i);
+    ASSERT_GE(off.size(), 5u) << "no edges to test";
+    PixelCheckSettings fan = ps;
+    const BandAim own = ps.aim;
+    fan.aim.candidates = [&](size_t i, const glm::dvec3& d, const ExactEnd& end,
+                             std::vector<glm::dvec3>& out) {
+        own.candidates(i, d, end, out);
+        if (chosen.camera_error_px[i] <= 0.1f) return;
+        const glm::dvec3 c = chosen.band_direction[i];
+        const double e = std::asin(c.y), hl = std::hypot(c.x, c.z);
+        for (int k = -60; k <= 60; ++k) {
+            const double f = e + k * 0.05 * rays.pixel_rad[i];
+            out.push_back(mesh_camera_direction(
+                glm::dvec3(std::cos(f) * c.x / hl, std::sin(f), std::cos(f) * c.z / hl)));
+        }
+    };
+    const PixelCheck fanned = check_pixels(rendered, ctx->profile, ctx->scene, *ctx->accel,
+                                           objects, rays.direction, rays.pixel_rad, cut, fan);
+    for (size_t i : off)
+        EXPECT_LE(chosen.camera_error_px[i], fanned.camera_error_px[i] + 0.05f)
+            << "pixel " << i % rays.grid_width() << ", " << i / rays.grid_width();
 }
 
 }  // namespace
