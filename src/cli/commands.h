@@ -17,6 +17,7 @@ void setup_compare_command(CLI::App& app);
 void setup_animate_command(CLI::App& app);
 void setup_study_command(CLI::App& app);
 void setup_frame_command(CLI::App& app);
+void setup_refraction_command(CLI::App& app);
 
 /// The command line's words (argv) as CLI11 is to parse them: POV-Ray's switches of trace and
 /// compile translated to their long options (util/povray_switches.h).  Refuses, with a

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
     mirage::setup_animate_command(app);
     mirage::setup_study_command(app);
     mirage::setup_frame_command(app);
+    mirage::setup_refraction_command(app);
     // `mirage --args-hex HEX MORE...`: HEX stands for the arguments it holds
     // (util/hex_args.h), as the frame tasks of `mirage animate --hosts` are started, so that no
     // byte of a file name passes through GNU parallel or a remote shell.
