@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <sstream>
 
-#include "util/atomic_file.h"
 #include "util/format.h"
 #include "util/process.h"
+#include "report/gnuplot_run.h"
 
 namespace mirage {
 
@@ -154,7 +154,7 @@ Status draw_refraction_plot(const RefractionTable& t, OutputSet& outputs, const 
                             const std::string& gnuplot) {
     namespace fs = std::filesystem;
     if (!find_program(gnuplot))
-        return make_error(gnuplot + " not found on PATH: the plot is drawn by gnuplot");
+        return make_error(gnuplot + " not found on PATH: the refraction plot is drawn by gnuplot");
     const RefractionTableOptions& o = t.options;
     const double top = std::clamp(
         *std::max_element(o.elevations_deg.begin(), o.elevations_deg.end()), 1.0, 10.0);
@@ -217,20 +217,7 @@ Status draw_refraction_plot(const RefractionTable& t, OutputSet& outputs, const 
                << colours[w % 5] << "' title '" << shortest(o.wavelengths_nm[w]) << " nm'";
         gp << "\nunset multiplot\n";
     }
-    const std::string script = temporary_name_for(png) + ".gp";
-    const std::string log = temporary_name_for(png) + ".log";
-    if (auto s = write_file_atomic(script, gp.str()); !s) return s.error();
-    auto run = run_process({gnuplot, fs::absolute(script).string()}, "", log);
-    std::error_code ec;
-    fs::remove(script, ec);
-    std::string log_text;
-    if (auto l = read_file(log)) log_text = *l;
-    fs::remove(log, ec);
-    if (!run) return run.error();
-    if (run->exit_code != 0 || !fs::exists(out, ec))
-        return make_error("gnuplot failed (exit " + std::to_string(run->exit_code) + "): " +
-                          log_text);
-    return Ok{};
+    return run_gnuplot(gnuplot, gp.str(), png, {out}, "the refraction plot");
 }
 
 }  // namespace mirage

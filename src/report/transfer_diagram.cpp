@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "atmosphere/general_profile.h"
+#include "report/gnuplot_run.h"
 #include "report/svg.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
@@ -194,24 +195,11 @@ Status draw_transfer_diagram(const TransferSettings& st, const TransferCurve& cu
         png_tmp = abs(*t);
     }
     const std::string anchor = !svg_path.empty() ? svg_path : png_path;
-    const std::string script = temporary_name_for(anchor) + ".gp";
-    const std::string log = temporary_name_for(anchor) + ".log";
-    if (auto s =
-            write_file_atomic(script, transfer_gnuplot_script(st, curve, panel, svg_tmp, png_tmp));
-        !s)
-        return s.error();
-    auto run = run_process({gnuplot, abs(script)}, "", log);
-    std::error_code ec;
-    fs::remove(script, ec);
-    std::string log_text;
-    if (auto l = read_file(log)) log_text = *l;
-    fs::remove(log, ec);
-    if (!run) return run.error();
-    if (run->exit_code != 0 || (!svg_tmp.empty() && !fs::exists(svg_tmp, ec)) ||
-        (!png_tmp.empty() && !fs::exists(png_tmp, ec)))
-        return make_error("gnuplot failed (exit " + std::to_string(run->exit_code) +
-                          "): " + log_text);
-    return Ok{};
+    std::vector<std::string> expected;
+    for (const std::string* t : {&svg_tmp, &png_tmp})
+        if (!t->empty()) expected.push_back(*t);
+    return run_gnuplot(gnuplot, transfer_gnuplot_script(st, curve, panel, svg_tmp, png_tmp),
+                       anchor, expected, "the transfer diagram");
 }
 
 }  // namespace mirage
