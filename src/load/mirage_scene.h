@@ -1,11 +1,7 @@
 // Loading a mirage scene: the floor beneath every command that reads one (compile, trace and
 // compare).  The image size, the include paths, the parse, the Mirage_ settings, the
 // tolerance and the camera's place are checked here, each once and with one message.
-//
-// The modules of src/, lowest first; each includes only from those before it (checked by
-// tests/layout/module_order_test.cpp):
-//   util, atmosphere, scene, load, image, layers, pov, report, trace, compile, trace_scene,
-//   compare, animate, frame, cli
+
 #pragma once
 
 #include <functional>

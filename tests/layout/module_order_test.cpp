@@ -1,4 +1,4 @@
-// The modules of src/ stand in one order (load/mirage_scene.h states it): a module includes
+// The modules of src/ stand in one order (README.md's Layout states it): a module includes
 // only from itself and the modules before it, never from one above.
 #include <gtest/gtest.h>
 
