@@ -26,29 +26,6 @@ bool exponential_turns(const ExactRay& r) {
            r.dz_turn > 0.0;
 }
 
-bool exponential_has_asymptote(const ExactRay& r) {
-    return (r.s > 0 && !r.hits_ground) || (r.ray_class == RayClass::SupEscapeUp && r.k2 < 0.0);
-}
-
-// How far the exponential path beyond dz departs from its asymptote (sampler.cpp's bound):
-// inferior, after the vertex: (2/alpha) ln(1 + exp(-2u)), u = c (dz - dz_t); escaping superior
-// going up: (2/alpha) |ln(1 - r exp(-2x))|, r = E0 / (P + sigma)^2.  Both shrink monotonically,
-// so the line through the path at dz with the asymptotic slope stays within this distance.
-double exponential_departure(const ExactRay& ray, double dz) {
-    const double alpha = ray.profile.alpha;
-    if (ray.s > 0) {
-        const double u = ray.c * (dz - ray.dz_turn);
-        if (u <= 0.0) return kInf;
-        return (2.0 / alpha) * std::log1p(std::exp(-2.0 * u));
-    }
-    if (ray.ray_class == RayClass::SupEscapeUp && ray.k2 < 0.0) {
-        const double ps = ray.P + ray.q;
-        const double r = ray.E * ray.E / (ps * ps);
-        return (2.0 / alpha) * -std::log1p(-r * std::exp(-2.0 * ray.c * dz));
-    }
-    return kInf;
-}
-
 }  // namespace
 
 Atmosphere::Atmosphere() : model_(Profile{ProfileKind::None, 1.0, 0.0, 1.0}) {}
@@ -226,7 +203,7 @@ bool ExactPath::straight() const {
 double ExactPath::asymptotic_slope() const {
     if (auto r = exponential()) {
         if (r->s == 0) return r->cos_i / r->sin_i;
-        return exponential_has_asymptote(*r) ? mirage::asymptotic_slope(*r) : kNaN;
+        return has_asymptote(*r) ? mirage::asymptotic_slope(*r) : kNaN;
     }
     return quadratic()->asymptotic_slope();
 }
@@ -234,7 +211,7 @@ double ExactPath::asymptotic_slope() const {
 double ExactPath::asymptote_departure(double dz) const {
     if (auto r = exponential()) {
         if (r->s == 0) return 0.0;
-        return exponential_has_asymptote(*r) ? exponential_departure(*r, dz) : kInf;
+        return has_asymptote(*r) ? mirage::asymptote_departure(*r, dz) : kInf;
     }
     return quadratic()->asymptote_departure(dz);
 }

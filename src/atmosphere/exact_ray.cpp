@@ -704,4 +704,23 @@ double asymptotic_slope(const ExactRay& r) {
     return kNaN;
 }
 
+bool has_asymptote(const ExactRay& r) {
+    return (r.s > 0 && !r.hits_ground) || (r.ray_class == RayClass::SupEscapeUp && r.k2 < 0.0);
+}
+
+double asymptote_departure(const ExactRay& ray, double dz) {
+    const double alpha = ray.profile.alpha;
+    if (ray.s > 0) {
+        const double u = ray.c * (dz - ray.dz_turn);
+        if (u <= 0.0) return kInf;
+        return (2.0 / alpha) * std::log1p(std::exp(-2.0 * u));
+    }
+    if (ray.ray_class == RayClass::SupEscapeUp && ray.k2 < 0.0) {
+        const double ps = ray.P + ray.q;
+        const double r = ray.E * ray.E / (ps * ps);
+        return (2.0 / alpha) * -std::log1p(-r * std::exp(-2.0 * ray.c * dz));
+    }
+    return kInf;
+}
+
 }  // namespace mirage

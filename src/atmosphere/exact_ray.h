@@ -150,4 +150,15 @@ double distance_to_height(const ExactRay& ray, double y);
 /// (inferior rays after their turn, escaping superior rays going up); NaN otherwise.
 double asymptotic_slope(const ExactRay& ray);
 
+/// Whether the path approaches an asymptote it never meets the ground before: inferior rays
+/// that turn and do not reach the ground, escaping superior rays going up (k2 < 0).
+bool has_asymptote(const ExactRay& ray);
+
+/// How far the path beyond dz still departs from its asymptote: inferior, after the vertex,
+/// (2/alpha) ln(1 + exp(-2u)), u = c (dz - dz_t); escaping superior going up,
+/// (2/alpha) |ln(1 - r exp(-2x))|, r = E0 / (P + sigma)^2.  Both shrink monotonically, so the
+/// line through the path at dz with the asymptotic slope stays within this distance beyond
+/// it.  +infinity before the vertex and for paths with no asymptote.
+double asymptote_departure(const ExactRay& ray, double dz);
+
 }  // namespace mirage

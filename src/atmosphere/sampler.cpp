@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "atmosphere/chord_bound.h"
+#include "atmosphere/step_search.h"
 #include "util/check.h"
 
 namespace mirage {
@@ -17,91 +18,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Largest |y''| over a piece of path whose lowest height is y_low.
 double curvature_bound(const ExactRay& ray, double y_low) {
     return std::fabs(curvature_at_height(ray, std::max(0.0, y_low)));
-}
-
-// How far the path beyond dz still departs from its asymptote (0 when it has none).
-// Inferior, after the vertex: (2/alpha) ln(1 + exp(-2u)), u = c (dz - dz_t).
-// Escaping superior, going up: (2/alpha) |ln(1 - r exp(-2x))|, r = E0 / (P + sigma)^2.
-double asymptote_departure(const ExactRay& ray, double dz) {
-    const double alpha = ray.profile.alpha;
-    if (ray.s > 0) {
-        const double u = ray.c * (dz - ray.dz_turn);
-        if (u <= 0.0) return kInf;
-        return (2.0 / alpha) * std::log1p(std::exp(-2.0 * u));
-    }
-    if (ray.ray_class == RayClass::SupEscapeUp && ray.k2 < 0.0) {
-        const double ps = ray.P + ray.q;
-        const double r = ray.E * ray.E / (ps * ps);
-        return (2.0 / alpha) * -std::log1p(-r * std::exp(-2.0 * ray.c * dz));
-    }
-    return kInf;
-}
-
-bool has_asymptote(const ExactRay& ray) {
-    return (ray.s > 0 && !ray.hits_ground) ||
-           (ray.ray_class == RayClass::SupEscapeUp && ray.k2 < 0.0);
-}
-
-// Chooses the next step from `a` (at most to `limit`) so that every dz image of [a, a+step]
-// that `within(lo, hi)` checks keeps the tolerance.  `previous` is the step before (0 for
-// none): where the search starts.
-template <class Within>
-double next_step(double a, double limit, Within within, double previous) {
-    const double room = limit - a;
-    MIRAGE_CHECK(std::isfinite(room) && room > 0.0);
-    // The whole room if it passes; else the room halved k times for the smallest k that
-    // passes, then grown back while it passes: steps are within a factor 2 of the largest
-    // that passes.  A step passes whenever a longer one does (the chord error and the
-    // curvature bound grow with the step), so k is found by galloping from the previous
-    // step's k and bisecting, in a handful of tests instead of one per halving (the room is
-    // up to 1e9 m).  ldexp(room, -k) is the room halved k times, exactly.
-    double step = room;
-    if (within(a, a + step)) return step;
-    constexpr int kMaxHalvings = 1074;  // below, room * 2^-k is no longer a positive double
-    auto passes = [&](int k) { return within(a, a + std::ldexp(room, -k)); };
-    int fail = 0;  // the room fails
-    int pass = 0;
-    int k = 1;
-    if (previous > 0.0) {
-        k = std::clamp(static_cast<int>(std::lround(std::log2(room / previous))), 1, kMaxHalvings);
-    }
-    if (passes(k)) {
-        pass = k;
-        for (int d = 1; pass - d > fail; d *= 2) {
-            if (!passes(pass - d)) {
-                fail = pass - d;
-                break;
-            }
-            pass -= d;
-        }
-    } else {
-        fail = k;
-        for (int d = 1; pass == 0; d *= 2) {
-            const int t = std::min(fail + d, kMaxHalvings);
-            if (passes(t)) {
-                pass = t;
-            } else {
-                MIRAGE_CHECK(t < kMaxHalvings);
-                fail = t;
-            }
-        }
-    }
-    while (pass - fail > 1) {
-        const int mid = fail + (pass - fail) / 2;
-        if (passes(mid)) {
-            pass = mid;
-        } else {
-            fail = mid;
-        }
-    }
-    step = std::ldexp(room, -pass);
-    MIRAGE_CHECK(a + step > a);
-    for (int iter = 0; iter < 60; ++iter) {
-        const double grown = 1.5 * step;
-        if (grown >= room || !within(a, a + grown)) break;
-        step = grown;
-    }
-    return step;
 }
 
 }  // namespace
