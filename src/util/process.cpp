@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -101,11 +102,14 @@ Result<ProcessRun> run_process(const std::vector<std::string>& argv, const std::
     } while (got < 0 && errno == EINTR);
     ::close(status_pipe[0]);
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
+    struct rusage usage {};
+    while (::wait4(pid, &status, 0, &usage) < 0) {
         if (errno != EINTR) return make_error(argv[0] + ": lost: " + std::strerror(errno));
     }
     ProcessRun run;
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    auto secs = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec; };
+    run.cpu_seconds = secs(usage.ru_utime) + secs(usage.ru_stime);
     if (got == static_cast<ssize_t>(sizeof child_errno)) {
         if (!work_dir.empty() && ::access(work_dir.c_str(), X_OK) != 0)
             return make_error(work_dir + ": cannot run " + argv[0] +

@@ -17,6 +17,7 @@ std::optional<std::string> find_program(const std::string& program);
 struct ProcessRun {
     int exit_code = -1;    // the program's exit status; -1 when a signal ended it
     double seconds = 0.0;  // wall-clock time from start to exit
+    double cpu_seconds = 0.0;  // processor time (user + system) of the program and its threads
 };
 
 /// Runs argv[0] (looked up on PATH) with the arguments argv[1..] in `work_dir` (empty: the

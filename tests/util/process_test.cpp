@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <thread>
 #include <filesystem>
 
 #include "test_temp.h"
@@ -47,6 +49,22 @@ TEST(RunProcess, TimesTheProgramFromStartToExit) {
     ASSERT_EQ(r->exit_code, 0);
     EXPECT_GE(r->seconds, sleep_seconds);
     EXPECT_LE(r->seconds, std::chrono::duration<double>(after - before).count());
+}
+
+// The processor time is the program's own: a sleeping program takes almost none of it, a
+// counting one takes some, and no more than its wall-clock time on every core.
+TEST(RunProcess, MeasuresTheProgramsProcessorTime) {
+    auto idle = run_process({"sh", "-c", "sleep 0.3"}, "", "");
+    ASSERT_TRUE(idle.ok()) << idle.message();
+    EXPECT_LT(idle->cpu_seconds, 0.05);
+    EXPECT_GE(idle->seconds, 0.3);
+    auto busy = run_process(
+        {"sh", "-c", "i=0; while [ $i -lt 200000 ]; do i=$((i + 1)); done"}, "", "");
+    ASSERT_TRUE(busy.ok()) << busy.message();
+    ASSERT_EQ(busy->exit_code, 0);
+    EXPECT_GT(busy->cpu_seconds, 0.05);
+    EXPECT_LE(busy->cpu_seconds,
+              busy->seconds * std::max(1u, std::thread::hardware_concurrency()) + 0.01);
 }
 
 TEST(RunProcess, ProgramsThatCannotStartAreErrors) {
