@@ -50,6 +50,7 @@ Result<PovrayRender> render_povray(const PovrayRenderSettings& st) {
     PovrayRender r;
     r.exit_code = run->exit_code;
     r.seconds = run->seconds;
+    r.process_cpu_seconds = run->cpu_seconds;
     if (auto text = read_file(st.log)) r.log = parse_povray_log(*text);
     if (r.exit_code == 0 && !st.crop_top_row.empty())
         if (auto s = crop_mesh_camera_render(st.crop_top_row); !s) return s.error();

@@ -39,6 +39,10 @@ struct PovrayRenderSettings {
 struct PovrayRender {
     int exit_code = 0;
     double seconds = 0.0;  // wall-clock time of the whole process
+    // Processor time (user + system, all threads) of the whole process: start, parse,
+    // bounding, trace and writing the image, without the wall clock's idle waits (POV-Ray 3.7
+    // spends about 0.6 s of wall-clock time on a 1x1 image while using 0.01 s of processor).
+    double process_cpu_seconds = 0.0;
     PovrayLog log;
 };
 

@@ -57,6 +57,32 @@ TEST(PovrayRender, AMissingProgramIsAnError) {
     EXPECT_EQ(r.message(), "mirage-no-such-povray: not found on PATH");
 }
 
+// A real render: the whole process's processor time holds the trace's own CPU-seconds that
+// POV-Ray reports, and is measured apart from the wall clock.
+TEST(PovrayRender, MeasuresTheWholeProcesssProcessorTime) {
+    const auto dir = mirage::testing::test_temp_path("mirage_povray_cpu");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "s.pov") << "#version 3.7;\ncamera { location <0, 0, -4> look_at 0 }\n"
+                                    "light_source { <5, 5, -5>, rgb 1 }\n"
+                                    "sphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } "
+                                    "finish { reflection 0.3 } }\n";
+    std::ofstream(dir / "s.ini") << "Input_File_Name=s.pov\nWidth=320\nHeight=240\n"
+                                    "Antialias=on\nAntialias_Threshold=0\nOutput_File_Type=N\n";
+    PovrayRenderSettings s;
+    s.ini = "s.ini";
+    s.work_dir = dir.string();
+    s.output = (dir / "s.png").string();
+    s.log = (dir / "s.log").string();
+    auto r = render_povray(s);
+    ASSERT_TRUE(r.ok()) << r.message();
+    ASSERT_EQ(r->exit_code, 0) << log_tail(s.log, 10);
+    ASSERT_TRUE(r->log.cpu_seconds);
+    EXPECT_GT(*r->log.cpu_seconds, 0.0);
+    EXPECT_GE(r->process_cpu_seconds, *r->log.cpu_seconds - 0.01);
+    EXPECT_GT(r->seconds, 0.0);
+}
+
 TEST(LogTail, KeepsTheLastLines) {
     const auto path = mirage::testing::test_temp_path("mirage_log_tail.txt");
     std::ofstream(path) << "one\ntwo\nthree\n";
