@@ -95,8 +95,9 @@ struct Sweep {
     NewDirectories folders;  // the output folders made by this run; first, so that it goes last
     CompareOptions opt;
     fs::path out, stage, renders, work;  // renders: the staged renders/
-    OutputSet outputs;                   // knows the scene's files: no result replaces one
-    Image reference;                     // code values / 255
+    OutputSet outputs;  // knows the scene's files: no result replaces one; owns the staging
+                        // folder
+    Image reference;    // code values / 255
     CompareResult result;
     std::vector<SheetTile> tiles;
     std::string povray_version;
@@ -110,11 +111,6 @@ struct Sweep {
     void note(const std::string& line) {
         result.notes.push_back(line);
         say(line);
-    }
-
-    ~Sweep() {
-        std::error_code ec;
-        if (!stage.empty()) fs::remove_all(stage, ec);  // what was not committed
     }
 
     /// Where a result is written until it is committed.
@@ -540,7 +536,9 @@ Status place_results(Sweep& sw) {
         if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s;
     for (const auto& d : {sw.out, sw.out / "renders", sw.work})
         if (auto s = sw.folders.make(d.string()); !s) return s;
-    sw.stage = sw.out / (".staging" + std::to_string(::getpid()));
+    auto stage = sw.outputs.make_staging_folder(sw.out.string());
+    if (!stage) return stage.error();
+    sw.stage = *stage;
     sw.renders = sw.stage / "renders";
     fs::create_directories(sw.renders, ec);
     if (ec) return make_error(sw.renders.string() + ": cannot create: " + ec.message());
@@ -752,13 +750,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
 
     if (auto s = write_results(sw); !s) return s.error();
     // Everything staged goes into place together.
-    for (const auto& e : fs::recursive_directory_iterator(sw.stage, ec)) {
-        if (!e.is_regular_file()) continue;
-        const fs::path target = sw.out / fs::relative(e.path(), sw.stage);
-        if (auto s = sw.outputs.adopt(e.path().string(), target.string()); !s) return s.error();
-    }
-    if (ec) return make_error(sw.stage.string() + ": " + ec.message());
-    if (auto s = sw.outputs.commit(); !s) return s.error();
+    if (auto s = sw.outputs.commit_staging_folder(); !s) return s.error();
     sw.folders.keep();
     // The results are written (they say which designs were skipped), but a sweep whose
     // renders failed did not do what it was asked.

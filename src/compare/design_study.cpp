@@ -1,7 +1,5 @@
 #include "compare/design_study.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -169,6 +167,13 @@ CompileOptions study_compile_options(const StudyOptions& opt) {
 /// The study's state: the scene compiled once, the continuum of its camera's rays, where the
 /// results are staged, and what has been measured so far.
 struct Study {
+    // The output folders made by this run, taken away again (if empty) when the study fails;
+    // first, so that it goes last, after the staging folder.
+    NewDirectories folders;
+    // The results (curves, table, plots, summary) are written into a staging folder and
+    // renamed into place together at the end, all of them or none, and none over a file the
+    // scene was read from.
+    OutputSet outputs;
     const StudyOptions& opt;
     CompileOptions co;  // the scene's own camera, 3x3 samples: each design starts from it
     CompileContext ctx;
@@ -505,27 +510,17 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
                                               : fs::path(opt.out_dir));
     const fs::path& dir = st.dir;
     if (auto s = check_povray_path(dir.string(), "the output folder (-o)"); !s) return s.error();
-    std::error_code ec;
-    // Taken away again (if empty) when the study fails: declared before the staging folder
-    // and the outputs, so that they go first.
-    NewDirectories folders;
+    st.outputs.protect(ctx.scene.files);
     for (const char* sub : {"curves", "work"})
-        if (auto s = folders.make((dir / sub).string()); !s) return s.error();
+        if (auto s = st.folders.make((dir / sub).string()); !s) return s.error();
     res.out_dir = dir.string();
-    // The results (curves, table, plots, summary) are written into a staging directory and
-    // renamed into place together at the end: all of them or none.
-    st.staging = dir / (".staging-" + std::to_string(::getpid()));
-    const fs::path& staging = st.staging;
-    fs::remove_all(staging, ec);
-    fs::create_directories(staging / "curves", ec);
-    if (ec) return make_error(staging.string() + ": cannot create: " + ec.message());
-    struct RemoveStaging {
-        fs::path path;
-        ~RemoveStaging() {
-            std::error_code e;
-            fs::remove_all(path, e);
-        }
-    } remove_staging{staging};
+    auto staging = st.outputs.make_staging_folder(dir.string());
+    if (!staging) return staging.error();
+    st.staging = *staging;
+    std::error_code ec;
+    fs::create_directories(st.staging / "curves", ec);
+    if (ec)
+        return make_error((st.staging / "curves").string() + ": cannot create: " + ec.message());
 
     st.k = make_continuum(ctx, opt.rays_per_row);
     res.rays = static_cast<int>(st.k.elevation.size());
@@ -542,15 +537,8 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
     if (auto s = study_graded(st); !s) return s.error();
     if (auto s = write_results(st); !s) return s.error();
 
-    OutputSet outputs({fs::absolute(opt.scene).string()});
-    for (const auto& e : fs::recursive_directory_iterator(staging, ec)) {
-        if (!e.is_regular_file()) continue;
-        const fs::path rel = fs::relative(e.path(), staging);
-        if (auto s = outputs.adopt(e.path().string(), (dir / rel).string()); !s) return s.error();
-    }
-    if (ec) return make_error(staging.string() + ": cannot list: " + ec.message());
-    if (auto s = outputs.commit(); !s) return s.error();
-    folders.keep();
+    if (auto s = st.outputs.commit_staging_folder(); !s) return s.error();
+    st.folders.keep();
     // The results are written (their notes say what failed), but a study whose renders failed
     // did not do what it was asked.
     if (!st.render_failures.empty())
