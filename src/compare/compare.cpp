@@ -201,12 +201,9 @@ Result<BandRunOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     if (auto s = sw.guard(image); !s) return s.error();
 
     CompileOptions c;
-    c.scene = sw.opt.scene;
-    c.width = sw.opt.width;
-    c.height = sw.opt.height;
+    c.input() = sw.opt.input();
     c.out_dir = dir.string();
     c.image = image.string();
-    c.library_paths = sw.opt.library_paths;
     // The renders compared are not antialiased: the check of the pixel centres is enough.
     c.samples_per_side = 1;
     c.progress = false;
@@ -291,14 +288,11 @@ Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
     const fs::path image = sw.out / "renders" / (id + ".png");
     if (auto s = sw.guard(image); !s) return s;
     TraceOptions t;
-    t.scene = sw.opt.scene;
+    t.input() = sw.opt.input();
     t.output = sw.staged(image).string();
-    t.width = sw.opt.width;
-    t.height = sw.opt.height;
     t.tolerance_px = tolerance;
     t.threads = sw.opt.threads;
     t.scanline_paths = model == CompareModel::Scanline;
-    t.library_paths = sw.opt.library_paths;
     t.progress = false;
     const double cpu0 = process_cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
@@ -337,12 +331,9 @@ Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
 Status run_straight(Sweep& sw) {
     const fs::path dir = sw.work / "straight";
     CompileOptions c;
-    c.scene = sw.opt.scene;
-    c.width = sw.opt.width;
-    c.height = sw.opt.height;
+    c.input() = sw.opt.input();
     c.out_dir = dir.string();
     c.image = (dir / "povray.png").string();
-    c.library_paths = sw.opt.library_paths;
     c.samples_per_side = 1;
     c.progress = false;
     c.profile = Profile{};  // ProfileKind::None: no layers at all
@@ -359,13 +350,10 @@ Status run_straight(Sweep& sw) {
         return Ok{};
     }
     TraceOptions t;
-    t.scene = sw.opt.scene;
+    t.input() = sw.opt.input();
     t.output = (dir / "tracer.png").string();
-    t.width = sw.opt.width;
-    t.height = sw.opt.height;
     t.threads = sw.opt.threads;
     t.atmosphere = false;
-    t.library_paths = sw.opt.library_paths;
     t.progress = false;
     auto traced = trace_scene(t);
     if (!traced) {
@@ -562,12 +550,9 @@ Status run_reference(Sweep& sw) {
     CompareResult& r = sw.result;
     // A scene that does not parse fails here, with its place.
     TraceOptions t;
-    t.scene = opt.scene;
-    t.width = opt.width;
-    t.height = opt.height;
+    t.input() = opt.input();
     t.tolerance_px = opt.reference_tolerance_px;
     t.threads = opt.threads;
-    t.library_paths = opt.library_paths;
     t.progress = false;
     auto ref = trace_scene(t);
     if (!ref) return ref.error();
@@ -718,7 +703,7 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
                           "(Debian: apt-get install povray)");
     // The scene is read first: a scene that does not load fails here, with its place, and
     // its files are the inputs no result may replace.
-    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    SceneLoadOptions lo = scene_load_options(opt);
     lo.object_queries = tracer_object_queries();
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();

@@ -152,10 +152,7 @@ std::string slug(const std::string& s) {
 
 CompileOptions study_compile_options(const StudyOptions& opt) {
     CompileOptions co;
-    co.scene = opt.scene;
-    co.width = opt.width;
-    co.height = opt.height;
-    co.library_paths = opt.library_paths;
+    co.input() = opt.input();
     co.progress = false;
     co.samples_per_side = 3;
     // The designs are those of the scene's own camera; the corrected camera is a row of its

@@ -233,7 +233,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
 
     // The image size, the include paths, the parse, the Mirage_ settings with the options'
     // replacements and the camera's place: load/mirage_scene.h.
-    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    SceneLoadOptions lo = scene_load_options(opt);
     lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
     lo.object_queries = tracer_object_queries();
     lo.tolerance_px = opt.tolerance_px;

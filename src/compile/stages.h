@@ -52,7 +52,7 @@ inline constexpr double kMaxCurvedSkyRad = 1e-3;
 struct CompileContext {
     CompileOptions options;
     Scene scene;
-    AtmosphereSettings settings;
+    MirageSettings settings;
     Profile profile;  // in scene units
     // Real air (a sounding, the temperature forms, the curved Earth): the general engine's
     // model in scene units (the flattened profile n* on the curved Earth), which the layers

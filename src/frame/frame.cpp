@@ -430,12 +430,11 @@ bool mirrored_from(double distance, double vanishing, double farthest) {
 }  // namespace
 
 Result<FrameReading> frame_scene(const FrameOptions& options) {
-    SceneLoadOptions lo =
-        scene_load_options(options.scene, options.width, options.height, options.library_paths);
+    SceneLoadOptions lo = scene_load_options(options);
     lo.strict = false;  // the objects' boxes are enough
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
-    const AtmosphereSettings& settings = loaded->settings;
+    const MirageSettings& settings = loaded->settings;
     Scene& scene = loaded->scene;
     if (scene.camera.type != CameraType::Perspective)
         return make_error(place_prefix(scene.camera.loc, scene.file) +
@@ -553,7 +552,7 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
     // Exaggerations (not air), times the scene's own: weaker and stronger.
     for (double k :
          {0.001, 0.003, 0.01, 0.03, 0.1, 0.3, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0}) {
-        AtmosphereSettings s = settings;
+        MirageSettings s = settings;
         if (!exaggerate_atmosphere(s, k, "exaggeration")) continue;
         auto air = scene_atmosphere(s, tolerance_rad);
         if (!air) continue;
@@ -706,10 +705,7 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
 
 Result<Image> frame_background(const FrameOptions& options) {
     TraceOptions t;
-    t.scene = options.scene;
-    t.width = options.width;
-    t.height = options.height;
-    t.library_paths = options.library_paths;
+    t.input() = options.input();
     t.progress = false;
     auto traced = trace_scene(t);
     if (!traced) return traced.error();
