@@ -144,6 +144,11 @@ RayError ray_error(const RevolutionStack& s, const ExactRay& ex, double elevatio
     return out;
 }
 
+/// A figure for the table: `digits` significant, or "inf".
+std::string sig_or_inf(double v, int digits) {
+    return std::isfinite(v) ? sig(v, digits) : std::string("inf");
+}
+
 std::string slug(const std::string& s) {
     std::string o;
     for (char c : s) o += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
@@ -218,8 +223,7 @@ Status evaluate(Study& st, StudyRow& row, const RevolutionStack& s, bool pov_ior
     std::ostringstream c;
     c << "elevation_deg,error_px,crossings\n";
     for (size_t i = 0; i < e.size(); ++i)
-        c << sig(k.elevation[i] * 180.0 / M_PI, 9) << ","
-          << (std::isfinite(e[i].px) ? sig(e[i].px, 6) : std::string("inf")) << ","
+        c << sig(k.elevation[i] * 180.0 / M_PI, 9) << "," << sig_or_inf(e[i].px, 6) << ","
           << e[i].crossings << "\n";
     row.curve = "curves/" + slug(row.design) + ".csv";
     return st.put(row.curve, c.str());
@@ -364,7 +368,7 @@ std::string study_csv(const StudyResult& res) {
     csv << "design,geometry,boundaries,mean_crossings,max_crossings,p50_px,p95_px,max_px,"
            "share_over_1px,seen_p95_px,seen_max_px,seen_p95_px_samples,seen_max_px_samples,"
            "compile_seconds,povray_seconds,povray_trace_seconds,max_trace_level,curve\n";
-    auto num = [](double v) { return std::isfinite(v) ? sig(v, 6) : std::string("inf"); };
+    auto num = [](double v) { return sig_or_inf(v, 6); };
     for (const auto& r : res.rows)
         csv << "\"" << r.design << "\"," << r.geometry << "," << r.boundaries << ","
             << num(r.mean_crossings) << "," << r.max_crossings << "," << num(r.p50_px) << ","
@@ -437,9 +441,7 @@ std::string study_summary(const StudyOptions& opt, const StudyResult& res) {
           "| seen p95 / max, centres (px) | seen p95 / max, samples (px) | compile (s) | POV-Ray "
           "(s) "
           "| max level |\n|---|---|---|---|---|---|---|---|---|---|\n";
-    auto cell = [&](double v, int d = 3) {
-        return v < 0 ? std::string("-") : (std::isfinite(v) ? sig(v, d) : std::string("inf"));
-    };
+    auto cell = [&](double v, int d = 3) { return v < 0 ? std::string("-") : sig_or_inf(v, d); };
     for (const auto& r : res.rows)
         md << "| " << r.design << " | " << r.boundaries << " | " << cell(r.mean_crossings) << " / "
            << r.max_crossings << " | " << cell(r.p50_px) << " / " << cell(r.p95_px) << " / "

@@ -114,6 +114,8 @@ struct CameraRays {
     int grid_width() const { return width * per_side; }
     int grid_height() const { return height * per_side; }
     size_t size() const { return direction.size(); }
+    /// Room for n rays in each of the per-ray arrays.
+    void resize(size_t n);
     /// The grid index of the sample at the centre of pixel (col, row) (per_side odd), or of
     /// the sample nearest to it.
     size_t centre(int col, int row) const;
