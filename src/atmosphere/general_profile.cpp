@@ -206,8 +206,8 @@ ProfileFunction flatten(const ProfileFunction& f, double R, double extension_m) 
 
 namespace {
 
-Result<AirModel> make_described_air_model(const AirSpec& spec) {
-    if (auto s = validate(spec.index); !s) return s.error();
+Status validate_air_spec(const AirSpec& spec) {
+    if (auto s = validate(spec.index); !s) return s;
     if (!(std::isfinite(spec.ground_pressure_pa) && spec.ground_pressure_pa > 0.0))
         return make_error("pressure " + shortest(spec.ground_pressure_pa / 100.0) +
                           " hPa must be finite and > 0");
@@ -219,127 +219,136 @@ Result<AirModel> make_described_air_model(const AirSpec& spec) {
     if (!(std::isfinite(spec.earth_radius_m) && spec.earth_radius_m >= 0.0))
         return make_error("Earth radius " + shortest(spec.earth_radius_m) +
                           " m must be finite and >= 0 (0: flat)");
+    return Ok{};
+}
+
+/// An exponential profile's closed form as a model of the air.
+Result<AirModel> exponential_air_model(const Profile& p, double top_m) {
+    if (auto s = validate(p); !s) return s.error();
     AirModel model;
     ProfileFunction& f = model.physical;
     f.earth_radius = 0.0;
+    const int sign = profile_sign(p);
+    const double a = sign * p.eta1 * p.eta1;
+    f.n0_sq = p.eta0 * p.eta0;
+    f.excess = [=](double y) { return a * -std::expm1(-p.alpha * y); };
+    f.excess_slope = [=](double y, int) { return a * p.alpha * std::exp(-p.alpha * y); };
+    // Above the top n^2 changes by less than 1e-17 more.
+    const double natural =
+        p.eta1 > 0.0 ? std::max(1.0, std::log(std::fabs(a) / 1e-17) / p.alpha) : 1.0;
+    f.top = top_m > 0.0 ? top_m : natural;
+    model.refractivity = [=](double y) {
+        return std::sqrt(f.n0_sq + a * -std::expm1(-p.alpha * y)) - 1.0;
+    };
+    model.top = f.top;
+    return model;
+}
 
-    if (spec.source == AirSpec::Source::Exponential) {
-        const Profile p = spec.exponential;
-        if (auto s = validate(p); !s) return s.error();
-        const int sign = profile_sign(p);
-        const double a = sign * p.eta1 * p.eta1;
-        f.n0_sq = p.eta0 * p.eta0;
-        f.excess = [=](double y) { return a * -std::expm1(-p.alpha * y); };
-        f.excess_slope = [=](double y, int) { return a * p.alpha * std::exp(-p.alpha * y); };
-        // Above the top n^2 changes by less than 1e-17 more.
-        const double natural =
-            p.eta1 > 0.0 ? std::max(1.0, std::log(std::fabs(a) / 1e-17) / p.alpha) : 1.0;
-        f.top = spec.top_m > 0.0 ? spec.top_m : natural;
-        model.refractivity = [=](double y) {
-            return std::sqrt(f.n0_sq + a * -std::expm1(-p.alpha * y)) - 1.0;
-        };
-        model.top = f.top;
-        return model;
-    }
+/// A sounding of the index itself: its shape-preserving spline is the profile.
+AirModel index_sounding_model(const Sounding& s, double top) {
+    AirModel model;
+    ProfileFunction& f = model.physical;
+    f.earth_radius = 0.0;
+    const double n0 = s.index.front();
+    std::vector<double> e;
+    for (double n : s.index) e.push_back((n - n0) * (n + n0));
+    auto sp = std::make_shared<QuadraticSpline>(make_shape_preserving_spline(s.height_m, e));
+    f.n0_sq = n0 * n0;
+    f.excess = [sp](double y) { return sp->value(y); };
+    // The spline is C^1: one slope at every knot.
+    f.excess_slope = [sp](double y, int) { return sp->slope(y); };
+    f.breakpoints = sp->knots;
+    f.top = top;
+    model.refractivity = [sp, n0](double y) { return std::sqrt(n0 * n0 + sp->value(y)) - 1.0; };
+    model.top = top;
+    return model;
+}
 
+/// The air's state against height, from a described column or a sounding: temperature (with
+/// its one-sided slopes), the log of the pressure where given, relative humidity where given.
+struct AirState {
     std::function<double(double)> T, Tslope_r, Tslope_l, lnp, lnp_slope, rh, rh_slope;
-    std::vector<double> breaks;
-    double top = spec.top_m;
+    std::vector<double> breaks;  // heights where the smoothness may change
+    double top = 0.0;
     bool have_pressure = false;
-    if (spec.source == AirSpec::Source::Column) {
-        const AirColumn c = spec.column;
-        if (auto s = validate_column(c); !s) return s.error();
-        if (top == 0.0) top = std::max(1000.0, 2.0 * column_features_top(c));
-        for (const auto& v : c.inversions) {
-            if (v.top_m >= top)
-                return make_error("inversion top " + shortest(v.top_m) +
-                                  " m must lie below the profile's top " + shortest(top) + " m");
-            if (v.smoothing_m == 0.0) {
-                breaks.push_back(v.bottom_m);
-                breaks.push_back(v.top_m);
-            }
-        }
-        T = [c](double y) { return column_temperature(c, y); };
-        Tslope_r = [c](double y) { return column_temperature_slope(c, y, +1); };
-        Tslope_l = [c](double y) { return column_temperature_slope(c, y, -1); };
-    } else {
-        const Sounding& s = spec.sounding;
-        if (s.height_m.size() < 2)
-            return make_error(s.source + ": a sounding needs at least 2 rows");
-        const double last = s.height_m.back();
-        if (top == 0.0) top = last;
-        if (top != last)
-            return make_error("profile top " + shortest(top) +
-                              " m: a sounding's profile ends at its last row, " + shortest(last) +
-                              " m");
-        if (s.kind == Sounding::Kind::Index) {
-            const double n0 = s.index.front();
-            std::vector<double> e;
-            for (double n : s.index) e.push_back((n - n0) * (n + n0));
-            auto sp =
-                std::make_shared<QuadraticSpline>(make_shape_preserving_spline(s.height_m, e));
-            f.n0_sq = n0 * n0;
-            f.excess = [sp](double y) { return sp->value(y); };
-            // The spline is C^1: one slope at every knot.
-            f.excess_slope = [sp](double y, int) { return sp->slope(y); };
-            f.breakpoints = sp->knots;
-            f.top = top;
-            model.refractivity = [sp, n0](double y) {
-                return std::sqrt(n0 * n0 + sp->value(y)) - 1.0;
-            };
-            model.top = top;
-            return model;
-        }
-        auto spT = std::make_shared<QuadraticSpline>(
-            make_shape_preserving_spline(s.height_m, s.temperature_k));
-        T = [spT](double y) { return spT->value(y); };
-        Tslope_r = [spT](double y) { return spT->slope(y); };
-        Tslope_l = Tslope_r;
-        breaks = spT->knots;
-        if (!s.pressure_pa.empty()) {
-            have_pressure = true;
-            std::vector<double> lp;
-            for (double p : s.pressure_pa) lp.push_back(std::log(p));
-            auto spP =
-                std::make_shared<QuadraticSpline>(make_shape_preserving_spline(s.height_m, lp));
-            lnp = [spP](double y) { return spP->value(y); };
-            lnp_slope = [spP](double y) { return spP->slope(y); };
-        }
-        if (!s.relative_humidity.empty()) {
-            auto spH = std::make_shared<QuadraticSpline>(
-                make_shape_preserving_spline(s.height_m, s.relative_humidity));
-            rh = [spH](double y) { return std::clamp(spH->value(y), 0.0, 1.0); };
-            rh_slope = [spH](double y) { return spH->slope(y); };
+};
+
+Result<AirState> column_state(const AirColumn& c, double top) {
+    if (auto s = validate_column(c); !s) return s.error();
+    AirState a;
+    a.top = top == 0.0 ? std::max(1000.0, 2.0 * column_features_top(c)) : top;
+    for (const auto& v : c.inversions) {
+        if (v.top_m >= a.top)
+            return make_error("inversion top " + shortest(v.top_m) +
+                              " m must lie below the profile's top " + shortest(a.top) + " m");
+        if (v.smoothing_m == 0.0) {
+            a.breaks.push_back(v.bottom_m);
+            a.breaks.push_back(v.top_m);
         }
     }
-    if (!rh) {
-        const double h = spec.relative_humidity;
-        rh = [h](double) { return h; };
-        rh_slope = [](double) { return 0.0; };
+    a.T = [c](double y) { return column_temperature(c, y); };
+    a.Tslope_r = [c](double y) { return column_temperature_slope(c, y, +1); };
+    a.Tslope_l = [c](double y) { return column_temperature_slope(c, y, -1); };
+    return a;
+}
+
+/// A sounding of temperature, and of pressure and humidity where it has them: splines.
+AirState sounding_state(const Sounding& s, double top) {
+    AirState a;
+    a.top = top;
+    auto spT = std::make_shared<QuadraticSpline>(
+        make_shape_preserving_spline(s.height_m, s.temperature_k));
+    a.T = [spT](double y) { return spT->value(y); };
+    a.Tslope_r = [spT](double y) { return spT->slope(y); };
+    a.Tslope_l = a.Tslope_r;
+    a.breaks = spT->knots;
+    if (!s.pressure_pa.empty()) {
+        a.have_pressure = true;
+        std::vector<double> lp;
+        for (double p : s.pressure_pa) lp.push_back(std::log(p));
+        auto spP = std::make_shared<QuadraticSpline>(make_shape_preserving_spline(s.height_m, lp));
+        a.lnp = [spP](double y) { return spP->value(y); };
+        a.lnp_slope = [spP](double y) { return spP->slope(y); };
     }
-    // The temperature must stay physical over the whole profile.
-    {
-        const auto edges = sorted_edges(breaks, top);
-        constexpr int kProbes = 4000;
-        for (int k = 0; k <= kProbes; ++k) {
-            const double y = top * k / kProbes;
-            const double t = T(y);
-            if (!(std::isfinite(t) && t > 0.0))
-                return make_error("the temperature falls to " + shortest(t - 273.15) + " degC at " +
-                                  sig(y, 6) + " m: the profile is not physical");
-        }
-        for (double y : edges)
-            if (!(T(y) > 0.0))
-                return make_error("the temperature falls to " + shortest(T(y) - 273.15) +
-                                  " degC at " + sig(y, 6) + " m: the profile is not physical");
+    if (!s.relative_humidity.empty()) {
+        auto spH = std::make_shared<QuadraticSpline>(
+            make_shape_preserving_spline(s.height_m, s.relative_humidity));
+        a.rh = [spH](double y) { return std::clamp(spH->value(y), 0.0, 1.0); };
+        a.rh_slope = [spH](double y) { return spH->slope(y); };
     }
-    // Pressure: given, hydrostatic or constant.
-    std::function<double(double)> p, p_slope;
-    if (have_pressure) {
+    return a;
+}
+
+/// The temperature must stay physical over the whole profile.
+Status check_temperature(const AirState& a) {
+    const auto& T = a.T;
+    const auto edges = sorted_edges(a.breaks, a.top);
+    constexpr int kProbes = 4000;
+    for (int k = 0; k <= kProbes; ++k) {
+        const double y = a.top * k / kProbes;
+        const double t = T(y);
+        if (!(std::isfinite(t) && t > 0.0))
+            return make_error("the temperature falls to " + shortest(t - 273.15) + " degC at " +
+                              sig(y, 6) + " m: the profile is not physical");
+    }
+    for (double y : edges)
+        if (!(T(y) > 0.0))
+            return make_error("the temperature falls to " + shortest(T(y) - 273.15) + " degC at " +
+                              sig(y, 6) + " m: the profile is not physical");
+    return Ok{};
+}
+
+/// Pressure and its slope: given, hydrostatic or constant.
+void pressure_of(const AirState& a, const AirSpec& spec, std::function<double(double)>& p,
+                 std::function<double(double)>& p_slope) {
+    const auto& T = a.T;
+    if (a.have_pressure) {
+        const auto& lnp = a.lnp;
+        const auto& lnp_slope = a.lnp_slope;
         p = [lnp](double y) { return std::exp(lnp(y)); };
         p_slope = [lnp, lnp_slope](double y) { return std::exp(lnp(y)) * lnp_slope(y); };
     } else if (spec.hydrostatic) {
-        auto I = std::make_shared<InverseTemperatureIntegral>(T, sorted_edges(breaks, top));
+        auto I = std::make_shared<InverseTemperatureIntegral>(T, sorted_edges(a.breaks, a.top));
         const double p0 = spec.ground_pressure_pa;
         p = [I, p0](double y) { return p0 * std::exp(-kHydrostaticScale * (*I)(y)); };
         p_slope = [I, p0, T](double y) {
@@ -350,13 +359,25 @@ Result<AirModel> make_described_air_model(const AirSpec& spec) {
         p = [p0](double) { return p0; };
         p_slope = [](double) { return 0.0; };
     }
+}
+
+/// The index of the air's state by the spec's formula, and its profile.
+AirModel air_state_model(const AirState& a, const AirSpec& spec) {
+    AirModel model;
+    ProfileFunction& f = model.physical;
+    f.earth_radius = 0.0;
+    const auto T = a.T, Tslope_r = a.Tslope_r, Tslope_l = a.Tslope_l, rh = a.rh,
+               rh_slope = a.rh_slope;
+    const double top = a.top;
+    std::function<double(double)> p, p_slope;
+    pressure_of(a, spec, p, p_slope);
     const IndexSettings index = spec.index;
     auto m_of = [index](double t, double pr, double h) { return refractivity(index, {t, pr, h}); };
     auto m_at = [=](double y) { return m_of(T(y), p(y), rh(y)); };
     const double m0 = m_at(0.0);
     f.n0_sq = (1.0 + m0) * (1.0 + m0);
     f.top = top;
-    f.breakpoints = breaks;
+    f.breakpoints = a.breaks;
     f.excess = [=](double y) {
         const double m = m_at(std::min(y, top));
         return (m - m0) * (2.0 + m + m0);
@@ -387,6 +408,36 @@ Result<AirModel> make_described_air_model(const AirSpec& spec) {
     model.refractivity = [m_at, top](double y) { return m_at(std::min(y, top)); };
     model.top = top;
     return model;
+}
+
+Result<AirModel> make_described_air_model(const AirSpec& spec) {
+    if (auto s = validate_air_spec(spec); !s) return s.error();
+    if (spec.source == AirSpec::Source::Exponential)
+        return exponential_air_model(spec.exponential, spec.top_m);
+    Result<AirState> state = AirState{};
+    if (spec.source == AirSpec::Source::Column) {
+        state = column_state(spec.column, spec.top_m);
+    } else {
+        const Sounding& s = spec.sounding;
+        if (s.height_m.size() < 2)
+            return make_error(s.source + ": a sounding needs at least 2 rows");
+        const double last = s.height_m.back();
+        const double top = spec.top_m == 0.0 ? last : spec.top_m;
+        if (top != last)
+            return make_error("profile top " + shortest(top) +
+                              " m: a sounding's profile ends at its last row, " + shortest(last) +
+                              " m");
+        if (s.kind == Sounding::Kind::Index) return index_sounding_model(s, top);
+        state = sounding_state(s, top);
+    }
+    if (!state) return state.error();
+    if (!state->rh) {
+        const double h = spec.relative_humidity;
+        state->rh = [h](double) { return h; };
+        state->rh_slope = [](double) { return 0.0; };
+    }
+    if (auto s = check_temperature(*state); !s) return s.error();
+    return air_state_model(*state, spec);
 }
 
 }  // namespace

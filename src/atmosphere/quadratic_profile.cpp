@@ -292,6 +292,230 @@ void QuadraticProfile::excess_range(double ya, double yb, double& lo, double& hi
     }
 }
 
+namespace {
+
+// The largest error of the interval's two quadratics at the checked heights, in n.
+struct Trial {
+    double err = 0.0, err_y = 0.0, s_mid = 0.0, c_left = 0.0, c_right = 0.0;
+    bool finite = true;
+};
+
+/// The Hermite interpolant on [a, b] with its midpoint knot, checked against the profile.
+template <class Excess>
+Trial trial(const ProfileFunction& f, Excess& excess, double a, double b, double fa, double sa,
+            double fb, double sb) {
+    Trial t;
+    const double h = b - a, mid = a + 0.5 * h;
+    // Schumaker's midpoint knot: the slope there makes the two halves meet.
+    t.s_mid = 2.0 * (fb - fa) / h - 0.5 * (sa + sb);
+    t.c_left = (t.s_mid - sa) / h;
+    t.c_right = (sb - t.s_mid) / h;
+    const double f_mid = fa + (sa + t.c_left * 0.5 * h) * 0.5 * h;
+    t.finite = std::isfinite(t.s_mid) && std::isfinite(f_mid);
+    constexpr int kChecks = 12;
+    for (int side = 0; side < 2 && t.finite; ++side) {
+        for (int q = (side == 0 ? 1 : 0); q < kChecks; ++q) {
+            const double u = 0.5 * h * q / kChecks;
+            const double y = (side == 0 ? a : mid) + u;
+            const double fit =
+                side == 0 ? fa + (sa + t.c_left * u) * u : f_mid + (t.s_mid + t.c_right * u) * u;
+            const double truth = excess(y);
+            if (!std::isfinite(truth)) {
+                t.finite = false;
+                break;
+            }
+            const double dn =
+                std::fabs(fit - truth) / (std::sqrt(f.n0_sq + fit) + std::sqrt(f.n0_sq + truth));
+            if (dn > t.err) {
+                t.err = dn;
+                t.err_y = y;
+            }
+        }
+    }
+    return t;
+}
+
+/// The fine model's pieces, marched up each smooth stretch between `edges`.
+struct FinePieces {
+    std::vector<double> knots{0.0}, slopes, curvatures;
+    std::vector<int> edge_knots{0};  // the knots at the ends of the smooth stretches
+    double worst = 0.0, worst_y = 0.0;
+};
+
+/// Fits the pieces; `fail(height, why)` makes the error of a profile that cannot be fitted.
+template <class Excess, class Fail>
+Result<FinePieces> fit_pieces(const ProfileFunction& f, const FitSettings& settings,
+                              const std::vector<double>& edges, Excess& excess, Fail fail) {
+    FinePieces fp;
+    // Marching from the bottom of each smooth stretch with step-size control: the error of
+    // the interpolant grows as h^3, so the next interval's length is predicted from the last
+    // error.  An interval is kept when its checked error is within 0.9 of the tolerance (the
+    // error is smooth, and 23 checked heights find its maximum to about 1 %).
+    const double accept = 0.9 * settings.tolerance_n;
+    for (size_t k = 0; k + 1 < edges.size(); ++k) {
+        const double A = edges[k], B = edges[k + 1];
+        double a = A, fa = excess(A), sa = f.excess_slope(A, +1);
+        double h = B - A;
+        while (a < B) {
+            double b = a + h;
+            if (b > B - 0.1 * h) b = B;
+            const double fb = excess(b);
+            const double sb = b == B ? f.excess_slope(B, -1) : f.excess_slope(b, +1);
+            const Trial t = trial(f, excess, a, b, fa, sa, fb, sb);
+            if (!t.finite)
+                return fail(0.5 * (a + b),
+                            "the profile is not finite near " + shortest(0.5 * (a + b)) + " m");
+            const double hb = b - a;
+            const double ratio = t.err > 0.0 ? std::cbrt(0.7 * settings.tolerance_n / t.err) : 2.0;
+            if (t.err > accept) {
+                if (hb * 0.5 < settings.min_interval)
+                    return fail(t.err_y, "the profile changes too fast near " + sig(t.err_y, 6) +
+                                             " m to be fitted within " +
+                                             shortest(settings.tolerance_n) +
+                                             " in n (intervals of " + sig(hb, 3) +
+                                             " m still miss by " + sig(t.err, 3) + ")");
+                h = hb * std::clamp(ratio, 0.1, 0.9);
+                continue;
+            }
+            fp.knots.push_back(a + 0.5 * hb);
+            fp.knots.push_back(b);
+            fp.slopes.push_back(sa);
+            fp.curvatures.push_back(t.c_left);
+            fp.slopes.push_back(t.s_mid);
+            fp.curvatures.push_back(t.c_right);
+            if (t.err > fp.worst) {
+                fp.worst = t.err;
+                fp.worst_y = t.err_y;
+            }
+            if (static_cast<int>(fp.slopes.size()) > settings.max_pieces)
+                return fail(b, "the profile needs more than " +
+                                   std::to_string(settings.max_pieces) +
+                                   " pieces to be fitted within " + shortest(settings.tolerance_n) +
+                                   " in n");
+            a = b;
+            fa = fb;
+            sa = b == B ? sa : sb;
+            h = hb * std::clamp(ratio, 0.5, 4.0);
+        }
+        fp.edge_knots.push_back(static_cast<int>(fp.knots.size()) - 1);
+    }
+    return fp;
+}
+
+}  // namespace
+
+void QuadraticProfile::add_coarse_spans(const ProfileFunction& f, const FitSettings& settings,
+                                        const std::vector<int>& edge_knots,
+                                        const std::function<double(double)>& excess, long& checks) {
+    QuadraticProfile& q = *this;
+    auto n_of = [&](double e) { return std::sqrt(f.n0_sq + e); };
+    const int m = q.piece_count();
+    // Spans do not cross a breakpoint where the profile's slope jumps (a corner).
+    std::vector<char> edge(m + 1, 0);
+    for (int k : edge_knots) {
+        if (k == 0 || k == m) continue;
+        const double y = q.y_[k];
+        const double left = f.excess_slope(y, -1), right = f.excess_slope(y, +1);
+        if (!(std::fabs(left - right) <= 1e-9 * std::max(std::fabs(left), std::fabs(right))))
+            edge[k] = 1;
+    }
+    const double eps = settings.tolerance_n;
+    // The fine model's bound on directions, the share of it a span may use.
+    const double bound = settings.span_allowance * M_PI * std::sqrt(eps);
+    q.span_up_.assign(m + 1, -1);
+    q.span_down_.assign(m + 1, -1);
+    // The profile at every fine knot and halfway between them, once: a span checks its
+    // error at those inside it.
+    std::vector<double> at_knot(m + 1), at_middle(m);
+    for (int k = 0; k <= m; ++k) at_knot[k] = excess(q.y_[k]);
+    for (int k = 0; k < m; ++k) at_middle[k] = excess(0.5 * (q.y_[k] + q.y_[k + 1]));
+    // The span over the fine knots lo..hi, or none when it is no use to any ray.
+    auto make_span = [&](int lo, int hi, CoarseSpan& sp) {
+        const double a = q.y_[lo], h = q.y_[hi] - a;
+        const double fa = q.e_[lo], fb = q.e_[hi], fm = excess(a + 0.5 * h);
+        if (!std::isfinite(fm)) return false;
+        sp.lo = lo;
+        sp.hi = hi;
+        sp.c = 2.0 * (fb - 2.0 * fm + fa) / (h * h);
+        sp.b = (fb - fa) / h - sp.c * h;
+        sp.root_c = std::sqrt(std::fabs(sp.c));
+        sp.end_slope = sp.b + 2.0 * sp.c * h;
+        // Its error: at 23 heights evenly apart, and at every knot of the fine model inside
+        // it and halfway between them (where the profile's curvature may change: a
+        // breakpoint where only the slope is continuous).
+        double err = 0.0;
+        bool finite = true;
+        auto check = [&](double y, double truth) {
+            const double u = y - a;
+            const double fit = fa + (sp.b + sp.c * u) * u;
+            if (!std::isfinite(truth)) finite = false;
+            err = std::max(err, std::fabs(fit - truth) / (n_of(fit) + n_of(truth)));
+        };
+        constexpr int kChecks = 24;
+        for (int k = 1; k < kChecks; ++k) {
+            const double y = a + h * k / kChecks;
+            check(y, excess(y));
+        }
+        for (int j = lo; j < hi; ++j) {
+            if (j > lo) check(q.y_[j], at_knot[j]);
+            check(0.5 * (q.y_[j] + q.y_[j + 1]), at_middle[j]);
+        }
+        checks += 2 * (hi - lo);
+        if (!finite) return false;
+        // Within 0.9 of the bound, as the fine fit's intervals; never below the rounding of n.
+        sp.error_n = std::max(err / 0.9, 8.0 * std::numeric_limits<double>::epsilon());
+        double lo_sq, hi_sq;
+        q.n_sq_range(a, a + h, lo_sq, hi_sq);
+        const double D = 1.01 * (eps + sp.error_n);
+        const double direction = lo_sq - 4.02 * eps - hi_sq * (3.0 * D + D * D / (bound * bound));
+        const double share = lo_sq - 2.02 * (eps + sp.error_n) / QuadraticProfile::kSpanShareOfQ;
+        sp.max_beta_sq = std::min(direction, share);
+        return sp.max_beta_sq > 0.0;
+    };
+    // Spans of 1, 2, 4, 8, ... fine intervals, so that a ray can step over as many as its
+    // direction allows wherever it is: from every node (the fine intervals' ends) in a
+    // model of up to kSpansFromEveryNode intervals.  In a larger one those of up to
+    // kSpanStarts intervals start at every node, longer ones of len intervals at every (len /
+    // kSpanStarts)-th: a ray crosses a long stretch in a few more steps, and the spans cost
+    // O(kSpanStarts) checks of each fine interval per length, O(m log m) in all (from every
+    // node they cost O(m^2): 10^4 sounding rows took minutes).
+    std::vector<int> nodes;
+    for (int k = 0; k <= m; k += 2) nodes.push_back(k);
+    const int intervals = static_cast<int>(nodes.size()) - 1;
+    std::vector<int> edges_before(nodes.size(), 0);  // edges among nodes[1..i]
+    for (size_t i = 1; i < nodes.size(); ++i)
+        edges_before[i] = edges_before[i - 1] + (i + 1 < nodes.size() && edge[nodes[i]]);
+    constexpr int kSpansFromEveryNode = 2048, kSpanStarts = 8;
+    for (int len = 1; len <= intervals; len *= 2) {
+        bool any = false;
+        const int stride = intervals <= kSpansFromEveryNode ? 1 : std::max(1, len / kSpanStarts);
+        for (int i = 0; i + len <= intervals; i += stride) {
+            // No corner strictly inside.
+            if (edges_before[i + len - 1] - edges_before[i] > 0) continue;
+            CoarseSpan sp;
+            if (!make_span(nodes[i], nodes[i + len], sp)) continue;
+            any = true;
+            const int id = static_cast<int>(q.spans_.size());
+            sp.finer_same_lo = q.span_up_[sp.lo];
+            sp.finer_same_hi = q.span_down_[sp.hi];
+            q.span_up_[sp.lo] = id;
+            q.span_down_[sp.hi] = id;
+            // How far its slope departs from the pieces' over the pieces it covers (both
+            // linear there: at the pieces' ends).
+            for (int j = sp.lo; j < sp.hi; ++j) {
+                for (int end = 0; end < 2; ++end) {
+                    const double u = q.y_[j + end] - q.y_[j];
+                    const double piece = q.b_[j] + 2.0 * q.c_[j] * u;
+                    const double span = sp.b + 2.0 * sp.c * (q.y_[j + end] - q.y_[sp.lo]);
+                    sp.slope_slack = std::max(sp.slope_slack, std::fabs(span - piece));
+                }
+            }
+            q.spans_.push_back(sp);
+        }
+        if (!any) break;
+    }
+}
+
 Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
                                                const FitSettings& settings, FitReport* report) {
     MIRAGE_CHECK(f.excess && f.excess_slope);
@@ -307,13 +531,10 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
-    std::vector<double> knots{0.0}, slopes, curvatures;
-    std::vector<int> edge_knots{0};  // the knots at the ends of the smooth stretches
-    double worst = 0.0, worst_y = 0.0;
     // The fit's work for the report: every evaluation of the profile goes through here, and
     // every comparison with a value evaluated before is counted too.
     long checks = 0;
-    auto excess = [&](double y) {
+    std::function<double(double)> excess = [&](double y) {
         ++checks;
         return f.excess(y);
     };
@@ -324,212 +545,16 @@ Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
         }
         return make_error(why);
     };
-    auto n_of = [&](double e) { return std::sqrt(f.n0_sq + e); };
-    // The largest error of the interval's two quadratics at the checked heights, in n.
-    struct Trial {
-        double err = 0.0, err_y = 0.0, s_mid = 0.0, c_left = 0.0, c_right = 0.0;
-        bool finite = true;
-    };
-    auto trial = [&](double a, double b, double fa, double sa, double fb, double sb) {
-        Trial t;
-        const double h = b - a, mid = a + 0.5 * h;
-        // Schumaker's midpoint knot: the slope there makes the two halves meet.
-        t.s_mid = 2.0 * (fb - fa) / h - 0.5 * (sa + sb);
-        t.c_left = (t.s_mid - sa) / h;
-        t.c_right = (sb - t.s_mid) / h;
-        const double f_mid = fa + (sa + t.c_left * 0.5 * h) * 0.5 * h;
-        t.finite = std::isfinite(t.s_mid) && std::isfinite(f_mid);
-        constexpr int kChecks = 12;
-        for (int side = 0; side < 2 && t.finite; ++side) {
-            for (int q = (side == 0 ? 1 : 0); q < kChecks; ++q) {
-                const double u = 0.5 * h * q / kChecks;
-                const double y = (side == 0 ? a : mid) + u;
-                const double fit = side == 0 ? fa + (sa + t.c_left * u) * u
-                                             : f_mid + (t.s_mid + t.c_right * u) * u;
-                const double truth = excess(y);
-                if (!std::isfinite(truth)) {
-                    t.finite = false;
-                    break;
-                }
-                const double dn = std::fabs(fit - truth) / (n_of(fit) + n_of(truth));
-                if (dn > t.err) {
-                    t.err = dn;
-                    t.err_y = y;
-                }
-            }
-        }
-        return t;
-    };
-    // Marching from the bottom of each smooth stretch with step-size control: the error of
-    // the interpolant grows as h^3, so the next interval's length is predicted from the last
-    // error.  An interval is kept when its checked error is within 0.9 of the tolerance (the
-    // error is smooth, and 23 checked heights find its maximum to about 1 %).
-    const double accept = 0.9 * settings.tolerance_n;
-    for (size_t k = 0; k + 1 < edges.size(); ++k) {
-        const double A = edges[k], B = edges[k + 1];
-        double a = A, fa = excess(A), sa = f.excess_slope(A, +1);
-        double h = B - A;
-        while (a < B) {
-            double b = a + h;
-            if (b > B - 0.1 * h) b = B;
-            const double fb = excess(b);
-            const double sb = b == B ? f.excess_slope(B, -1) : f.excess_slope(b, +1);
-            const Trial t = trial(a, b, fa, sa, fb, sb);
-            if (!t.finite)
-                return failed(0.5 * (a + b),
-                              "the profile is not finite near " + shortest(0.5 * (a + b)) + " m");
-            const double hb = b - a;
-            const double ratio = t.err > 0.0 ? std::cbrt(0.7 * settings.tolerance_n / t.err) : 2.0;
-            if (t.err > accept) {
-                if (hb * 0.5 < settings.min_interval)
-                    return failed(t.err_y, "the profile changes too fast near " + sig(t.err_y, 6) +
-                                               " m to be fitted within " +
-                                               shortest(settings.tolerance_n) +
-                                               " in n (intervals of " + sig(hb, 3) +
-                                               " m still miss by " + sig(t.err, 3) + ")");
-                h = hb * std::clamp(ratio, 0.1, 0.9);
-                continue;
-            }
-            knots.push_back(a + 0.5 * hb);
-            knots.push_back(b);
-            slopes.push_back(sa);
-            curvatures.push_back(t.c_left);
-            slopes.push_back(t.s_mid);
-            curvatures.push_back(t.c_right);
-            if (t.err > worst) {
-                worst = t.err;
-                worst_y = t.err_y;
-            }
-            if (static_cast<int>(slopes.size()) > settings.max_pieces)
-                return failed(b, "the profile needs more than " +
-                                     std::to_string(settings.max_pieces) +
-                                     " pieces to be fitted within " +
-                                     shortest(settings.tolerance_n) + " in n");
-            a = b;
-            fa = fb;
-            sa = b == B ? sa : sb;
-            h = hb * std::clamp(ratio, 0.5, 4.0);
-        }
-        edge_knots.push_back(static_cast<int>(knots.size()) - 1);
-    }
-    auto model = QuadraticProfile::make(std::move(knots), std::move(slopes), std::move(curvatures),
-                                        f.n0_sq, f.earth_radius);
+    auto fp = fit_pieces(f, settings, edges, excess, failed);
+    if (!fp) return fp.error();
+    auto model = QuadraticProfile::make(std::move(fp->knots), std::move(fp->slopes),
+                                        std::move(fp->curvatures), f.n0_sq, f.earth_radius);
     if (!model) return model.error();
-    if (settings.coarse_spans) {
-        QuadraticProfile& q = *model;
-        const int m = q.piece_count();
-        // Spans do not cross a breakpoint where the profile's slope jumps (a corner).
-        std::vector<char> edge(m + 1, 0);
-        for (int k : edge_knots) {
-            if (k == 0 || k == m) continue;
-            const double y = q.y_[k];
-            const double left = f.excess_slope(y, -1), right = f.excess_slope(y, +1);
-            if (!(std::fabs(left - right) <= 1e-9 * std::max(std::fabs(left), std::fabs(right))))
-                edge[k] = 1;
-        }
-        const double eps = settings.tolerance_n;
-        // The fine model's bound on directions, the share of it a span may use.
-        const double bound = settings.span_allowance * M_PI * std::sqrt(eps);
-        q.span_up_.assign(m + 1, -1);
-        q.span_down_.assign(m + 1, -1);
-        // The profile at every fine knot and halfway between them, once: a span checks its
-        // error at those inside it.
-        std::vector<double> at_knot(m + 1), at_middle(m);
-        for (int k = 0; k <= m; ++k) at_knot[k] = excess(q.y_[k]);
-        for (int k = 0; k < m; ++k) at_middle[k] = excess(0.5 * (q.y_[k] + q.y_[k + 1]));
-        // The span over the fine knots lo..hi, or none when it is no use to any ray.
-        auto make_span = [&](int lo, int hi, CoarseSpan& sp) {
-            const double a = q.y_[lo], h = q.y_[hi] - a;
-            const double fa = q.e_[lo], fb = q.e_[hi], fm = excess(a + 0.5 * h);
-            if (!std::isfinite(fm)) return false;
-            sp.lo = lo;
-            sp.hi = hi;
-            sp.c = 2.0 * (fb - 2.0 * fm + fa) / (h * h);
-            sp.b = (fb - fa) / h - sp.c * h;
-            sp.root_c = std::sqrt(std::fabs(sp.c));
-            sp.end_slope = sp.b + 2.0 * sp.c * h;
-            // Its error: at 23 heights evenly apart, and at every knot of the fine model inside
-            // it and halfway between them (where the profile's curvature may change: a
-            // breakpoint where only the slope is continuous).
-            double err = 0.0;
-            bool finite = true;
-            auto check = [&](double y, double truth) {
-                const double u = y - a;
-                const double fit = fa + (sp.b + sp.c * u) * u;
-                if (!std::isfinite(truth)) finite = false;
-                err = std::max(err, std::fabs(fit - truth) / (n_of(fit) + n_of(truth)));
-            };
-            constexpr int kChecks = 24;
-            for (int k = 1; k < kChecks; ++k) {
-                const double y = a + h * k / kChecks;
-                check(y, excess(y));
-            }
-            for (int j = lo; j < hi; ++j) {
-                if (j > lo) check(q.y_[j], at_knot[j]);
-                check(0.5 * (q.y_[j] + q.y_[j + 1]), at_middle[j]);
-            }
-            checks += 2 * (hi - lo);
-            if (!finite) return false;
-            // Within 0.9 of the bound, as the fine fit's intervals; never below the rounding of n.
-            sp.error_n = std::max(err / 0.9, 8.0 * std::numeric_limits<double>::epsilon());
-            double lo_sq, hi_sq;
-            q.n_sq_range(a, a + h, lo_sq, hi_sq);
-            const double D = 1.01 * (eps + sp.error_n);
-            const double direction =
-                lo_sq - 4.02 * eps - hi_sq * (3.0 * D + D * D / (bound * bound));
-            const double share =
-                lo_sq - 2.02 * (eps + sp.error_n) / QuadraticProfile::kSpanShareOfQ;
-            sp.max_beta_sq = std::min(direction, share);
-            return sp.max_beta_sq > 0.0;
-        };
-        // Spans of 1, 2, 4, 8, ... fine intervals, so that a ray can step over as many as its
-        // direction allows wherever it is: from every node (the fine intervals' ends) in a
-        // model of up to kSpansFromEveryNode intervals.  In a larger one those of up to
-        // kSpanStarts intervals start at every node, longer ones of len intervals at every (len /
-        // kSpanStarts)-th: a ray crosses a long stretch in a few more steps, and the spans cost
-        // O(kSpanStarts) checks of each fine interval per length, O(m log m) in all (from every
-        // node they cost O(m^2): 10^4 sounding rows took minutes).
-        std::vector<int> nodes;
-        for (int k = 0; k <= m; k += 2) nodes.push_back(k);
-        const int intervals = static_cast<int>(nodes.size()) - 1;
-        std::vector<int> edges_before(nodes.size(), 0);  // edges among nodes[1..i]
-        for (size_t i = 1; i < nodes.size(); ++i)
-            edges_before[i] = edges_before[i - 1] + (i + 1 < nodes.size() && edge[nodes[i]]);
-        constexpr int kSpansFromEveryNode = 2048, kSpanStarts = 8;
-        for (int len = 1; len <= intervals; len *= 2) {
-            bool any = false;
-            const int stride =
-                intervals <= kSpansFromEveryNode ? 1 : std::max(1, len / kSpanStarts);
-            for (int i = 0; i + len <= intervals; i += stride) {
-                // No corner strictly inside.
-                if (edges_before[i + len - 1] - edges_before[i] > 0) continue;
-                CoarseSpan sp;
-                if (!make_span(nodes[i], nodes[i + len], sp)) continue;
-                any = true;
-                const int id = static_cast<int>(q.spans_.size());
-                sp.finer_same_lo = q.span_up_[sp.lo];
-                sp.finer_same_hi = q.span_down_[sp.hi];
-                q.span_up_[sp.lo] = id;
-                q.span_down_[sp.hi] = id;
-                // How far its slope departs from the pieces' over the pieces it covers (both
-                // linear there: at the pieces' ends).
-                for (int j = sp.lo; j < sp.hi; ++j) {
-                    for (int end = 0; end < 2; ++end) {
-                        const double u = q.y_[j + end] - q.y_[j];
-                        const double piece = q.b_[j] + 2.0 * q.c_[j] * u;
-                        const double span = sp.b + 2.0 * sp.c * (q.y_[j + end] - q.y_[sp.lo]);
-                        sp.slope_slack = std::max(sp.slope_slack, std::fabs(span - piece));
-                    }
-                }
-                q.spans_.push_back(sp);
-            }
-            if (!any) break;
-        }
-    }
+    if (settings.coarse_spans) model->add_coarse_spans(f, settings, fp->edge_knots, excess, checks);
     if (report) {
         report->pieces = model->piece_count();
-        report->max_error_n = worst;
-        report->worst_height = worst_y;
+        report->max_error_n = fp->worst;
+        report->worst_height = fp->worst_y;
         report->checks = checks;
     }
     return model;

@@ -130,6 +130,12 @@ class QuadraticProfile {
     friend Result<QuadraticProfile> fit_quadratic_profile(const ProfileFunction& f,
                                                           const FitSettings& settings,
                                                           FitReport* report);
+    /// The coarser spans over the fine model (FitSettings::coarse_spans): `edge_knots` are the
+    /// knots at the ends of the profile's smooth stretches, `excess` the profile counted in
+    /// `checks`.
+    void add_coarse_spans(const ProfileFunction& f, const FitSettings& settings,
+                          const std::vector<int>& edge_knots,
+                          const std::function<double(double)>& excess, long& checks);
 
     std::vector<double> y_, e_, b_, c_, inc_, end_slope_, root_abs_c_;
     double n0_sq_ = 1.0;

@@ -47,6 +47,19 @@ inline CLI::Validator declare_text() {
         "NAME=VALUE");
 }
 
+/// --declare NAME=VALUE, as often as wanted; `more` adds to the help's note on POV-Ray's
+/// Declare= ("; the .ini declares it too").
+inline CLI::Option* add_declare_option(CLI::App& sub, std::vector<std::string>& declares,
+                                       const std::string& more = "") {
+    return sub
+        .add_option("--declare", declares,
+                    "declare NAME as the number VALUE before the scene is parsed (POV-Ray's "
+                    "Declare=NAME=VALUE" +
+                        more + ")")
+        ->check(declare_text())
+        ->allow_extra_args(false);  // one NAME=VALUE each time: the scene may follow
+}
+
 /// The --declare options' names and numbers (checked by declare_text); a later one replaces
 /// an earlier one of the same name, as POV-Ray's Declare= does.
 inline std::map<std::string, double> declared_numbers(const std::vector<std::string>& texts) {

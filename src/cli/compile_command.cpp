@@ -89,11 +89,7 @@ void setup_compile_command(CLI::App& app) {
     auto* clock = sub->add_option("--clock", o->clock,
                                   "compile the still at this clock (POV-Ray's +K; the .ini "
                                   "renders it with Clock=), one frame of an animation");
-    sub->add_option("--declare", o->declares,
-                    "declare NAME as the number VALUE before the scene is parsed (POV-Ray's "
-                    "Declare=NAME=VALUE; the .ini declares it too)")
-        ->check(declare_text())
-        ->allow_extra_args(false);  // one NAME=VALUE each time: the scene may follow
+    add_declare_option(*sub, o->declares, "; the .ini declares it too");
     sub->add_flag("--json", o->json, "print the report as JSON");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     sub->footer(povray_switches_note(false));

@@ -131,11 +131,7 @@ void setup_trace_command(CLI::App& app) {
     auto* clock = sub->add_option("--clock", o->clock,
                                   "render the still at this clock (POV-Ray's +K), one frame of "
                                   "an animation");
-    sub->add_option("--declare", o->declares,
-                    "declare NAME as the number VALUE before the scene is parsed (POV-Ray's "
-                    "Declare=NAME=VALUE)")
-        ->check(declare_text())
-        ->allow_extra_args(false);  // one NAME=VALUE each time: the scene may follow
+    add_declare_option(*sub, o->declares);
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     o->antialias.add(sub, o->trace.antialias);
     sub->footer(povray_switches_note(true));

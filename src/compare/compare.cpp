@@ -95,8 +95,9 @@ struct Sweep {
     NewDirectories folders;  // the output folders made by this run; first, so that it goes last
     CompareOptions opt;
     fs::path out, stage, renders, work;  // renders: the staged renders/
-    OutputSet outputs;                   // knows the scene's files: no result replaces one
-    Image reference;                     // code values / 255
+    OutputSet outputs;  // knows the scene's files: no result replaces one; owns the staging
+                        // folder
+    Image reference;    // code values / 255
     CompareResult result;
     std::vector<SheetTile> tiles;
     std::string povray_version;
@@ -110,11 +111,6 @@ struct Sweep {
     void note(const std::string& line) {
         result.notes.push_back(line);
         say(line);
-    }
-
-    ~Sweep() {
-        std::error_code ec;
-        if (!stage.empty()) fs::remove_all(stage, ec);  // what was not committed
     }
 
     /// Where a result is written until it is committed.
@@ -190,7 +186,7 @@ std::string over_budget_note(const std::string& model, int n, const std::string&
 /// cannot be started, the scene would be overwritten) is an error; a design that cannot be
 /// compiled or rendered is a note.
 Result<BandRunOutcome> run_band(Sweep& sw, CompareModel model, double setting,
-                             CompileReport* over_budget) {
+                                CompileReport* over_budget) {
     CompareRow row;
     row.model = model;
     row.setting = setting;
@@ -205,12 +201,9 @@ Result<BandRunOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     if (auto s = sw.guard(image); !s) return s.error();
 
     CompileOptions c;
-    c.scene = sw.opt.scene;
-    c.width = sw.opt.width;
-    c.height = sw.opt.height;
+    c.input() = sw.opt.input();
     c.out_dir = dir.string();
     c.image = image.string();
-    c.library_paths = sw.opt.library_paths;
     // The renders compared are not antialiased: the check of the pixel centres is enough.
     c.samples_per_side = 1;
     c.progress = false;
@@ -276,11 +269,10 @@ Result<BandRunOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     // (A count of layers is the setting itself.)
     const bool counted_layers =
         model == CompareModel::UniformBands || model == CompareModel::CorrectedBands;
-    sw.tiles.push_back(
-        {std::move(*codes),
-         model_name(model) + " " + setting_label(row) +
-             (!counted_layers ? ", " + std::to_string(row.layers) + " layers" : "") +
-             "\nPOV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3)});
+    sw.tiles.push_back({std::move(*codes),
+                        model_name(model) + " " + setting_label(row) +
+                            (!counted_layers ? ", " + std::to_string(row.layers) + " layers" : "") +
+                            "\nPOV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3)});
     sw.say(label + ": " + (!counted_layers ? std::to_string(row.layers) + " layers, " : "") +
            "POV-Ray " + sig(row.seconds, 3) + " s, RMSE " + sig(row.rmse, 3));
     return BandRunOutcome::Rendered;
@@ -296,14 +288,11 @@ Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
     const fs::path image = sw.out / "renders" / (id + ".png");
     if (auto s = sw.guard(image); !s) return s;
     TraceOptions t;
-    t.scene = sw.opt.scene;
+    t.input() = sw.opt.input();
     t.output = sw.staged(image).string();
-    t.width = sw.opt.width;
-    t.height = sw.opt.height;
     t.tolerance_px = tolerance;
     t.threads = sw.opt.threads;
     t.scanline_paths = model == CompareModel::Scanline;
-    t.library_paths = sw.opt.library_paths;
     t.progress = false;
     const double cpu0 = process_cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
@@ -342,12 +331,9 @@ Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
 Status run_straight(Sweep& sw) {
     const fs::path dir = sw.work / "straight";
     CompileOptions c;
-    c.scene = sw.opt.scene;
-    c.width = sw.opt.width;
-    c.height = sw.opt.height;
+    c.input() = sw.opt.input();
     c.out_dir = dir.string();
     c.image = (dir / "povray.png").string();
-    c.library_paths = sw.opt.library_paths;
     c.samples_per_side = 1;
     c.progress = false;
     c.profile = Profile{};  // ProfileKind::None: no layers at all
@@ -364,13 +350,10 @@ Status run_straight(Sweep& sw) {
         return Ok{};
     }
     TraceOptions t;
-    t.scene = sw.opt.scene;
+    t.input() = sw.opt.input();
     t.output = (dir / "tracer.png").string();
-    t.width = sw.opt.width;
-    t.height = sw.opt.height;
     t.threads = sw.opt.threads;
     t.atmosphere = false;
-    t.library_paths = sw.opt.library_paths;
     t.progress = false;
     auto traced = trace_scene(t);
     if (!traced) {
@@ -510,12 +493,10 @@ std::string compare_command_line(const CompareOptions& o) {
     return s.str();
 }
 
-Result<CompareResult> run_comparison(const CompareOptions& options) {
-    if (auto s = validate_compare_options(options); !s) return s.error();
-    Sweep sw;
-    sw.opt = options;
-    CompareOptions& opt = sw.opt;
-    // From coarse to fine, each setting once.
+namespace {
+
+/// From coarse to fine, each setting once.
+void sort_settings(CompareOptions& opt) {
     for (auto* list : {&opt.counts, &opt.steps, &opt.corrected_counts}) {
         std::sort(list->begin(), list->end());
         list->erase(std::unique(list->begin(), list->end()), list->end());
@@ -524,41 +505,28 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         std::sort(list->begin(), list->end(), std::greater<>());
         list->erase(std::unique(list->begin(), list->end()), list->end());
     }
-    if (!find_program(opt.povray))
-        return make_error(opt.povray +
-                          ": not found on PATH; the band models are rendered by POV-Ray 3.7 "
-                          "(Debian: apt-get install povray)");
-    // The scene is read first: a scene that does not load fails here, with its place, and
-    // its files are the inputs no result may replace.
-    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
-    lo.object_queries = tracer_object_queries();
-    auto loaded = load_mirage_scene(lo);
-    if (!loaded) return loaded.error();
-    sw.outputs.protect(loaded->scene.files);
-    std::error_code ec;
+}
 
+/// The results' names in the output folder, checked against POV-Ray's limits and the scene's
+/// files, and the folders (the output's, renders/, work/ and the staging folder) made.
+Status place_results(Sweep& sw) {
+    const CompareOptions& opt = sw.opt;
     CompareResult& r = sw.result;
-    r.scene = opt.scene;
-    r.name = fs::path(opt.scene).stem().string();
-    r.width = opt.width;
-    r.height = opt.height;
-    r.threshold = opt.threshold;
-    r.reference_tolerance_px = opt.reference_tolerance_px;
-    r.command = compare_command_line(options);
-    r.machine = read_machine_info();
+    std::error_code ec;
     sw.out = fs::absolute(opt.out_dir.empty() ? fs::path("build/compare") / r.name
                                               : fs::path(opt.out_dir));
     sw.work = sw.out / "work";
     // POV-Ray renders every design from an .ini that names these: refused at once if it
     // cannot take one, before the reference is traced.
-    if (auto s = check_povray_path(fs::absolute(opt.scene).string(), "the scene"); !s)
-        return s.error();
-    if (auto s = check_povray_path(sw.out.string(), "the output folder (-o)"); !s) return s.error();
+    if (auto s = check_povray_path(fs::absolute(opt.scene).string(), "the scene"); !s) return s;
+    if (auto s = check_povray_path(sw.out.string(), "the output folder (-o)"); !s) return s;
     for (const auto& l : opt.library_paths)
-        if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s.error();
+        if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s;
     for (const auto& d : {sw.out, sw.out / "renders", sw.work})
-        if (auto s = sw.folders.make(d.string()); !s) return s.error();
-    sw.stage = sw.out / (".staging" + std::to_string(::getpid()));
+        if (auto s = sw.folders.make(d.string()); !s) return s;
+    auto stage = sw.outputs.make_staging_folder(sw.out.string());
+    if (!stage) return stage.error();
+    sw.stage = *stage;
     sw.renders = sw.stage / "renders";
     fs::create_directories(sw.renders, ec);
     if (ec) return make_error(sw.renders.string() + ": cannot create: " + ec.message());
@@ -572,25 +540,26 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     r.reference_path = (sw.out / "reference.png").string();
     for (const std::string& p : {r.csv_path, r.plot_script, r.plot_png, r.plot_svg, r.sheet_path,
                                  r.summary_path, r.reference_path})
-        if (auto s = sw.guard(p); !s) return s.error();
+        if (auto s = sw.guard(p); !s) return s;
+    return Ok{};
+}
 
-    // The reference: per-ray paths at the finest tolerance.  A scene that does not parse
-    // fails here, with its place.
+/// The reference: per-ray paths at the finest tolerance.
+Status run_reference(Sweep& sw) {
+    const CompareOptions& opt = sw.opt;
+    CompareResult& r = sw.result;
+    // A scene that does not parse fails here, with its place.
     TraceOptions t;
-    t.scene = opt.scene;
-    t.width = opt.width;
-    t.height = opt.height;
+    t.input() = opt.input();
     t.tolerance_px = opt.reference_tolerance_px;
     t.threads = opt.threads;
-    t.library_paths = opt.library_paths;
     t.progress = false;
     auto ref = trace_scene(t);
     if (!ref) return ref.error();
     if (ref->mode == PathMode::Straight)
         return make_error(opt.scene + ": the scene declares no atmosphere (" + ref->atmosphere +
                           "): there is nothing to compare; declare one as mirage.inc describes");
-    if (auto s = write_png(ref->render.image, sw.staged(r.reference_path).string()); !s)
-        return s.error();
+    if (auto s = write_png(ref->render.image, sw.staged(r.reference_path).string()); !s) return s;
     r.atmosphere = ref->atmosphere;
     r.reference_seconds = ref->render.stats.seconds;
     r.reference_threads = ref->render.stats.threads;
@@ -601,10 +570,12 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     sw.say("reference " + shortest(opt.reference_tolerance_px) + " px: per-ray paths, tracer " +
            sig(r.reference_seconds, 3) + " s on " + std::to_string(r.reference_threads) +
            " threads");
+    return Ok{};
+}
 
-    if (auto s = run_straight(sw); !s) return s.error();
-
-    // Uniform layers, doubling (or as listed) until a design exceeds the trace-level budget.
+/// Uniform layers, doubling (or as listed) until a design exceeds the trace-level budget.
+Status run_uniform_sweep(Sweep& sw) {
+    const CompareOptions& opt = sw.opt;
     std::vector<int> counts = opt.counts;
     if (counts.empty())
         for (int n = kFirstCount; n <= kMaxCount; n *= 2) counts.push_back(n);
@@ -622,11 +593,16 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
     if (!stopped && opt.counts.empty())
         sw.note("uniform-bands: stopped at " + std::to_string(kMaxCount) +
                 " layers, the sweep's largest count, still within the trace-level budget");
+    return Ok{};
+}
 
-    // Real air's own design: equal steps of the index, doubling (or as listed) until a design
-    // exceeds the trace-level budget.  (mirage compile refits a design over the budget with
-    // fewer steps, and says so: the sweep stops there, at the first such warning.)
-    if (loaded->settings.air) {
+/// Real air's own design: equal steps of the index, doubling (or as listed) until a design
+/// exceeds the trace-level budget.  (mirage compile refits a design over the budget with
+/// fewer steps, and says so: the sweep stops there, at the first such warning.)
+Status run_index_step_sweep(Sweep& sw, bool air) {
+    const CompareOptions& opt = sw.opt;
+    CompareResult& r = sw.result;
+    if (air) {
         std::vector<int> steps = opt.steps;
         if (steps.empty())
             for (int n = kFirstCount; n <= kMaxSteps; n *= 2) steps.push_back(n);
@@ -650,10 +626,14 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
             "scene's atmosphere is " +
             r.atmosphere);
     }
+    return Ok{};
+}
 
-    // The fit to the camera's rays needs the exponential profiles' closed forms: for real air
-    // one note, not one refusal per tolerance.
-    if (loaded->settings.air && !opt.tolerances.empty()) {
+/// The fit to the camera's rays at each tolerance.  It needs the exponential profiles' closed
+/// forms: for real air one note, not one refusal per tolerance.
+Status run_adaptive_sweep(Sweep& sw, bool air) {
+    CompareOptions& opt = sw.opt;
+    if (air && !opt.tolerances.empty()) {
         sw.note(
             "adaptive-bands: not run: the fit to the camera's rays needs the exponential "
             "profiles' closed forms, and this scene's atmosphere is real air; its own "
@@ -671,9 +651,12 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
                     std::to_string(over.max_trace_level) + ", over POV-Ray's ceiling of " +
                     std::to_string(kPovrayMaxTraceLevel));
     }
+    return Ok{};
+}
 
-    // The corrected camera (mirage compile's default) at a few layer counts.
-    for (int n : opt.corrected_counts) {
+/// The corrected camera (mirage compile's default) at a few layer counts.
+Status run_corrected_sweep(Sweep& sw) {
+    for (int n : sw.opt.corrected_counts) {
         CompileReport over;
         auto outcome = run_band(sw, CompareModel::CorrectedBands, n, &over);
         if (!outcome) return outcome.error();
@@ -682,19 +665,17 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
             break;
         }
     }
+    return Ok{};
+}
 
-    for (double tol : opt.trace_tolerances)
-        if (auto s = run_tracer(sw, CompareModel::Polyline, tol); !s) return s.error();
-    if (opt.scanline)
-        for (double tol : opt.trace_tolerances)
-            if (auto s = run_tracer(sw, CompareModel::Scanline, tol); !s) return s.error();
-
+/// The table, the plot, the contact sheet and the summary, staged.
+Status write_results(Sweep& sw) {
+    CompareResult& r = sw.result;
     r.povray_version = sw.povray_version;
-    if (auto s = write_file_atomic(sw.staged(r.csv_path).string(), results_csv(r)); !s)
-        return s.error();
+    if (auto s = write_file_atomic(sw.staged(r.csv_path).string(), results_csv(r)); !s) return s;
     if (auto s = write_file_atomic(sw.staged(r.plot_script).string(), gnuplot_script(r)); !s)
-        return s.error();
-    if (auto s = plot(sw); !s) return s.error();
+        return s;
+    if (auto s = plot(sw); !s) return s;
     auto sheet = make_contact_sheet(sw.tiles);
     if (!sheet) return sheet.error();
     r.caption_font = sheet->font;
@@ -702,18 +683,59 @@ Result<CompareResult> run_comparison(const CompareOptions& options) {
         sw.note("contact sheet without captions: OpenImageIO found none of the fonts " +
                 std::string("DejaVuSans, LiberationSans-Regular, NotoSans-Regular, FreeSans ") +
                 "(Debian: apt-get install fonts-dejavu-core)");
-    if (auto s = write_png_codes(sheet->image, sw.staged(r.sheet_path).string()); !s)
-        return s.error();
+    if (auto s = write_png_codes(sheet->image, sw.staged(r.sheet_path).string()); !s) return s;
     if (auto s = write_file_atomic(sw.staged(r.summary_path).string(), summary_markdown(r)); !s)
-        return s.error();
+        return s;
+    return Ok{};
+}
+
+}  // namespace
+
+Result<CompareResult> run_comparison(const CompareOptions& options) {
+    if (auto s = validate_compare_options(options); !s) return s.error();
+    Sweep sw;
+    sw.opt = options;
+    CompareOptions& opt = sw.opt;
+    sort_settings(opt);
+    if (!find_program(opt.povray))
+        return make_error(opt.povray +
+                          ": not found on PATH; the band models are rendered by POV-Ray 3.7 "
+                          "(Debian: apt-get install povray)");
+    // The scene is read first: a scene that does not load fails here, with its place, and
+    // its files are the inputs no result may replace.
+    SceneLoadOptions lo = scene_load_options(opt);
+    lo.object_queries = tracer_object_queries();
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    sw.outputs.protect(loaded->scene.files);
+    std::error_code ec;
+
+    CompareResult& r = sw.result;
+    r.scene = opt.scene;
+    r.name = fs::path(opt.scene).stem().string();
+    r.width = opt.width;
+    r.height = opt.height;
+    r.threshold = opt.threshold;
+    r.reference_tolerance_px = opt.reference_tolerance_px;
+    r.command = compare_command_line(options);
+    r.machine = read_machine_info();
+    if (auto s = place_results(sw); !s) return s.error();
+    if (auto s = run_reference(sw); !s) return s.error();
+    if (auto s = run_straight(sw); !s) return s.error();
+    if (auto s = run_uniform_sweep(sw); !s) return s.error();
+    const bool air = loaded->settings.air != nullptr;
+    if (auto s = run_index_step_sweep(sw, air); !s) return s.error();
+    if (auto s = run_adaptive_sweep(sw, air); !s) return s.error();
+    if (auto s = run_corrected_sweep(sw); !s) return s.error();
+    for (double tol : opt.trace_tolerances)
+        if (auto s = run_tracer(sw, CompareModel::Polyline, tol); !s) return s.error();
+    if (opt.scanline)
+        for (double tol : opt.trace_tolerances)
+            if (auto s = run_tracer(sw, CompareModel::Scanline, tol); !s) return s.error();
+
+    if (auto s = write_results(sw); !s) return s.error();
     // Everything staged goes into place together.
-    for (const auto& e : fs::recursive_directory_iterator(sw.stage, ec)) {
-        if (!e.is_regular_file()) continue;
-        const fs::path target = sw.out / fs::relative(e.path(), sw.stage);
-        if (auto s = sw.outputs.adopt(e.path().string(), target.string()); !s) return s.error();
-    }
-    if (ec) return make_error(sw.stage.string() + ": " + ec.message());
-    if (auto s = sw.outputs.commit(); !s) return s.error();
+    if (auto s = sw.outputs.commit_staging_folder(); !s) return s.error();
     sw.folders.keep();
     // The results are written (they say which designs were skipped), but a sweep whose
     // renders failed did not do what it was asked.

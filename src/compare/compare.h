@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "util/result.h"
+#include "util/scene_input.h"
 
 namespace mirage {
 
@@ -33,9 +34,7 @@ std::string model_name(CompareModel model);
 /// where they run out.
 constexpr int kPovrayMaxTraceLevel = 256;
 
-struct CompareOptions {
-    std::string scene;
-    int width = 320, height = 240;         // render size, pixels
+struct CompareOptions : SceneInput {
     std::string out_dir;                   // default build/compare/<scene name>
     double reference_tolerance_px = 0.02;  // the reference's path tolerance, pixels
     std::vector<int> counts;  // uniform layer counts; empty: 8, 16, 32, ... doubling until
@@ -45,12 +44,11 @@ struct CompareOptions {
                              // while a design stays within the trace-level budget
     std::vector<int> corrected_counts = {6, 12, 24, 48};  // layers of the corrected camera
     std::vector<double> trace_tolerances = {4, 2, 1, 0.5, 0.25, 0.1};  // polylines, px
-    bool scanline = false;    // also the per-scanline tracer at trace_tolerances
-    double threshold = 0.05;  // a pixel is "over" when a channel differs by more (code / 255)
-    int threads = 0;          // threads of the tracer and of POV-Ray; 0: all cores
-    std::vector<std::string> library_paths;  // extra include directories, searched first
-    std::string povray = "povray";           // the POV-Ray program, looked up on PATH
-    std::string gnuplot = "gnuplot";         // the plotting program; missing: no plot, a note
+    bool scanline = false;          // also the per-scanline tracer at trace_tolerances
+    double threshold = 0.05;        // a pixel is "over" when a channel differs by more (code / 255)
+    int threads = 0;                // threads of the tracer and of POV-Ray; 0: all cores
+    std::string povray = "povray";  // the POV-Ray program, looked up on PATH
+    std::string gnuplot = "gnuplot";  // the plotting program; missing: no plot, a note
     std::function<void(const std::string&)> progress;  // one line per setting (may be empty)
 };
 

@@ -288,67 +288,49 @@ std::string summary_markdown(const CompareResult& r) {
     const Headlines hr = compute_headlines(r.rows, TimeBasis::Render);
     const std::string tracer_threads = threads_of(r.rows, false);
     const std::string povray_threads = threads_of(r.rows, true);
-    auto render_line = [&md](const std::optional<EqualError>& e, const std::string& b_name) {
-        if (!e) return;
-        md << "  - On render time alone (POV-Ray's Trace Time, the tracer's render loop), at "
-              "RMSE "
-           << rmse_text(e->error) << ": " << describe_time(e->a) << " against "
-           << describe_time(e->b) << ", " << describe_ratio(*e, b_name) << ".\n";
+    // One headline: "at RMSE e, <a> takes <time> [on N threads] and <b> <time>: <ratio>", then
+    // the same on render time alone.  `b_is`: the ratio's subject with its verb ("the tracer
+    // is"); the render-time line names the subject alone.
+    auto headline = [&md](const std::optional<EqualError>& wall,
+                          const std::optional<EqualError>& render, const std::string& title,
+                          const std::string& a_takes, const std::string& a_threads,
+                          const std::string& b, const std::string& b_threads,
+                          const std::string& b_is) {
+        if (!wall) return false;
+        const EqualError& e = *wall;
+        md << "- **" << title << ":** at RMSE " << rmse_text(e.error) << ", " << a_takes << " "
+           << describe_time(e.a) << a_threads << " and " << b << " " << describe_time(e.b)
+           << b_threads << ": " << describe_ratio(e, b_is) << ".\n";
+        if (render)
+            md << "  - On render time alone (POV-Ray's Trace Time, the tracer's render loop), at "
+                  "RMSE "
+               << rmse_text(render->error) << ": " << describe_time(render->a) << " against "
+               << describe_time(render->b) << ", "
+               << describe_ratio(*render, b_is.substr(0, b_is.rfind(' '))) << ".\n";
+        return true;
     };
-    if (h.adaptive_vs_uniform) {
-        const EqualError& e = *h.adaptive_vs_uniform;
-        md << "- **Adaptive against uniform layers:** at RMSE " << rmse_text(e.error)
-           << ", uniform layers take " << describe_time(e.a) << " and adaptive layers "
-           << describe_time(e.b) << ": " << describe_ratio(e, "adaptive layers are") << ".\n";
-        render_line(hr.adaptive_vs_uniform, "adaptive layers");
-    } else {
+    const std::string on_povray = " on " + povray_threads + " threads";
+    const std::string on_tracer = " on " + tracer_threads + " threads";
+    if (!headline(h.adaptive_vs_uniform, hr.adaptive_vs_uniform, "Adaptive against uniform layers",
+                  "uniform layers take", "", "adaptive layers", "", "adaptive layers are"))
         md << "- Adaptive against uniform layers: not compared (a model has no rendered "
               "setting).\n";
-    }
-    if (h.corrected_vs_uniform) {
-        const EqualError& e = *h.corrected_vs_uniform;
-        md << "- **The corrected camera against uniform layers:** at RMSE " << rmse_text(e.error)
-           << ", uniform layers take " << describe_time(e.a) << " and the corrected camera "
-           << describe_time(e.b) << ": " << describe_ratio(e, "the corrected camera is") << ".\n";
-        render_line(hr.corrected_vs_uniform, "the corrected camera");
-    }
-    if (h.corrected_vs_adaptive) {
-        const EqualError& e = *h.corrected_vs_adaptive;
-        md << "- **The corrected camera against adaptive layers:** at RMSE " << rmse_text(e.error)
-           << ", adaptive layers take " << describe_time(e.a) << " and the corrected camera "
-           << describe_time(e.b) << ": " << describe_ratio(e, "the corrected camera is") << ".\n";
-        render_line(hr.corrected_vs_adaptive, "the corrected camera");
-    }
-    if (h.tracer_vs_adaptive) {
-        const EqualError& e = *h.tracer_vs_adaptive;
-        md << "- **The tracer against POV-Ray with adaptive layers:** at RMSE "
-           << rmse_text(e.error) << ", POV-Ray takes " << describe_time(e.a) << " on "
-           << povray_threads << " threads and the tracer " << describe_time(e.b) << " on "
-           << tracer_threads << " threads: " << describe_ratio(e, "the tracer is") << ".\n";
-        render_line(hr.tracer_vs_adaptive, "the tracer");
-    }
-    if (h.steps_vs_uniform) {
-        const EqualError& e = *h.steps_vs_uniform;
-        md << "- **Index steps against uniform layers:** at RMSE " << rmse_text(e.error)
-           << ", uniform layers take " << describe_time(e.a) << " and equal index steps "
-           << describe_time(e.b) << ": " << describe_ratio(e, "index steps are") << ".\n";
-        render_line(hr.steps_vs_uniform, "index steps");
-    }
-    if (h.tracer_vs_steps) {
-        const EqualError& e = *h.tracer_vs_steps;
-        md << "- **The tracer against POV-Ray with index steps:** at RMSE " << rmse_text(e.error)
-           << ", POV-Ray takes " << describe_time(e.a) << " on " << povray_threads
-           << " threads and the tracer " << describe_time(e.b) << " on " << tracer_threads
-           << " threads: " << describe_ratio(e, "the tracer is") << ".\n";
-        render_line(hr.tracer_vs_steps, "the tracer");
-    }
-    if (h.tracer_vs_uniform) {
-        const EqualError& e = *h.tracer_vs_uniform;
-        md << "- **The tracer against POV-Ray with uniform layers:** at RMSE " << rmse_text(e.error)
-           << ", POV-Ray takes " << describe_time(e.a) << " and the tracer " << describe_time(e.b)
-           << ": " << describe_ratio(e, "the tracer is") << ".\n";
-        render_line(hr.tracer_vs_uniform, "the tracer");
-    }
+    headline(h.corrected_vs_uniform, hr.corrected_vs_uniform,
+             "The corrected camera against uniform layers", "uniform layers take", "",
+             "the corrected camera", "", "the corrected camera is");
+    headline(h.corrected_vs_adaptive, hr.corrected_vs_adaptive,
+             "The corrected camera against adaptive layers", "adaptive layers take", "",
+             "the corrected camera", "", "the corrected camera is");
+    headline(h.tracer_vs_adaptive, hr.tracer_vs_adaptive,
+             "The tracer against POV-Ray with adaptive layers", "POV-Ray takes", on_povray,
+             "the tracer", on_tracer, "the tracer is");
+    headline(h.steps_vs_uniform, hr.steps_vs_uniform, "Index steps against uniform layers",
+             "uniform layers take", "", "equal index steps", "", "index steps are");
+    headline(h.tracer_vs_steps, hr.tracer_vs_steps, "The tracer against POV-Ray with index steps",
+             "POV-Ray takes", on_povray, "the tracer", on_tracer, "the tracer is");
+    headline(h.tracer_vs_uniform, hr.tracer_vs_uniform,
+             "The tracer against POV-Ray with uniform layers", "POV-Ray takes", "", "the tracer",
+             "", "the tracer is");
     if (r.straight_rmse && *r.straight_rmse == 0.0) {
         md << "- **The renderers agree:** with straight rays (no atmosphere) POV-Ray and the "
               "tracer draw the same 8-bit picture (RMSE 0), so the band models' error is the "

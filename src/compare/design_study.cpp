@@ -1,13 +1,12 @@
 #include "compare/design_study.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "atmosphere/exact_ray.h"
 #include "compare/compare.h"
@@ -145,224 +144,202 @@ RayError ray_error(const RevolutionStack& s, const ExactRay& ex, double elevatio
     return out;
 }
 
+/// A figure for the table: `digits` significant, or "inf".
+std::string sig_or_inf(double v, int digits) {
+    return std::isfinite(v) ? sig(v, digits) : std::string("inf");
+}
+
 std::string slug(const std::string& s) {
     std::string o;
     for (char c : s) o += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
     return o;
 }
 
-}  // namespace
+CompileOptions study_compile_options(const StudyOptions& opt) {
+    CompileOptions co;
+    co.input() = opt.input();
+    co.progress = false;
+    co.samples_per_side = 3;
+    // The designs are those of the scene's own camera; the corrected camera is a row of its
+    // own.
+    co.camera = CameraModel::Perspective;
+    return co;
+}
 
-Status validate_study_options(const StudyOptions& o) {
-    for (int n : o.uniform_counts)
-        if (auto s = check_layer_count(n, "--counts"); !s) return s;
-    for (int n : o.graded_levels)
-        if (auto s = check_layer_count(n, "--graded-levels"); !s) return s;
-    for (double steps : o.graded_steps)
-        if (!(steps >= 0.0 && steps <= kMaxGradedSteps))
-            return make_error("--graded-steps " + shortest(steps) + ": must be from 0 to " +
-                              shortest(kMaxGradedSteps) + " levels");
+/// The study's state: the scene compiled once, the continuum of its camera's rays, where the
+/// results are staged, and what has been measured so far.
+struct Study {
+    // The output folders made by this run, taken away again (if empty) when the study fails;
+    // first, so that it goes last, after the staging folder.
+    NewDirectories folders;
+    // The results (curves, table, plots, summary) are written into a staging folder and
+    // renamed into place together at the end, all of them or none, and none over a file the
+    // scene was read from.
+    OutputSet outputs;
+    const StudyOptions& opt;
+    CompileOptions co;  // the scene's own camera, 3x3 samples: each design starts from it
+    CompileContext ctx;
+    Continuum k;
+    double zone_lo = 0.0, zone_hi = 0.0, reach = 0.0;
+    CameraRays centres;
+    fs::path dir, staging;
+    StudyResult res;
+    std::vector<std::string> render_failures;  // POV-Ray's, with their cause
+
+    explicit Study(const StudyOptions& options)
+        : opt(options), co(study_compile_options(options)) {}
+    void say(const std::string& line) const {
+        if (opt.progress) opt.progress(line);
+    }
+    /// Writes a result (a path relative to the output folder) into the staging folder.
+    Status put(const std::string& rel, const std::string& content) const {
+        return write_file_atomic((staging / rel).string(), content);
+    }
+};
+
+/// Measures a design over the continuum into `row` and writes its curve.
+Status evaluate(Study& st, StudyRow& row, const RevolutionStack& s, bool pov_iors) {
+    const Continuum& k = st.k;
+    std::vector<RayError> e(k.elevation.size());
+    parallel_for(static_cast<long>(e.size()), [&](long i) {
+        e[i] = ray_error(s, k.exact[i], k.elevation[i], k.pixel_rad[i], st.zone_lo, st.zone_hi,
+                         st.reach, pov_iors);
+    });
+    std::vector<double> px;
+    double sum = 0.0;
+    int over = 0;
+    for (const auto& r : e) {
+        px.push_back(r.px);
+        sum += r.crossings;
+        row.max_crossings = std::max(row.max_crossings, r.crossings);
+        if (r.px > 1.0) ++over;
+    }
+    row.boundaries = s.boundaries();
+    row.mean_crossings = e.empty() ? 0.0 : sum / e.size();
+    row.p50_px = percentile(px, 0.5);
+    row.p95_px = percentile(px, 0.95);
+    row.max_px = *std::max_element(px.begin(), px.end());
+    row.share_over_px = e.empty() ? 0.0 : double(over) / e.size();
+    std::ostringstream c;
+    c << "elevation_deg,error_px,crossings\n";
+    for (size_t i = 0; i < e.size(); ++i)
+        c << sig(k.elevation[i] * 180.0 / M_PI, 9) << "," << sig_or_inf(e[i].px, 6) << ","
+          << e[i].crossings << "\n";
+    row.curve = "curves/" + slug(row.design) + ".csv";
+    return st.put(row.curve, c.str());
+}
+
+/// A plane design compiled, checked and rendered as `mirage compile` and `make render` do.
+Status compile_and_render(Study& st, StudyRow& row, CompileOptions c) {
+    c.out_dir = (st.dir / "work" / slug(row.design)).string();
+    c.image = (st.dir / "work" / (slug(row.design) + ".png")).string();
+    c.samples_per_side = 3;
+    auto rep = compile_scene(c);
+    if (!rep) return rep.error();
+    row.seen_p95_px = rep->p95_seen_error_px;
+    row.seen_max_px = rep->max_seen_error_px;
+    row.seen_p95_px_samples = rep->p95_seen_error_px_samples;
+    row.seen_max_px_samples = rep->max_seen_error_px_samples;
+    row.compile_seconds = rep->seconds;
+    row.max_trace_level = rep->max_trace_level;
+    if (!st.opt.render) return Ok{};
+    PovrayRenderSettings ps;
+    ps.povray = st.opt.povray;
+    ps.ini = rep->ini_path;
+    ps.work_dir = c.out_dir;
+    ps.log = c.out_dir + "/povray.log";
+    if (rep->camera == "corrected") ps.crop_top_row = rep->image_path;
+    auto r = render_povray(ps);
+    if (!r) return r.error();
+    if (r->exit_code != 0) {
+        st.render_failures.push_back(row.design + ": POV-Ray failed (exit " +
+                                     std::to_string(r->exit_code) + "; " + ps.log +
+                                     "): " + povray_failure_cause(ps.log));
+        return make_error("POV-Ray failed: " + log_tail(ps.log, 5));
+    }
+    row.povray_seconds = r->seconds;
+    row.povray_trace_seconds = r->log.trace_seconds.value_or(-1.0);
     return Ok{};
 }
 
-Result<StudyResult> run_design_study(const StudyOptions& opt) {
-    if (auto s = validate_study_options(opt); !s) return s.error();
-    CompileOptions co;
-    co.scene = opt.scene;
-    co.width = opt.width;
-    co.height = opt.height;
-    co.library_paths = opt.library_paths;
-    co.progress = false;
-    co.samples_per_side = 3;
-    // The designs below are those of the scene's own camera; the corrected camera is a row
-    // of its own.
-    co.camera = CameraModel::Perspective;
-    auto ctx_r = compile_settings(co);
-    if (!ctx_r) return ctx_r.error();
-    CompileContext& ctx = *ctx_r;
-    if (!ctx.settings.declared || ctx.profile.kind == ProfileKind::None)
-        return make_error(opt.scene + ": the scene declares no atmosphere: nothing to study");
+/// POV-Ray's time on the template without an atmosphere, the floor of every plane design's.
+void render_plain(Study& st) {
+    CompileOptions plain = st.co;
+    plain.profile = Profile{};
+    plain.profile_label = "none";
+    StudyRow none;
+    none.design = "no atmosphere";
+    none.geometry = "planes";
+    if (auto s = compile_and_render(st, none, plain); s)
+        st.res.plain_povray_seconds = none.povray_seconds;
+    else
+        st.res.notes.push_back("plain render: " + s.message());
+}
 
-    StudyResult res;
-    res.scene = opt.scene;
-    res.name = ctx.name;
-    res.width = opt.width;
-    res.height = opt.height;
-    const fs::path dir = fs::absolute(opt.out_dir.empty() ? fs::path("build/study") / ctx.name
-                                                          : fs::path(opt.out_dir));
-    if (auto s = check_povray_path(dir.string(), "the output folder (-o)"); !s) return s.error();
-    std::error_code ec;
-    // Taken away again (if empty) when the study fails: declared before the staging folder
-    // and the outputs, so that they go first.
-    NewDirectories folders;
-    for (const char* sub : {"curves", "work"})
-        if (auto s = folders.make((dir / sub).string()); !s) return s.error();
-    res.out_dir = dir.string();
-    // The results (curves, table, plots, summary) are written into a staging directory and
-    // renamed into place together at the end: all of them or none.
-    const fs::path staging = dir / (".staging-" + std::to_string(::getpid()));
-    fs::remove_all(staging, ec);
-    fs::create_directories(staging / "curves", ec);
-    if (ec) return make_error(staging.string() + ": cannot create: " + ec.message());
-    struct RemoveStaging {
-        fs::path path;
-        ~RemoveStaging() {
-            std::error_code e;
-            fs::remove_all(path, e);
-        }
-    } remove_staging{staging};
-    auto put = [&](const std::string& rel, const std::string& content) {
-        return write_file_atomic((staging / rel).string(), content);
-    };
-    auto say = [&](const std::string& line) {
-        if (opt.progress) opt.progress(line);
-    };
+/// One plane design: designed from the context `design`, measured, then compiled with the
+/// options `c` (whose failure is a note).
+Status study_plane_design(Study& st, StudyRow row, const CompileContext& design,
+                          const CompileOptions& c) {
+    row.geometry = "planes";
+    st.say(row.design);
+    auto d = design_layers(design, st.centres);
+    if (!d) return d.error();
+    if (auto s = evaluate(st, row, revolution_of(design.rendered(d->stack), design.eye_y), true);
+        !s)
+        return s.error();
+    if (auto s = compile_and_render(st, row, c); !s)
+        st.res.notes.push_back(row.design + ": " + s.message());
+    st.res.rows.push_back(row);
+    return Ok{};
+}
 
-    const Continuum k = make_continuum(ctx, opt.rays_per_row);
-    res.rays = static_cast<int>(k.elevation.size());
-    res.elevation_lo = k.elevation.front();
-    res.elevation_hi = k.elevation.back();
-    const auto [zone_lo, zone_hi] = object_zone(ctx);
-    res.zone_lo = zone_lo;
-    res.zone_hi = zone_hi;
-    const double reach = ctx.layers_box.x1 - ctx.camera.location.x;
-    const CameraRays centres = camera_rays(ctx, 1);
-
-    auto evaluate = [&](StudyRow& row, const RevolutionStack& s, bool pov_iors) {
-        std::vector<RayError> e(k.elevation.size());
-        parallel_for(static_cast<long>(e.size()), [&](long i) {
-            e[i] = ray_error(s, k.exact[i], k.elevation[i], k.pixel_rad[i], zone_lo, zone_hi, reach,
-                             pov_iors);
-        });
-        std::vector<double> px;
-        double sum = 0.0;
-        int over = 0;
-        for (const auto& r : e) {
-            px.push_back(r.px);
-            sum += r.crossings;
-            row.max_crossings = std::max(row.max_crossings, r.crossings);
-            if (r.px > 1.0) ++over;
-        }
-        row.boundaries = s.boundaries();
-        row.mean_crossings = e.empty() ? 0.0 : sum / e.size();
-        row.p50_px = percentile(px, 0.5);
-        row.p95_px = percentile(px, 0.95);
-        row.max_px = *std::max_element(px.begin(), px.end());
-        row.share_over_px = e.empty() ? 0.0 : double(over) / e.size();
-        std::ostringstream c;
-        c << "elevation_deg,error_px,crossings\n";
-        for (size_t i = 0; i < e.size(); ++i)
-            c << sig(k.elevation[i] * 180.0 / M_PI, 9) << ","
-              << (std::isfinite(e[i].px) ? sig(e[i].px, 6) : std::string("inf")) << ","
-              << e[i].crossings << "\n";
-        row.curve = "curves/" + slug(row.design) + ".csv";
-        return put(row.curve, c.str());
-    };
-
-    std::vector<std::string> render_failures;  // POV-Ray's, with their cause
-    // A plane design compiled, checked and rendered as `mirage compile` and `make render` do.
-    auto compile_and_render = [&](StudyRow& row, CompileOptions c) -> Status {
-        c.out_dir = (dir / "work" / slug(row.design)).string();
-        c.image = (dir / "work" / (slug(row.design) + ".png")).string();
-        c.samples_per_side = 3;
-        auto rep = compile_scene(c);
-        if (!rep) return rep.error();
-        row.seen_p95_px = rep->p95_seen_error_px;
-        row.seen_max_px = rep->max_seen_error_px;
-        row.seen_p95_px_samples = rep->p95_seen_error_px_samples;
-        row.seen_max_px_samples = rep->max_seen_error_px_samples;
-        row.compile_seconds = rep->seconds;
-        row.max_trace_level = rep->max_trace_level;
-        if (!opt.render) return Ok{};
-        PovrayRenderSettings ps;
-        ps.povray = opt.povray;
-        ps.ini = rep->ini_path;
-        ps.work_dir = c.out_dir;
-        ps.log = c.out_dir + "/povray.log";
-        if (rep->camera == "corrected") ps.crop_top_row = rep->image_path;
-        auto r = render_povray(ps);
-        if (!r) return r.error();
-        if (r->exit_code != 0) {
-            render_failures.push_back(row.design + ": POV-Ray failed (exit " +
-                                      std::to_string(r->exit_code) + "; " + ps.log +
-                                      "): " + povray_failure_cause(ps.log));
-            return make_error("POV-Ray failed: " + log_tail(ps.log, 5));
-        }
-        row.povray_seconds = r->seconds;
-        row.povray_trace_seconds = r->log.trace_seconds.value_or(-1.0);
-        return Ok{};
-    };
-
-    if (opt.render) {
-        CompileOptions plain = co;
-        plain.profile = Profile{};
-        plain.profile_label = "none";
-        StudyRow none;
-        none.design = "no atmosphere";
-        none.geometry = "planes";
-        if (auto s = compile_and_render(none, plain); s)
-            res.plain_povray_seconds = none.povray_seconds;
-        else
-            res.notes.push_back("plain render: " + s.message());
-    }
-
-    // Planes: Berger's equal layers and the fit to the camera's rays.
-    for (int n : opt.uniform_counts) {
+/// Planes: Berger's equal layers and the fit to the camera's rays.
+Status study_planes(Study& st) {
+    for (int n : st.opt.uniform_counts) {
         StudyRow row;
         row.design = "uniform " + std::to_string(n);
-        row.geometry = "planes";
-        say(row.design);
-        CompileContext u = ctx;
+        CompileContext u = st.ctx;
         u.settings.layers = LayerMode::Uniform;
         u.settings.layer_count = n;
-        auto d = design_layers(u, centres);
-        if (!d) return d.error();
-        if (auto s = evaluate(row, revolution_of(u.rendered(d->stack), u.eye_y), true); !s)
-            return s.error();
-        CompileOptions c = co;
+        CompileOptions c = st.co;
         c.layers = LayerMode::Uniform;
         c.layer_count = n;
-        if (auto s = compile_and_render(row, c); !s)
-            res.notes.push_back(row.design + ": " + s.message());
-        res.rows.push_back(row);
+        if (auto s = study_plane_design(st, row, u, c); !s) return s;
     }
     for (int cols : {1, 4}) {
         StudyRow row;
         row.design =
             cols == 1 ? "fit (centre column)" : "fit (" + std::to_string(cols) + " columns)";
-        row.geometry = "planes";
-        say(row.design);
-        CompileContext f = ctx;
+        CompileContext f = st.ctx;
         f.options.fit_columns = cols;
-        auto d = design_layers(f, centres);
-        if (!d) return d.error();
-        if (auto s = evaluate(row, revolution_of(f.rendered(d->stack), f.eye_y), true); !s)
-            return s.error();
-        CompileOptions c = co;
+        CompileOptions c = st.co;
         c.fit_columns = cols;
-        if (auto s = compile_and_render(row, c); !s)
-            res.notes.push_back(row.design + ": " + s.message());
-        res.rows.push_back(row);
+        if (auto s = study_plane_design(st, row, f, c); !s) return s;
     }
+    return Ok{};
+}
 
-    // Graded layers of revolution (2D only: emitted they would be meshes).
+/// Graded layers of revolution (2D only: emitted they would be meshes).
+Status study_graded(Study& st) {
+    const CompileContext& ctx = st.ctx;
+    StudyResult& res = st.res;
     const double top = std::max(
         ctx.eye_y * 1.01, height_of_excess(ctx.profile, eta_sq_excess(ctx.profile, kInf) * 0.99));
     const double range = std::fabs(eta(ctx.profile, top) - ctx.profile.eta0);
     const double n_eye = eta(ctx.profile, ctx.eye_y);
-    for (int levels : opt.graded_levels) {
-        for (double steps : opt.graded_steps) {
+    for (int levels : st.opt.graded_levels) {
+        for (double steps : st.opt.graded_steps) {
             StudyRow row;
             row.design =
                 "graded " + std::to_string(levels) + " levels, " + sig(steps, 3) + " steps";
             row.geometry = "revolution";
-            say(row.design);
+            st.say(row.design);
             const double dn = range / levels;
-            GradedSettings st;
-            st.grading = steps * dn / n_eye;
-            st.saturation = n_eye * zone_lo;  // levelled off before the nearest object
-            st.softness = 0.15;
-            const IndexRange ir = graded_index_range(ctx.profile, ctx.eye_y, top, st);
+            GradedSettings gs;
+            gs.grading = steps * dn / n_eye;
+            gs.saturation = n_eye * st.zone_lo;  // levelled off before the nearest object
+            gs.softness = 0.15;
+            const IndexRange ir = graded_index_range(ctx.profile, ctx.eye_y, top, gs);
             std::vector<double> lv;
             // Levels on a grid with the eye's index in the middle of a layer.
             const double c0 = n_eye + 0.5 * dn - dn * std::ceil((n_eye - ir.lo) / dn);
@@ -374,22 +351,24 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
                 continue;
             }
             auto g = graded_stack(ctx.profile, ctx.eye_y, res.elevation_lo, res.elevation_hi,
-                                  std::min(reach, 1.2 * zone_hi), top, st, lv);
+                                  std::min(st.reach, 1.2 * st.zone_hi), top, gs, lv);
             if (!g) {
                 res.notes.push_back(row.design + ": " + g.message());
                 continue;
             }
-            if (auto s = evaluate(row, *g, false); !s) return s.error();
+            if (auto s = evaluate(st, row, *g, false); !s) return s.error();
             res.rows.push_back(row);
         }
     }
+    return Ok{};
+}
 
-    // Results.
+std::string study_csv(const StudyResult& res) {
     std::ostringstream csv;
     csv << "design,geometry,boundaries,mean_crossings,max_crossings,p50_px,p95_px,max_px,"
            "share_over_1px,seen_p95_px,seen_max_px,seen_p95_px_samples,seen_max_px_samples,"
            "compile_seconds,povray_seconds,povray_trace_seconds,max_trace_level,curve\n";
-    auto num = [](double v) { return std::isfinite(v) ? sig(v, 6) : std::string("inf"); };
+    auto num = [](double v) { return sig_or_inf(v, 6); };
     for (const auto& r : res.rows)
         csv << "\"" << r.design << "\"," << r.geometry << "," << r.boundaries << ","
             << num(r.mean_crossings) << "," << r.max_crossings << "," << num(r.p50_px) << ","
@@ -398,12 +377,11 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
             << "," << num(r.seen_max_px_samples) << "," << num(r.compile_seconds) << ","
             << num(r.povray_seconds) << "," << num(r.povray_trace_seconds) << ","
             << r.max_trace_level << "," << r.curve << "\n";
-    res.csv_path = (dir / "study.csv").string();
-    if (auto s = put("study.csv", csv.str()); !s) return s.error();
+    return csv.str();
+}
 
-    // Plots: the error over the continuum against elevation, and p95 against crossings.
-    res.plot_elevation = (dir / "error_vs_elevation.png").string();
-    res.plot_crossings = (dir / "error_vs_crossings.png").string();
+/// The plots: the error over the continuum against elevation, and p95 against crossings.
+std::string study_gnuplot_script(const StudyResult& res) {
     std::ostringstream gp;
     gp << "# Written by mirage study; run it in this directory: gnuplot study.gp\n"
        << "set datafile separator ','\nset terminal pngcairo size 1100,640 font 'DejaVu Sans,10'\n"
@@ -437,16 +415,10 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
        << "'study.csv' using 4:(strcol(2) eq \"planes\" ? $7 : 1/0):1 every ::1 with labels offset "
           "0,1 "
           "font ',8' notitle\n";
-    if (auto s = put("study.gp", gp.str()); !s) return s.error();
-    if (find_program(opt.gnuplot)) {
-        auto run = run_process({opt.gnuplot, "study.gp"}, staging.string(),
-                               (staging / "gnuplot.log").string());
-        res.plotted = run && run->exit_code == 0;
-        if (!res.plotted) res.notes.push_back("gnuplot failed: see gnuplot.log");
-    } else {
-        res.notes.push_back("no plots: gnuplot not found");
-    }
+    return gp.str();
+}
 
+std::string study_summary(const StudyOptions& opt, const StudyResult& res) {
     std::ostringstream md;
     const MachineInfo m = read_machine_info();
     md << "# Band designs for " << res.name << " at " << res.width << "x" << res.height << "\n\n"
@@ -456,7 +428,7 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
        << sig(res.elevation_lo * 180 / M_PI, 4) << " to " << sig(res.elevation_hi * 180 / M_PI, 4)
        << " degrees (every column and sub-pixel sample of the image has an elevation in it). "
        << "Error: the angle seen from the eye between the band path and the exact path at every "
-       << "distance from " << sig(zone_lo, 4) << " to " << sig(zone_hi, 4)
+       << "distance from " << sig(res.zone_lo, 4) << " to " << sig(res.zone_hi, 4)
        << " units (the nearest object to the scene's edge) and at the ground, and the final "
        << "direction of rays that leave to the sky, in pixels. Crossings: boundary events of a "
        << "camera ray (POV-Ray's trace levels). Plane designs are also compiled and checked "
@@ -469,9 +441,7 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
           "| seen p95 / max, centres (px) | seen p95 / max, samples (px) | compile (s) | POV-Ray "
           "(s) "
           "| max level |\n|---|---|---|---|---|---|---|---|---|---|\n";
-    auto cell = [&](double v, int d = 3) {
-        return v < 0 ? std::string("-") : (std::isfinite(v) ? sig(v, d) : std::string("inf"));
-    };
+    auto cell = [&](double v, int d = 3) { return v < 0 ? std::string("-") : sig_or_inf(v, d); };
     for (const auto& r : res.rows)
         md << "| " << r.design << " | " << r.boundaries << " | " << cell(r.mean_crossings) << " / "
            << r.max_crossings << " | " << cell(r.p50_px) << " / " << cell(r.p95_px) << " / "
@@ -483,24 +453,97 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
            << " |\n";
     for (const auto& n : res.notes) md << "\n- " << n;
     md << "\n";
-    res.summary_path = (dir / "summary.md").string();
-    if (auto s = put("summary.md", md.str()); !s) return s.error();
+    return md.str();
+}
 
-    OutputSet outputs({fs::absolute(opt.scene).string()});
-    for (const auto& e : fs::recursive_directory_iterator(staging, ec)) {
-        if (!e.is_regular_file()) continue;
-        const fs::path rel = fs::relative(e.path(), staging);
-        if (auto s = outputs.adopt(e.path().string(), (dir / rel).string()); !s) return s.error();
+/// Writes the table, the plots (gnuplot run in the staging folder) and the summary.
+Status write_results(Study& st) {
+    StudyResult& res = st.res;
+    res.csv_path = (st.dir / "study.csv").string();
+    if (auto s = st.put("study.csv", study_csv(res)); !s) return s.error();
+    res.plot_elevation = (st.dir / "error_vs_elevation.png").string();
+    res.plot_crossings = (st.dir / "error_vs_crossings.png").string();
+    if (auto s = st.put("study.gp", study_gnuplot_script(res)); !s) return s.error();
+    if (find_program(st.opt.gnuplot)) {
+        auto run = run_process({st.opt.gnuplot, "study.gp"}, st.staging.string(),
+                               (st.staging / "gnuplot.log").string());
+        res.plotted = run && run->exit_code == 0;
+        if (!res.plotted) res.notes.push_back("gnuplot failed: see gnuplot.log");
+    } else {
+        res.notes.push_back("no plots: gnuplot not found");
     }
-    if (ec) return make_error(staging.string() + ": cannot list: " + ec.message());
-    if (auto s = outputs.commit(); !s) return s.error();
-    folders.keep();
+    res.summary_path = (st.dir / "summary.md").string();
+    return st.put("summary.md", study_summary(st.opt, res));
+}
+
+}  // namespace
+
+Status validate_study_options(const StudyOptions& o) {
+    for (int n : o.uniform_counts)
+        if (auto s = check_layer_count(n, "--counts"); !s) return s;
+    for (int n : o.graded_levels)
+        if (auto s = check_layer_count(n, "--graded-levels"); !s) return s;
+    for (double steps : o.graded_steps)
+        if (!(steps >= 0.0 && steps <= kMaxGradedSteps))
+            return make_error("--graded-steps " + shortest(steps) + ": must be from 0 to " +
+                              shortest(kMaxGradedSteps) + " levels");
+    return Ok{};
+}
+
+Result<StudyResult> run_design_study(const StudyOptions& opt) {
+    if (auto s = validate_study_options(opt); !s) return s.error();
+    Study st(opt);
+    auto ctx_r = compile_settings(st.co);
+    if (!ctx_r) return ctx_r.error();
+    st.ctx = std::move(*ctx_r);
+    const CompileContext& ctx = st.ctx;
+    if (!ctx.settings.declared || ctx.profile.kind == ProfileKind::None)
+        return make_error(opt.scene + ": the scene declares no atmosphere: nothing to study");
+
+    StudyResult& res = st.res;
+    res.scene = opt.scene;
+    res.name = ctx.name;
+    res.width = opt.width;
+    res.height = opt.height;
+    st.dir = fs::absolute(opt.out_dir.empty() ? fs::path("build/study") / ctx.name
+                                              : fs::path(opt.out_dir));
+    const fs::path& dir = st.dir;
+    if (auto s = check_povray_path(dir.string(), "the output folder (-o)"); !s) return s.error();
+    st.outputs.protect(ctx.scene.files);
+    for (const char* sub : {"curves", "work"})
+        if (auto s = st.folders.make((dir / sub).string()); !s) return s.error();
+    res.out_dir = dir.string();
+    auto staging = st.outputs.make_staging_folder(dir.string());
+    if (!staging) return staging.error();
+    st.staging = *staging;
+    std::error_code ec;
+    fs::create_directories(st.staging / "curves", ec);
+    if (ec)
+        return make_error((st.staging / "curves").string() + ": cannot create: " + ec.message());
+
+    st.k = make_continuum(ctx, opt.rays_per_row);
+    res.rays = static_cast<int>(st.k.elevation.size());
+    res.elevation_lo = st.k.elevation.front();
+    res.elevation_hi = st.k.elevation.back();
+    std::tie(st.zone_lo, st.zone_hi) = object_zone(ctx);
+    res.zone_lo = st.zone_lo;
+    res.zone_hi = st.zone_hi;
+    st.reach = ctx.layers_box.x1 - ctx.camera.location.x;
+    st.centres = camera_rays(ctx, 1);
+
+    if (opt.render) render_plain(st);
+    if (auto s = study_planes(st); !s) return s.error();
+    if (auto s = study_graded(st); !s) return s.error();
+    if (auto s = write_results(st); !s) return s.error();
+
+    if (auto s = st.outputs.commit_staging_folder(); !s) return s.error();
+    st.folders.keep();
     // The results are written (their notes say what failed), but a study whose renders failed
     // did not do what it was asked.
-    if (!render_failures.empty())
-        return make_error(std::to_string(render_failures.size()) +
+    if (!st.render_failures.empty())
+        return make_error(std::to_string(st.render_failures.size()) +
                           " POV-Ray render(s) failed; the results in " + dir.string() +
-                          " leave them out.  The first: " + render_failures.front());
+                          " leave them out.  The first: " + st.render_failures.front());
     return res;
 }
 

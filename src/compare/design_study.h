@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "util/result.h"
+#include "util/scene_input.h"
 
 namespace mirage {
 
@@ -26,9 +27,11 @@ namespace mirage {
 constexpr double kMaxGradedSteps = 4096.0;
 constexpr std::size_t kMaxGradedLevels = 16384;
 
-struct StudyOptions {
-    std::string scene;
-    int width = 640, height = 480;
+struct StudyOptions : SceneInput {
+    StudyOptions() {
+        width = 640;
+        height = 480;
+    }
     std::string out_dir;                                  // default build/study/<scene name>
     std::vector<int> uniform_counts = {16, 32, 64, 128};  // Berger's equal layers
     // Graded layers (layers/graded.h): levels per index range, and the grading as the number
@@ -37,7 +40,6 @@ struct StudyOptions {
     std::vector<double> graded_steps = {0.0, 8.0, 32.0};
     int rays_per_row = 8;  // the continuum: elevations per pixel row of the centre column
     bool render = true;    // render the plane designs with POV-Ray for their time
-    std::vector<std::string> library_paths;
     std::string povray = "povray", gnuplot = "gnuplot";
     std::function<void(const std::string&)> progress;  // a line per candidate (may be empty)
 };

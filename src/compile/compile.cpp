@@ -237,7 +237,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     // when the run fails; declared first, so that the staged files go before it.
     NewDirectories folders;
     OutputSet outputs(ctx.scene.files);
-    const AtmosphereSettings& st = ctx.settings;
+    const MirageSettings& st = ctx.settings;
     rep.scene = opt.scene;
     rep.name = ctx.name;
     rep.width = opt.width;

@@ -15,6 +15,7 @@
 #include "load/atmosphere_settings.h"
 #include "pov/emit_layers.h"
 #include "util/result.h"
+#include "util/scene_input.h"
 
 namespace mirage {
 
@@ -22,18 +23,16 @@ namespace mirage {
 /// ray ends (a mesh camera, the default), or as the scene's camera has them.
 enum class CameraModel { Corrected, Perspective };
 
-struct CompileOptions {
-    std::string scene;              // the template
-    int width = 320, height = 240;  // the render's size
-    std::string out_dir;            // where the include, .ini and CSV go
-    std::string image;              // the image the .ini renders to (default: out_dir/<scene>.png)
+/// The scene (SceneInput) is the template, its size the render's.
+struct CompileOptions : SceneInput {
+    std::string out_dir;  // where the include, .ini and CSV go
+    std::string image;    // the image the .ini renders to (default: out_dir/<scene>.png)
     std::optional<double> tolerance_px;  // overrides Mirage_Tolerance
     std::optional<LayerMode> layers;     // overrides Mirage_Layers
     std::optional<int> layer_count;      // overrides Mirage_Layer_Count
     bool antialias = false;
-    std::vector<std::string> library_paths;  // extra include directories, searched first
-    std::optional<LayerLayout> layout;       // unset: by the index contrast ("auto")
-    int fit_columns = 1;                     // image columns the layers are fitted to
+    std::optional<LayerLayout> layout;  // unset: by the index contrast ("auto")
+    int fit_columns = 1;                // image columns the layers are fitted to
     // Also write the pixels' errors here (.exr; R the seen error in pixels, G the shift in
     // rows, B the reflections' error in pixels).
     std::string error_map;

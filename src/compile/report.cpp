@@ -10,6 +10,15 @@
 
 namespace mirage {
 
+namespace {
+
+/// A figure for the report: the number, or "inf" (JSON has no infinity).
+nlohmann::json finite_or_inf(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf");
+}
+
+}  // namespace
+
 std::string report_verdict(const CompileReport& r) {
     if (r.within_tolerance)
         return "within the tolerance of " + sig(r.tolerance_px, 3) +
@@ -48,15 +57,12 @@ std::string report_json(const CompileReport& r) {
     j["p50_error_px"] = r.p50_error_px;
     j["p95_error_px"] = r.p95_error_px;
     j["p95_seen_error_px"] = r.p95_seen_error_px;
-    j["max_seen_error_px"] = std::isfinite(r.max_seen_error_px)
-                                 ? nlohmann::json(r.max_seen_error_px)
-                                 : nlohmann::json("inf");
+    j["max_seen_error_px"] = finite_or_inf(r.max_seen_error_px);
     j["p95_shift_rows"] = r.p95_shift_rows;
     j["max_shift_rows"] = r.max_shift_rows;
     j["pixels_not_shown"] = r.pixels_not_shown;
     j["p99_error_px"] = r.p99_error_px;
-    j["max_error_px"] =
-        std::isfinite(r.max_error_px) ? nlohmann::json(r.max_error_px) : nlohmann::json("inf");
+    j["max_error_px"] = finite_or_inf(r.max_error_px);
     j["max_error_px_fitted_column"] = r.max_error_px_fitted;
     j["pixels"] = r.pixels;
     j["pixels_over_tolerance"] = r.pixels_over;
@@ -65,17 +71,13 @@ std::string report_json(const CompileReport& r) {
     j["max_trace_level"] = r.max_trace_level;
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& row : r.rows_over)
-        rows.push_back(
-            {{"row", row.row},
-             {"max_error_px", std::isfinite(row.max_error_px) ? nlohmann::json(row.max_error_px)
-                                                              : nlohmann::json("inf")},
-             {"pixels_over", row.pixels_over}});
+        rows.push_back({{"row", row.row},
+                        {"max_error_px", finite_or_inf(row.max_error_px)},
+                        {"pixels_over", row.pixels_over}});
     j["rows_over_tolerance"] = rows;
     j["samples_per_pixel"] = r.samples_per_side * r.samples_per_side;
     j["p95_seen_error_px_samples"] = r.p95_seen_error_px_samples;
-    j["max_seen_error_px_samples"] = std::isfinite(r.max_seen_error_px_samples)
-                                         ? nlohmann::json(r.max_seen_error_px_samples)
-                                         : nlohmann::json("inf");
+    j["max_seen_error_px_samples"] = finite_or_inf(r.max_seen_error_px_samples);
     j["p95_shift_rows_samples"] = r.p95_shift_rows_samples;
     j["max_shift_rows_samples"] = r.max_shift_rows_samples;
     j["samples_not_shown"] = r.samples_not_shown;
@@ -83,9 +85,7 @@ std::string report_json(const CompileReport& r) {
         nlohmann::json a = nlohmann::json::array();
         for (const auto& l : v)
             a.push_back({{"index", l.index},
-                         {"max_seen_error_px", std::isfinite(l.max_seen_error_px)
-                                                   ? nlohmann::json(l.max_seen_error_px)
-                                                   : nlohmann::json("inf")},
+                         {"max_seen_error_px", finite_or_inf(l.max_seen_error_px)},
                          {"samples_over", l.samples_over}});
         return a;
     };
@@ -110,13 +110,10 @@ std::string report_json(const CompileReport& r) {
         j["camera_samples_per_pixel"] = r.camera_samples;
         j["camera_include"] = r.camera_path;
         j["render_scene"] = r.render_scene_path;
-        auto num = [](double v) {
-            return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf");
-        };
-        j["p95_camera_error_px"] = num(r.p95_camera_error_px);
-        j["max_camera_error_px"] = num(r.max_camera_error_px);
-        j["p95_camera_error_px_samples"] = num(r.p95_camera_error_px_samples);
-        j["max_camera_error_px_samples"] = num(r.max_camera_error_px_samples);
+        j["p95_camera_error_px"] = finite_or_inf(r.p95_camera_error_px);
+        j["max_camera_error_px"] = finite_or_inf(r.max_camera_error_px);
+        j["p95_camera_error_px_samples"] = finite_or_inf(r.p95_camera_error_px_samples);
+        j["max_camera_error_px_samples"] = finite_or_inf(r.max_camera_error_px_samples);
     }
     j["verdict"] = report_verdict(r);
     return json_text(j) + "\n";

@@ -13,18 +13,21 @@ size_t CameraRays::centre(int col, int row) const {
     return static_cast<size_t>(row * per_side + k) * grid_width() + (col * per_side + k);
 }
 
+void CameraRays::resize(size_t n) {
+    origin.resize(n);
+    direction.resize(n);
+    elevation.resize(n);
+    exit_dz.resize(n);
+    pixel_rad.resize(n);
+}
+
 CameraRays CameraRays::centres() const {
     if (per_side == 1) return *this;
     CameraRays c;
     c.width = width;
     c.height = height;
     c.per_side = 1;
-    const size_t n = static_cast<size_t>(width) * height;
-    c.origin.resize(n);
-    c.direction.resize(n);
-    c.elevation.resize(n);
-    c.exit_dz.resize(n);
-    c.pixel_rad.resize(n);
+    c.resize(static_cast<size_t>(width) * height);
     for (int row = 0; row < height; ++row)
         for (int col = 0; col < width; ++col) {
             const size_t i = static_cast<size_t>(row) * width + col, j = centre(col, row);
@@ -43,12 +46,7 @@ CameraRays camera_rays(const CompileContext& ctx, int per_side) {
     r.height = ctx.options.height;
     r.per_side = per_side;
     const int GW = r.grid_width(), GH = r.grid_height();
-    const size_t n = static_cast<size_t>(GW) * GH;
-    r.origin.resize(n);
-    r.direction.resize(n);
-    r.elevation.resize(n);
-    r.exit_dz.resize(n);
-    r.pixel_rad.resize(n);
+    r.resize(static_cast<size_t>(GW) * GH);
     const Camera& cam = ctx.camera;
     const int W = r.width, H = r.height;
     parallel_for(

@@ -42,103 +42,31 @@ double steepest_sine(const Camera& cam, int W, int H) {
     return s;
 }
 
-}  // namespace
-
-LayerStack CompileContext::rendered(const LayerStack& stack) const {
-    return gaps && stack.boundaries() > 0 ? with_gaps(stack, reference_y(stack), gap) : stack;
+/// The output folder and the image, and what the .ini names for POV-Ray
+/// (pov/emit_layers.h): the scene, the image, the include folders, the output folder among
+/// them; refused before any work if POV-Ray cannot take one.
+Status place_outputs(const CompileOptions& opt, CompileContext& ctx) {
+    const fs::path out_dir = fs::absolute(opt.out_dir.empty() ? fs::path("build/render") / ctx.name
+                                                              : fs::path(opt.out_dir));
+    ctx.out_dir = out_dir.string();
+    ctx.image = opt.image.empty() ? (out_dir / (ctx.name + ".png")).string()
+                                  : fs::absolute(opt.image).string();
+    if (auto s = check_povray_path(fs::absolute(opt.scene).string(), "the scene"); !s) return s;
+    if (auto s = check_povray_path(ctx.out_dir, "the output folder (-o)"); !s) return s;
+    if (auto s = check_povray_path(ctx.image, opt.image.empty() ? "the image" : "--image"); !s)
+        return s;
+    for (const auto& l : opt.library_paths)
+        if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s;
+    return Ok{};
 }
 
-double CompileContext::reference_y(const LayerStack& stack) const {
-    const int n = stack.boundaries();
-    if (!many_origins || n == 0) return eye_y;
-    int best = -1;
-    for (int k = 0; k <= n; ++k) {
-        if (!stack.air.empty() && stack.air[k]) continue;
-        if (best < 0 || stack.excess[k] >= stack.excess[best]) best = k;
-    }
-    const auto& h = stack.heights;
-    if (best == n) return h[n - 1] + std::max(1.0, h[n - 1]);
-    if (best == 0) return 0.5 * h[0];
-    return 0.5 * (h[best - 1] + h[best]);
-}
-
-Result<CompileContext> compile_settings(const CompileOptions& opt) {
-    if (opt.samples_per_side < 1 || opt.samples_per_side > 5)
-        return make_error("sub-pixel samples " + std::to_string(opt.samples_per_side) +
-                          " per side: must be 1 to 5");
-    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
-        return make_error("--error-map " + opt.error_map +
-                          ": the error map is written as OpenEXR, name it .exr");
-    CompileContext ctx;
-    ctx.options = opt;
-    ctx.name = fs::path(opt.scene).stem().string();
-    // What the .ini names for POV-Ray (pov/emit_layers.h): the scene, the image, the include
-    // folders, the output folder among them; refused before any work if POV-Ray cannot take
-    // one.
-    {
-        const fs::path out_dir = fs::absolute(
-            opt.out_dir.empty() ? fs::path("build/render") / ctx.name : fs::path(opt.out_dir));
-        ctx.out_dir = out_dir.string();
-        ctx.image = opt.image.empty() ? (out_dir / (ctx.name + ".png")).string()
-                                      : fs::absolute(opt.image).string();
-        if (auto s = check_povray_path(fs::absolute(opt.scene).string(), "the scene"); !s)
-            return s.error();
-        if (auto s = check_povray_path(ctx.out_dir, "the output folder (-o)"); !s) return s.error();
-        if (auto s = check_povray_path(ctx.image, opt.image.empty() ? "the image" : "--image"); !s)
-            return s.error();
-        for (const auto& l : opt.library_paths)
-            if (auto s = check_povray_path(fs::absolute(l).string(), "-L"); !s) return s.error();
-    }
-
-    // The image size, the include paths, the parse, the Mirage_ settings with the options'
-    // replacements and the camera's place: load/mirage_scene.h.
-    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
-    lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
-    lo.object_queries = tracer_object_queries();
-    lo.tolerance_px = opt.tolerance_px;
-    lo.layers = opt.layers;
-    lo.layer_count = opt.layer_count;
-    lo.clock = opt.clock;
-    lo.declares = opt.declares;
-    lo.mirage_inc = MirageIncCheck::Always;  // the layers reach POV-Ray through mirage.inc only
-    auto loaded = load_mirage_scene(lo);
-    if (!loaded) return loaded.error();
-    ctx.scene = std::move(loaded->scene);
-    // The outputs the options name may not replace a file the scene was read from: refused
-    // here, before any work (compile_scene writes them through an OutputSet of its own).
-    {
-        const OutputSet inputs(ctx.scene.files);
-        for (const std::string& named : {opt.error_map, opt.image})
-            if (!named.empty())
-                if (auto s = inputs.check(named); !s) return s.error();
-    }
-    for (const auto& p : loaded->parse_options.library_paths) {
-        ctx.library_paths.push_back(fs::absolute(p).string());
-        if (auto s = check_povray_path(ctx.library_paths.back(), "the include folder"); !s)
-            return s.error();
-    }
-    ctx.settings = loaded->settings;
-    // Heights above the atmosphere's ground from here on (scene/ground.h).
-    const double ground = ctx.settings.ground_height;
-    const Scene as_parsed = ground != 0.0 ? ctx.scene : Scene{};
-    lower_scene(ctx.scene, ground);
-    if (opt.profile) {
-        ctx.settings.profile = *opt.profile;
-        ctx.settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
-        ctx.settings.declared = true;
-    }
-
-    if (opt.profile) ctx.settings.air.reset();  // the replacement is exponential
-    const Scene& scene = ctx.scene;
-    ctx.camera = scene.camera;
-    ctx.eye_y = ctx.camera.location.y;
-    ctx.many_origins = !camera_has_one_viewpoint(ctx.camera);
-    {
-        auto footprint = pixel_footprint(ctx.camera, opt.width, opt.height);
-        if (!footprint)
-            return make_error(place_prefix(ctx.camera.loc, scene.file) + footprint.message());
-        ctx.footprint = *footprint;
-    }
+/// The camera's pixel footprint, and what the options ask of the camera that it cannot give:
+/// a corrected camera past the meshes' limit, nested layers for rays from many origins.
+Status check_camera(const CompileOptions& opt, CompileContext& ctx) {
+    auto footprint = pixel_footprint(ctx.camera, opt.width, opt.height);
+    if (!footprint)
+        return make_error(place_prefix(ctx.camera.loc, ctx.scene.file) + footprint.message());
+    ctx.footprint = *footprint;
     // The corrected camera's meshes, about 60 bytes of text and 215 bytes of POV-Ray's memory a
     // face (../studies/mesh-camera): refused past the limit before any work, with the figure.
     if (opt.camera == CameraModel::Corrected && !ctx.many_origins && ctx.settings.declared) {
@@ -154,24 +82,17 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
                 ": render smaller, or use --camera perspective");
     }
     if (ctx.many_origins && opt.layout == LayerLayout::Nested)
-        return make_error(place_prefix(ctx.camera.loc, scene.file) + "the " +
+        return make_error(place_prefix(ctx.camera.loc, ctx.scene.file) + "the " +
                           camera_type_name(ctx.camera.type) +
                           " camera's rays start at different points, inside different layers: "
                           "--layout nested needs them all in one (use gaps or auto)");
-    auto accel = SceneAccel::build(scene);
-    if (!accel) return accel.error();
-    ctx.accel = std::make_shared<const SceneAccel>(std::move(*accel));
-    // (Heights above the atmosphere's ground: the camera's against the scene as parsed.)
-    if (auto s = check_camera_above_ground(ground != 0.0 ? as_parsed : scene, ground,
-                                           [&]() -> std::optional<double> {
-                                               const Aabb& b = ctx.accel->finite_bounds();
-                                               if (b.empty()) return std::nullopt;
-                                               return b.lo.y + ground;
-                                           });
-        !s)
-        return s.error();
+    return Ok{};
+}
 
-    // The scene's horizontal extent around the camera: declared, or the objects' with a margin.
+/// The scene's horizontal extent around the camera: declared, or the objects' with a margin
+/// (what bounds it, or does not, noted in the context); with many origins, their spread added.
+double scene_extent_around_camera(const CompileOptions& opt, CompileContext& ctx) {
+    const Scene& scene = ctx.scene;
     const glm::dvec3& eye = ctx.camera.location;
     double extent = 0.0;
     if (ctx.settings.extent) {
@@ -214,72 +135,169 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
             }
         extent += spread;
     }
+    return extent;
+}
+
+/// Real air: the tracer's model, fitted for exact paths a twentieth of a pixel from the
+/// truth (the pixel check's), followed as far as the tracer follows them; on the curved Earth
+/// the layers' reach as POV-Ray's sky allows.
+Status fit_real_air(const CompileOptions& opt, CompileContext& ctx) {
+    const glm::dvec3& eye = ctx.camera.location;
+    const double extent = ctx.extent;
+    // (With many origins the pixel's angle from each origin, or its width over the
+    // paths' reach.)
+    const double reach_dz =
+        ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
+    const double px = ctx.many_origins ? ctx.footprint.angle_rad + ctx.footprint.distance / reach_dz
+                                       : pixel_angle_rad(ctx.camera, opt.width, opt.height);
+    auto air = scene_atmosphere(ctx.settings, 0.05 * ctx.settings.tolerance_px * px);
+    if (!air) return make_error(opt.scene + ": " + air.message());
+    if (air->earth_radius() > 0.0) {
+        // On the curved Earth a band ray's final direction is its direction in the
+        // flattened frame where it stops bending, which is dz / R from the eye's
+        // (curved_propagator.h): POV-Ray looks the sky up with it unturned.  The layers
+        // reach just past the scene, so that angle stays below 1.1 extent / R.
+        const double near = 1.1 * extent;
+        // The layers below the camera's may reach as far as on flat ground: a camera ray
+        // that turns in them beyond the scene (one that skims a layer just under its
+        // index) would otherwise leave them still going down, and POV-Ray's straight ray
+        // meet the ground there instead of turning up to the sky; it stops bending where
+        // it rises past the camera's layer.
+        ctx.layers_below_box = ctx.layers_box;
+        ctx.layers_box = {eye.x - near, eye.x + near, eye.z - near, eye.z + near};
+        const double R = air->earth_radius();
+        if (near > kMaxCurvedSkyRad * R) {
+            const double km = ctx.settings.unit_m / 1000.0;
+            return make_error(
+                opt.scene + ": on the curved Earth POV-Ray sees the sky up to " +
+                "the layers' reach over the Earth's radius off (" + sig(near * km, 3) + " km / " +
+                shortest(R * km) + " km = " + sig(1e3 * near / R, 3) + " mrad), more than the " +
+                shortest(1e3 * kMaxCurvedSkyRad) +
+                " mrad bands allow: render it with mirage trace, or declare Mirage_Extent "
+                "of at most " +
+                shortest(std::floor(kMaxCurvedSkyRad * R / 1.1)) +
+                " (scene units), or Mirage_Earth_Radius = 0 for flat ground");
+        }
+    }
+    ctx.air = std::make_shared<const Atmosphere>(std::move(*air));
+    ctx.air_max_dz =
+        ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
+    return Ok{};
+}
+
+/// The layout: nested planes, or slabs with gaps where the index steps are so small that
+/// POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
+bool uses_gaps(const CompileOptions& opt, const CompileContext& ctx) {
+    // Rays from many origins start inside different layers: POV-Ray builds each one's list of
+    // interiors in its bounding tree's order, which only the gap layout's disjoint slabs (one
+    // interior at any point) make right.
+    if (opt.layout == LayerLayout::Gaps || ctx.many_origins) return true;
+    if (opt.layout) return false;
+    // Real air: its index changes by a few 1e-4 at most over the heights a scene sees (the
+    // flattened profile's n* grows by 1.6e-4 per km on the curved Earth).
+    if (ctx.air) return true;
+    return std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
+}
+
+}  // namespace
+
+LayerStack CompileContext::rendered(const LayerStack& stack) const {
+    return gaps && stack.boundaries() > 0 ? with_gaps(stack, reference_y(stack), gap) : stack;
+}
+
+double CompileContext::reference_y(const LayerStack& stack) const {
+    const int n = stack.boundaries();
+    if (!many_origins || n == 0) return eye_y;
+    int best = -1;
+    for (int k = 0; k <= n; ++k) {
+        if (!stack.air.empty() && stack.air[k]) continue;
+        if (best < 0 || stack.excess[k] >= stack.excess[best]) best = k;
+    }
+    const auto& h = stack.heights;
+    if (best == n) return h[n - 1] + std::max(1.0, h[n - 1]);
+    if (best == 0) return 0.5 * h[0];
+    return 0.5 * (h[best - 1] + h[best]);
+}
+
+Result<CompileContext> compile_settings(const CompileOptions& opt) {
+    if (opt.samples_per_side < 1 || opt.samples_per_side > 5)
+        return make_error("sub-pixel samples " + std::to_string(opt.samples_per_side) +
+                          " per side: must be 1 to 5");
+    if (!opt.error_map.empty() && fs::path(opt.error_map).extension() != ".exr")
+        return make_error("--error-map " + opt.error_map +
+                          ": the error map is written as OpenEXR, name it .exr");
+    CompileContext ctx;
+    ctx.options = opt;
+    ctx.name = fs::path(opt.scene).stem().string();
+    if (auto s = place_outputs(opt, ctx); !s) return s.error();
+
+    // The image size, the include paths, the parse, the Mirage_ settings with the options'
+    // replacements and the camera's place: load/mirage_scene.h.
+    SceneLoadOptions lo = scene_load_options(opt);
+    lo.strict = false;  // the compiler needs the camera, the atmosphere and the extent only
+    lo.object_queries = tracer_object_queries();
+    lo.tolerance_px = opt.tolerance_px;
+    lo.layers = opt.layers;
+    lo.layer_count = opt.layer_count;
+    lo.clock = opt.clock;
+    lo.declares = opt.declares;
+    lo.mirage_inc = MirageIncCheck::Always;  // the layers reach POV-Ray through mirage.inc only
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    ctx.scene = std::move(loaded->scene);
+    // The outputs the options name may not replace a file the scene was read from: refused
+    // here, before any work (compile_scene writes them through an OutputSet of its own).
+    {
+        const OutputSet inputs(ctx.scene.files);
+        for (const std::string& named : {opt.error_map, opt.image})
+            if (!named.empty())
+                if (auto s = inputs.check(named); !s) return s.error();
+    }
+    for (const auto& p : loaded->parse_options.library_paths) {
+        ctx.library_paths.push_back(fs::absolute(p).string());
+        if (auto s = check_povray_path(ctx.library_paths.back(), "the include folder"); !s)
+            return s.error();
+    }
+    ctx.settings = loaded->settings;
+    // Heights above the atmosphere's ground from here on (scene/ground.h).
+    const double ground = ctx.settings.ground_height;
+    const Scene as_parsed = ground != 0.0 ? ctx.scene : Scene{};
+    lower_scene(ctx.scene, ground);
+    if (opt.profile) {
+        ctx.settings.profile = *opt.profile;
+        ctx.settings.profile_label = opt.profile_label.empty() ? "replaced" : opt.profile_label;
+        ctx.settings.declared = true;
+    }
+
+    if (opt.profile) ctx.settings.air.reset();  // the replacement is exponential
+    const Scene& scene = ctx.scene;
+    ctx.camera = scene.camera;
+    ctx.eye_y = ctx.camera.location.y;
+    ctx.many_origins = !camera_has_one_viewpoint(ctx.camera);
+    if (auto s = check_camera(opt, ctx); !s) return s.error();
+    auto accel = SceneAccel::build(scene);
+    if (!accel) return accel.error();
+    ctx.accel = std::make_shared<const SceneAccel>(std::move(*accel));
+    // (Heights above the atmosphere's ground: the camera's against the scene as parsed.)
+    if (auto s = check_camera_above_ground(ground != 0.0 ? as_parsed : scene, ground,
+                                           [&]() -> std::optional<double> {
+                                               const Aabb& b = ctx.accel->finite_bounds();
+                                               if (b.empty()) return std::nullopt;
+                                               return b.lo.y + ground;
+                                           });
+        !s)
+        return s.error();
+
+    const glm::dvec3& eye = ctx.camera.location;
+    const double extent = scene_extent_around_camera(opt, ctx);
     ctx.extent = extent;
     ctx.scene_box = {eye.x - extent, eye.x + extent, eye.z - extent, eye.z + extent};
     const double reach = kLayersExtentFactor * extent;
     ctx.layers_box = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
 
     ctx.profile = profile_in_scene_units(ctx.settings);
-    if (ctx.settings.air) {
-        // Real air: the tracer's model, fitted for exact paths a twentieth of a pixel from the
-        // truth (the pixel check's), followed as far as the tracer follows them.
-        // (With many origins the pixel's angle from each origin, or its width over the
-        // paths' reach.)
-        const double reach_dz =
-            ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
-        const double px = ctx.many_origins
-                              ? ctx.footprint.angle_rad + ctx.footprint.distance / reach_dz
-                              : pixel_angle_rad(ctx.camera, opt.width, opt.height);
-        auto air = scene_atmosphere(ctx.settings, 0.05 * ctx.settings.tolerance_px * px);
-        if (!air) return make_error(opt.scene + ": " + air.message());
-        if (air->earth_radius() > 0.0) {
-            // On the curved Earth a band ray's final direction is its direction in the
-            // flattened frame where it stops bending, which is dz / R from the eye's
-            // (curved_propagator.h): POV-Ray looks the sky up with it unturned.  The layers
-            // reach just past the scene, so that angle stays below 1.1 extent / R.
-            const double near = 1.1 * extent;
-            // The layers below the camera's may reach as far as on flat ground: a camera ray
-            // that turns in them beyond the scene (one that skims a layer just under its
-            // index) would otherwise leave them still going down, and POV-Ray's straight ray
-            // meet the ground there instead of turning up to the sky; it stops bending where
-            // it rises past the camera's layer.
-            ctx.layers_below_box = ctx.layers_box;
-            ctx.layers_box = {eye.x - near, eye.x + near, eye.z - near, eye.z + near};
-            const double R = air->earth_radius();
-            if (near > kMaxCurvedSkyRad * R) {
-                const double km = ctx.settings.unit_m / 1000.0;
-                return make_error(
-                    opt.scene + ": on the curved Earth POV-Ray sees the sky up to " +
-                    "the layers' reach over the Earth's radius off (" + sig(near * km, 3) +
-                    " km / " + shortest(R * km) + " km = " + sig(1e3 * near / R, 3) +
-                    " mrad), more than the " + shortest(1e3 * kMaxCurvedSkyRad) +
-                    " mrad bands allow: render it with mirage trace, or declare Mirage_Extent "
-                    "of at most " +
-                    shortest(std::floor(kMaxCurvedSkyRad * R / 1.1)) +
-                    " (scene units), or Mirage_Earth_Radius = 0 for flat ground");
-            }
-        }
-        ctx.air = std::make_shared<const Atmosphere>(std::move(*air));
-        ctx.air_max_dz =
-            ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
-    }
-    // The layout: nested planes, or slabs with gaps where the index steps are so small that
-    // POV-Ray's single-precision ior quotients would swamp them (see pov/emit_layers.h).
-    if (opt.layout == LayerLayout::Gaps || ctx.many_origins) {
-        // Rays from many origins start inside different layers: POV-Ray builds each one's
-        // list of interiors in its bounding tree's order, which only the gap layout's
-        // disjoint slabs (one interior at any point) make right.
-        ctx.gaps = true;
-    } else if (!opt.layout) {
-        if (ctx.air) {
-            // Real air: its index changes by a few 1e-4 at most over the heights a scene
-            // sees (the flattened profile's n* grows by 1.6e-4 per km on the curved Earth).
-            ctx.gaps = true;
-        } else {
-            ctx.gaps =
-                std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
-        }
-    }
+    if (auto s = ctx.settings.air ? fit_real_air(opt, ctx) : Status(Ok{}); !s) return s.error();
+    ctx.gaps = uses_gaps(opt, ctx);
     // Gaps thick enough that POV-Ray sees both of their faces along the steepest camera ray
     // (it ignores hits closer than MIN_ISECT_DEPTH = 1e-4 units to a ray's origin).
     ctx.steepest_sine = steepest_sine(ctx.camera, opt.width, opt.height);

@@ -52,7 +52,7 @@ inline constexpr double kMaxCurvedSkyRad = 1e-3;
 struct CompileContext {
     CompileOptions options;
     Scene scene;
-    AtmosphereSettings settings;
+    MirageSettings settings;
     Profile profile;  // in scene units
     // Real air (a sounding, the temperature forms, the curved Earth): the general engine's
     // model in scene units (the flattened profile n* on the curved Earth), which the layers
@@ -114,6 +114,8 @@ struct CameraRays {
     int grid_width() const { return width * per_side; }
     int grid_height() const { return height * per_side; }
     size_t size() const { return direction.size(); }
+    /// Room for n rays in each of the per-ray arrays.
+    void resize(size_t n);
     /// The grid index of the sample at the centre of pixel (col, row) (per_side odd), or of
     /// the sample nearest to it.
     size_t centre(int col, int row) const;

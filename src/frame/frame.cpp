@@ -427,15 +427,258 @@ bool mirrored_from(double distance, double vanishing, double farthest) {
     return std::isfinite(vanishing) && distance >= vanishing && distance <= farthest;
 }
 
+/// Lenses: the scene's angle and narrower ones, the same exact rays per row.
+void try_lenses(const Atmosphere& atmosphere, const FrameView& view, FrameReading& f) {
+    const double angle = camera_angle_deg(view.camera);
+    std::vector<double> angles = {angle};
+    for (double a : {60.0, 40.0, 20.0, 10.0, 5.0, 2.0, 1.0, 0.5})
+        if (a < 0.99 * angle) angles.push_back(a);
+    for (double a : angles) {
+        FrameView v = view;
+        v.camera = with_angle(view.camera, a);
+        const ColumnReading c = read_column(atmosphere, v);
+        f.lenses.push_back(
+            {a, c.turning_low.count, c.turning_low_in_reach.count, c.turning_high.count});
+    }
+}
+
+/// Camera heights: the scene's and lower ones.
+void try_heights(const Atmosphere& atmosphere, const FrameView& view, double unit_m,
+                 FrameReading& f) {
+    const double R = atmosphere.earth_radius();
+    const double eye_m = view.camera.location.y * unit_m;
+    std::vector<double> heights_m = {eye_m};
+    for (double h : {1.0, 0.5, 0.3, 0.2, 0.1})
+        if (h < 0.95 * eye_m) heights_m.push_back(h);
+    for (double h_m : heights_m) {
+        FrameView v = view;
+        v.camera.location.y = h_m / unit_m;
+        v.eye_y = flattened_height(v.camera.location.y, R);
+        HeightOption o;
+        o.eye_height = v.camera.location.y;
+        o.apparent_depression_rad = -grazing_elevation(atmosphere, v.eye_y);
+        o.ground_ends = std::isfinite(o.apparent_depression_rad)
+                            ? turn_to_height_distance(atmosphere, 0.0, v.eye_y)
+                            : kNaN;
+        o.band_rows = read_column(atmosphere, v).turning_low.count;
+        for (const ObjectReading& r : f.objects) {
+            auto reach = r.top > 0.0 ? mirror_reach(atmosphere, v.eye_y, r.top)
+                                     : Result<MirrorReach>(make_error("below the ground"));
+            o.vanishing.push_back(reach ? reach->nearest : kNaN);
+        }
+        f.heights.push_back(o);
+    }
+}
+
+/// Distances: for each object without a mirrored image, where it would have the tallest.
+void try_distances(const Atmosphere& atmosphere, const FrameView& view, FrameReading& f) {
+    for (int k = 0; k < static_cast<int>(f.objects.size()); ++k) {
+        const ObjectReading& r = f.objects[k];
+        if (seen(r.mirrored, f.pixel_rad) || !std::isfinite(r.vanishing)) continue;
+        const double near = 1.02 * r.vanishing, far = std::min(r.farthest, 4.0 * r.vanishing);
+        DistanceOption best;
+        best.object = k;
+        constexpr int kTries = 8;
+        for (int i = 0; i <= kTries; ++i) {
+            const double d = near * std::pow(far / near, double(i) / kTries);
+            const ImageSpan m = mirrored_image_at(atmosphere, view, r.object, d);
+            if (m.visible && (!best.mirrored.visible ||
+                              m.angular_size_rad() > best.mirrored.angular_size_rad())) {
+                best.distance = d;
+                best.mirrored = m;
+            }
+        }
+        if (best.mirrored.visible) f.distances.push_back(best);
+    }
+}
+
+/// Exaggerations (not air), times the scene's own: weaker and stronger.
+void try_exaggerations(const MirageSettings& settings, double tolerance_rad, const FrameView& view,
+                       FrameReading& f) {
+    for (double k :
+         {0.001, 0.003, 0.01, 0.03, 0.1, 0.3, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0}) {
+        MirageSettings s = settings;
+        if (!exaggerate_atmosphere(s, k, "exaggeration")) continue;
+        auto air = scene_atmosphere(s, tolerance_rad);
+        if (!air) continue;
+        ExaggerationOption o;
+        o.factor = s.exaggeration;
+        o.apparent_depression_rad = -grazing_elevation(*air, view.eye_y);
+        o.apparent_row = elevation_row(view, -o.apparent_depression_rad);
+        const ColumnReading c = read_column(*air, view);
+        o.band_rows = c.turning_low.count;
+        o.band_rows_in_reach = c.turning_low_in_reach.count;
+        for (const ObjectReading& r : f.objects) {
+            auto reach = r.top > 0.0 ? mirror_reach(*air, view.eye_y, r.top)
+                                     : Result<MirrorReach>(make_error("below the ground"));
+            o.vanishing.push_back(reach ? reach->nearest : kNaN);
+            o.farthest.push_back(reach ? reach->farthest : kNaN);
+            if (reach && mirrored_from(r.distance, reach->nearest, reach->farthest))
+                ++o.mirrored_objects;
+        }
+        f.exaggerations.push_back(o);
+    }
+}
+
+/// The advice on the inferior mirage's band: where it lies, and the lens that shows it
+/// `target` rows tall (returned; null when the band is tall enough, or without an inferior
+/// mirage).
+const LensOption* advise_band(const FrameView& view, double u,
+                              const std::vector<const ExaggerationOption*>& by_change, int target,
+                              FrameReading& f) {
+    const double deg = 180.0 / kPi, angle = camera_angle_deg(view.camera);
+    auto& advice = f.advice;
+    const LensOption* lens = nullptr;  // the widest angle that shows the band to the target
+    if (f.inferior) {
+        if (std::isfinite(f.ground_ends) && f.ground_ends > view.reach)
+            advice.push_back("in this air the mirage lies within " +
+                             sig(-f.apparent_horizon_rad * deg, 3) +
+                             " deg below the horizon, and only what stands beyond about " +
+                             metres(f.ground_ends, u) +
+                             " (where the grazing ray touches the ground) can be mirrored whole; "
+                             "the scene reaches " +
+                             metres(view.reach, u));
+        if (f.apparent_horizon_row > view.height) {
+            std::string s = "the apparent horizon lies below the frame (row " +
+                            sig(f.apparent_horizon_row, 4) + " of " + std::to_string(view.height) +
+                            "): the ground shows only within " + metres(f.ground_ends, u) +
+                            " and all below the horizon is mirrored sky";
+            for (const ExaggerationOption* e : by_change)
+                if (e->factor < f.exaggeration && e->apparent_row < 0.9 * view.height &&
+                    e->apparent_row > f.true_horizon_row + 2.0) {
+                    s += "; with Mirage_Exaggeration = " + shortest(e->factor) +
+                         " (not air) it would be at row " + sig(e->apparent_row, 4) + ", " +
+                         sig(e->apparent_depression_rad * deg, 3) + " deg below the horizon";
+                    break;
+                }
+            advice.push_back(s);
+        }
+        const int rows = f.column.turning_low.count;
+        if (rows < target) {
+            for (const LensOption& l : f.lenses) {
+                lens = &l;
+                if (l.band_rows >= target) break;
+            }
+            std::string s = "the mirage band is " + std::to_string(rows) + " rows tall at angle " +
+                            sig(angle, 3);
+            if (lens && lens->angle_deg != angle)
+                s += "; with angle " + sig(lens->angle_deg, 3) + " it would be " +
+                     std::to_string(lens->band_rows) + " rows (camera { ... angle " +
+                     sig(lens->angle_deg, 3) + " })";
+            advice.push_back(s);
+        }
+    }
+    return lens;
+}
+
+/// The advice on each object without a mirrored image: move it, lower the camera, or change
+/// the air's strength.
+void advise_objects(const FrameView& view, double u,
+                    const std::vector<const ExaggerationOption*>& by_change, const LensOption* lens,
+                    FrameReading& f) {
+    const double deg = 180.0 / kPi, angle = camera_angle_deg(view.camera);
+    auto& advice = f.advice;
+    auto exaggeration_advice = [&](int k, const ObjectReading& r) {
+        for (const ExaggerationOption* e : by_change)
+            if (mirrored_from(r.distance, e->vanishing[k], e->farthest[k])) {
+                advice.push_back(
+                    "  or change the air's strength (not air): with "
+                    "Mirage_Exaggeration = " +
+                    shortest(e->factor) + " its top is mirrored from " +
+                    metres(e->vanishing[k], u) + " to " + metres(e->farthest[k], u) +
+                    " and the band is " + std::to_string(e->band_rows) + " rows");
+                return;
+            }
+    };
+    const double lens_pixel_rad =
+        lens ? pixel_angle_rad(with_angle(view.camera, lens->angle_deg), view.width, view.height)
+             : f.pixel_rad;
+    for (int k = 0; k < static_cast<int>(f.objects.size()); ++k) {
+        const ObjectReading& r = f.objects[k];
+        if (seen(r.mirrored, f.pixel_rad) || !std::isfinite(r.vanishing)) continue;
+        const std::string name = short_name(r.object);
+        std::string s = name + " is " + metres(r.distance, u) +
+                        " away; the mirrored image of its " + metres(r.top, u) + " top " +
+                        (r.distance < r.vanishing ? "vanishes nearer than " + metres(r.vanishing, u)
+                                                  : "is lost beyond " + metres(r.farthest, u));
+        advice.push_back(s);
+        if (r.distance > r.farthest) {
+            // Too far: the turned rays pass above it.  Nearer, within its range.
+            for (const DistanceOption& d : f.distances)
+                if (d.object == k)
+                    advice.push_back("  move it nearer, to " + metres(d.distance, u) +
+                                     ": its mirrored image would be " +
+                                     sig(d.mirrored.angular_size_rad() * deg, 3) + " deg, " +
+                                     sig(d.mirrored.angular_size_rad() / f.pixel_rad, 3) +
+                                     " rows tall");
+            exaggeration_advice(k, r);
+            continue;
+        }
+        // Lower the camera: the highest of the lower heights that brings the vanishing distance
+        // below the object's distance, else the lowest tried (an eye at the top's own height
+        // sees it along rays that turn at once, a sliver at the horizon: not counted).
+        const HeightOption* pick = nullptr;
+        for (size_t i = 1; i < f.heights.size(); ++i) {
+            if (std::abs(f.heights[i].eye_height - r.top) < 0.1 * r.top) continue;
+            if (!std::isfinite(f.heights[i].vanishing[k])) continue;
+            pick = &f.heights[i];
+            if (f.heights[i].vanishing[k] <= r.distance) break;
+        }
+        if (pick && pick->vanishing[k] < r.vanishing)
+            advice.push_back("  lower the camera to " + metres(pick->eye_height, u) +
+                             ": the mirrored image of its top vanishes nearer than " +
+                             metres(pick->vanishing[k], u) + " instead of " +
+                             metres(r.vanishing, u));
+        for (const DistanceOption& d : f.distances)
+            if (d.object == k) {
+                std::string s = "  move it to " + metres(d.distance, u) +
+                                " from the camera: its mirrored image would be " +
+                                sig(d.mirrored.angular_size_rad() * deg, 3) + " deg, " +
+                                sig(d.mirrored.rows(), 3) + " rows tall";
+                if (lens && lens->angle_deg != angle)
+                    s += " (" + sig(d.mirrored.angular_size_rad() / lens_pixel_rad, 3) +
+                         " rows with angle " + sig(lens->angle_deg, 3) + ")";
+                advice.push_back(s);
+            }
+        exaggeration_advice(k, r);
+    }
+}
+
+/// The advice, in sentences with the figures of the options tried.
+void advise(const FrameView& view, double unit_m, FrameReading& f) {
+    // The factors nearest 1 first: the least change that does it.
+    std::vector<const ExaggerationOption*> by_change;
+    for (const ExaggerationOption& e : f.exaggerations) by_change.push_back(&e);
+    std::stable_sort(by_change.begin(), by_change.end(), [&](auto* a, auto* b) {
+        return std::abs(std::log(a->factor / f.exaggeration)) <
+               std::abs(std::log(b->factor / f.exaggeration));
+    });
+    const int target = std::max(8, view.height / 12);
+    const LensOption* lens = advise_band(view, unit_m, by_change, target, f);
+    advise_objects(view, unit_m, by_change, lens, f);
+    const double angle = camera_angle_deg(view.camera);
+    if (f.superior && f.column.turning_high.count < target) {
+        const LensOption* pick = nullptr;
+        for (const LensOption& l : f.lenses) {
+            pick = &l;
+            if (l.lifted_rows >= target) break;
+        }
+        if (pick && pick->angle_deg != angle)
+            f.advice.push_back("the lifted rows are " +
+                               std::to_string(f.column.turning_high.count) + "; with angle " +
+                               sig(pick->angle_deg, 3) + " they would be " +
+                               std::to_string(pick->lifted_rows));
+    }
+}
+
 }  // namespace
 
 Result<FrameReading> frame_scene(const FrameOptions& options) {
-    SceneLoadOptions lo =
-        scene_load_options(options.scene, options.width, options.height, options.library_paths);
+    SceneLoadOptions lo = scene_load_options(options);
     lo.strict = false;  // the objects' boxes are enough
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
-    const AtmosphereSettings& settings = loaded->settings;
+    const MirageSettings& settings = loaded->settings;
     Scene& scene = loaded->scene;
     if (scene.camera.type != CameraType::Perspective)
         return make_error(place_prefix(scene.camera.loc, scene.file) +
@@ -496,220 +739,17 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
     for (const FrameObject& o : *objects) f.objects.push_back(read_object(*atmosphere, view, o));
     if (!options.advise) return f;
 
-    // Lenses: the scene's angle and narrower ones, the same exact rays per row.
-    const double angle = camera_angle_deg(scene.camera);
-    std::vector<double> angles = {angle};
-    for (double a : {60.0, 40.0, 20.0, 10.0, 5.0, 2.0, 1.0, 0.5})
-        if (a < 0.99 * angle) angles.push_back(a);
-    for (double a : angles) {
-        FrameView v = view;
-        v.camera = with_angle(scene.camera, a);
-        const ColumnReading c = read_column(*atmosphere, v);
-        f.lenses.push_back(
-            {a, c.turning_low.count, c.turning_low_in_reach.count, c.turning_high.count});
-    }
-    // Camera heights: the scene's and lower ones.
-    const double eye_m = scene.camera.location.y * settings.unit_m;
-    std::vector<double> heights_m = {eye_m};
-    for (double h : {1.0, 0.5, 0.3, 0.2, 0.1})
-        if (h < 0.95 * eye_m) heights_m.push_back(h);
-    for (double h_m : heights_m) {
-        FrameView v = view;
-        v.camera.location.y = h_m / settings.unit_m;
-        v.eye_y = flattened_height(v.camera.location.y, R);
-        HeightOption o;
-        o.eye_height = v.camera.location.y;
-        o.apparent_depression_rad = -grazing_elevation(*atmosphere, v.eye_y);
-        o.ground_ends = std::isfinite(o.apparent_depression_rad)
-                            ? turn_to_height_distance(*atmosphere, 0.0, v.eye_y)
-                            : kNaN;
-        o.band_rows = read_column(*atmosphere, v).turning_low.count;
-        for (const ObjectReading& r : f.objects) {
-            auto reach = r.top > 0.0 ? mirror_reach(*atmosphere, v.eye_y, r.top)
-                                     : Result<MirrorReach>(make_error("below the ground"));
-            o.vanishing.push_back(reach ? reach->nearest : kNaN);
-        }
-        f.heights.push_back(o);
-    }
-    // Distances: for each object without a mirrored image, where it would have the tallest.
-    for (int k = 0; k < static_cast<int>(f.objects.size()); ++k) {
-        const ObjectReading& r = f.objects[k];
-        if (seen(r.mirrored, f.pixel_rad) || !std::isfinite(r.vanishing)) continue;
-        const double near = 1.02 * r.vanishing, far = std::min(r.farthest, 4.0 * r.vanishing);
-        DistanceOption best;
-        best.object = k;
-        constexpr int kTries = 8;
-        for (int i = 0; i <= kTries; ++i) {
-            const double d = near * std::pow(far / near, double(i) / kTries);
-            const ImageSpan m = mirrored_image_at(*atmosphere, view, r.object, d);
-            if (m.visible && (!best.mirrored.visible ||
-                              m.angular_size_rad() > best.mirrored.angular_size_rad())) {
-                best.distance = d;
-                best.mirrored = m;
-            }
-        }
-        if (best.mirrored.visible) f.distances.push_back(best);
-    }
-    // Exaggerations (not air), times the scene's own: weaker and stronger.
-    for (double k :
-         {0.001, 0.003, 0.01, 0.03, 0.1, 0.3, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0}) {
-        AtmosphereSettings s = settings;
-        if (!exaggerate_atmosphere(s, k, "exaggeration")) continue;
-        auto air = scene_atmosphere(s, tolerance_rad);
-        if (!air) continue;
-        ExaggerationOption o;
-        o.factor = s.exaggeration;
-        o.apparent_depression_rad = -grazing_elevation(*air, view.eye_y);
-        o.apparent_row = elevation_row(view, -o.apparent_depression_rad);
-        const ColumnReading c = read_column(*air, view);
-        o.band_rows = c.turning_low.count;
-        o.band_rows_in_reach = c.turning_low_in_reach.count;
-        for (const ObjectReading& r : f.objects) {
-            auto reach = r.top > 0.0 ? mirror_reach(*air, view.eye_y, r.top)
-                                     : Result<MirrorReach>(make_error("below the ground"));
-            o.vanishing.push_back(reach ? reach->nearest : kNaN);
-            o.farthest.push_back(reach ? reach->farthest : kNaN);
-            if (reach && mirrored_from(r.distance, reach->nearest, reach->farthest))
-                ++o.mirrored_objects;
-        }
-        f.exaggerations.push_back(o);
-    }
-
-    // The advice, in sentences with the figures above.
-    const double deg = 180.0 / kPi, u = settings.unit_m;
-    auto& advice = f.advice;
-    // The factors nearest 1 first: the least change that does it.
-    std::vector<const ExaggerationOption*> by_change;
-    for (const ExaggerationOption& e : f.exaggerations) by_change.push_back(&e);
-    std::stable_sort(by_change.begin(), by_change.end(), [&](auto* a, auto* b) {
-        return std::abs(std::log(a->factor / f.exaggeration)) <
-               std::abs(std::log(b->factor / f.exaggeration));
-    });
-    auto exaggeration_advice = [&](int k, const ObjectReading& r) {
-        for (const ExaggerationOption* e : by_change)
-            if (mirrored_from(r.distance, e->vanishing[k], e->farthest[k])) {
-                advice.push_back(
-                    "  or change the air's strength (not air): with "
-                    "Mirage_Exaggeration = " +
-                    shortest(e->factor) + " its top is mirrored from " +
-                    metres(e->vanishing[k], u) + " to " + metres(e->farthest[k], u) +
-                    " and the band is " + std::to_string(e->band_rows) + " rows");
-                return;
-            }
-    };
-    const int target = std::max(8, options.height / 12);
-    const LensOption* lens = nullptr;  // the widest angle that shows the band to the target
-    if (f.inferior) {
-        if (std::isfinite(f.ground_ends) && f.ground_ends > view.reach)
-            advice.push_back("in this air the mirage lies within " +
-                             sig(-f.apparent_horizon_rad * deg, 3) +
-                             " deg below the horizon, and only what stands beyond about " +
-                             metres(f.ground_ends, u) +
-                             " (where the grazing ray touches the ground) can be mirrored whole; "
-                             "the scene reaches " +
-                             metres(view.reach, u));
-        if (f.apparent_horizon_row > options.height) {
-            std::string s = "the apparent horizon lies below the frame (row " +
-                            sig(f.apparent_horizon_row, 4) + " of " +
-                            std::to_string(options.height) + "): the ground shows only within " +
-                            metres(f.ground_ends, u) + " and all below the horizon is mirrored sky";
-            for (const ExaggerationOption* e : by_change)
-                if (e->factor < f.exaggeration && e->apparent_row < 0.9 * options.height &&
-                    e->apparent_row > f.true_horizon_row + 2.0) {
-                    s += "; with Mirage_Exaggeration = " + shortest(e->factor) +
-                         " (not air) it would be at row " + sig(e->apparent_row, 4) + ", " +
-                         sig(e->apparent_depression_rad * deg, 3) + " deg below the horizon";
-                    break;
-                }
-            advice.push_back(s);
-        }
-        const int rows = f.column.turning_low.count;
-        if (rows < target) {
-            for (const LensOption& l : f.lenses) {
-                lens = &l;
-                if (l.band_rows >= target) break;
-            }
-            std::string s = "the mirage band is " + std::to_string(rows) + " rows tall at angle " +
-                            sig(angle, 3);
-            if (lens && lens->angle_deg != angle)
-                s += "; with angle " + sig(lens->angle_deg, 3) + " it would be " +
-                     std::to_string(lens->band_rows) + " rows (camera { ... angle " +
-                     sig(lens->angle_deg, 3) + " })";
-            advice.push_back(s);
-        }
-    }
-    const double lens_pixel_rad = lens ? pixel_angle_rad(with_angle(scene.camera, lens->angle_deg),
-                                                         options.width, options.height)
-                                       : f.pixel_rad;
-    for (int k = 0; k < static_cast<int>(f.objects.size()); ++k) {
-        const ObjectReading& r = f.objects[k];
-        if (seen(r.mirrored, f.pixel_rad) || !std::isfinite(r.vanishing)) continue;
-        const std::string name = short_name(r.object);
-        std::string s = name + " is " + metres(r.distance, u) +
-                        " away; the mirrored image of its " + metres(r.top, u) + " top " +
-                        (r.distance < r.vanishing ? "vanishes nearer than " + metres(r.vanishing, u)
-                                                  : "is lost beyond " + metres(r.farthest, u));
-        advice.push_back(s);
-        if (r.distance > r.farthest) {
-            // Too far: the turned rays pass above it.  Nearer, within its range.
-            for (const DistanceOption& d : f.distances)
-                if (d.object == k)
-                    advice.push_back("  move it nearer, to " + metres(d.distance, u) +
-                                     ": its mirrored image would be " +
-                                     sig(d.mirrored.angular_size_rad() * deg, 3) + " deg, " +
-                                     sig(d.mirrored.angular_size_rad() / f.pixel_rad, 3) +
-                                     " rows tall");
-            exaggeration_advice(k, r);
-            continue;
-        }
-        // Lower the camera: the highest of the lower heights that brings the vanishing distance
-        // below the object's distance, else the lowest tried (an eye at the top's own height
-        // sees it along rays that turn at once, a sliver at the horizon: not counted).
-        const HeightOption* pick = nullptr;
-        for (size_t i = 1; i < f.heights.size(); ++i) {
-            if (std::abs(f.heights[i].eye_height - r.top) < 0.1 * r.top) continue;
-            if (!std::isfinite(f.heights[i].vanishing[k])) continue;
-            pick = &f.heights[i];
-            if (f.heights[i].vanishing[k] <= r.distance) break;
-        }
-        if (pick && pick->vanishing[k] < r.vanishing)
-            advice.push_back("  lower the camera to " + metres(pick->eye_height, u) +
-                             ": the mirrored image of its top vanishes nearer than " +
-                             metres(pick->vanishing[k], u) + " instead of " +
-                             metres(r.vanishing, u));
-        for (const DistanceOption& d : f.distances)
-            if (d.object == k) {
-                std::string s = "  move it to " + metres(d.distance, u) +
-                                " from the camera: its mirrored image would be " +
-                                sig(d.mirrored.angular_size_rad() * deg, 3) + " deg, " +
-                                sig(d.mirrored.rows(), 3) + " rows tall";
-                if (lens && lens->angle_deg != angle)
-                    s += " (" + sig(d.mirrored.angular_size_rad() / lens_pixel_rad, 3) +
-                         " rows with angle " + sig(lens->angle_deg, 3) + ")";
-                advice.push_back(s);
-            }
-        exaggeration_advice(k, r);
-    }
-    if (f.superior && f.column.turning_high.count < target) {
-        const LensOption* pick = nullptr;
-        for (const LensOption& l : f.lenses) {
-            pick = &l;
-            if (l.lifted_rows >= target) break;
-        }
-        if (pick && pick->angle_deg != angle)
-            advice.push_back("the lifted rows are " + std::to_string(f.column.turning_high.count) +
-                             "; with angle " + sig(pick->angle_deg, 3) + " they would be " +
-                             std::to_string(pick->lifted_rows));
-    }
+    try_lenses(*atmosphere, view, f);
+    try_heights(*atmosphere, view, settings.unit_m, f);
+    try_distances(*atmosphere, view, f);
+    try_exaggerations(settings, tolerance_rad, view, f);
+    advise(view, settings.unit_m, f);
     return f;
 }
 
 Result<Image> frame_background(const FrameOptions& options) {
     TraceOptions t;
-    t.scene = options.scene;
-    t.width = options.width;
-    t.height = options.height;
-    t.library_paths = options.library_paths;
+    t.input() = options.input();
     t.progress = false;
     auto traced = trace_scene(t);
     if (!traced) return traced.error();

@@ -23,6 +23,7 @@
 #include "load/atmosphere_settings.h"
 #include "scene/scene.h"
 #include "util/result.h"
+#include "util/scene_input.h"
 
 namespace mirage {
 
@@ -185,10 +186,7 @@ struct FrameReading {
     std::vector<std::string> advice;  // sentences with figures
 };
 
-struct FrameOptions {
-    std::string scene;
-    int width = 320, height = 240;
-    std::vector<std::string> library_paths;
+struct FrameOptions : SceneInput {
     bool advise = true;  // compute the lens, height, distance and exaggeration options
 };
 

@@ -111,28 +111,30 @@ Image quantize_srgb8(const Image& linear) {
     return out;
 }
 
-Status write_png(const Image& linear, const std::string& path, OutputSet* outputs) {
-    if (auto s = check_image(linear, path); !s) return s;
-    std::vector<std::uint8_t> bytes(linear.pixels.size());
-    for (std::size_t i = 0; i < linear.pixels.size(); ++i) {
-        bytes[i] = encode_srgb8(linear.pixels[i]);
-    }
-    OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::UINT8);
+namespace {
+
+/// An 8-bit sRGB PNG of the image, each value turned into its byte by `encode`.
+template <class Encode>
+Status write_png_bytes(const Image& image, const std::string& path, OutputSet* outputs,
+                       Encode encode) {
+    if (auto s = check_image(image, path); !s) return s;
+    std::vector<std::uint8_t> bytes(image.pixels.size());
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) bytes[i] = encode(image.pixels[i]);
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("Software", "mirage");
     return write_through_temporary(path, "png", spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
 }
 
+}  // namespace
+
+Status write_png(const Image& linear, const std::string& path, OutputSet* outputs) {
+    return write_png_bytes(linear, path, outputs, [](float v) { return encode_srgb8(v); });
+}
+
 Status write_png_codes(const Image& codes, const std::string& path, OutputSet* outputs) {
-    if (auto s = check_image(codes, path); !s) return s;
-    std::vector<std::uint8_t> bytes(codes.pixels.size());
-    for (std::size_t i = 0; i < codes.pixels.size(); ++i) {
-        bytes[i] = OIIO::convert_type<float, std::uint8_t>(codes.pixels[i]);
-    }
-    OIIO::ImageSpec spec(codes.width, codes.height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    spec.attribute("Software", "mirage");
-    return write_through_temporary(path, "png", spec, OIIO::TypeDesc::UINT8, bytes.data(), outputs);
+    return write_png_bytes(codes, path, outputs,
+                           [](float v) { return OIIO::convert_type<float, std::uint8_t>(v); });
 }
 
 Status write_exr(const Image& linear, const std::string& path, OutputSet* outputs) {

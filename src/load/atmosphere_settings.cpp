@@ -152,7 +152,7 @@ std::string inversion_name(int k, bool smoothing) {
 
 // Real air: the spec of the general engine, from a sounding or the temperature forms, or an
 // exponential profile declared already (s.profile) on the curved Earth.
-Status read_real_air(const Reader& r, const Scene& scene, AtmosphereSettings& s) {
+Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     AirSpec spec;
     std::string label;
     // The place that names the air as a whole, for what make_air_model finds.
@@ -301,7 +301,7 @@ std::vector<std::string> atmosphere_setting_names() {
     return names;
 }
 
-Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
+Result<MirageSettings> read_atmosphere_settings(const Scene& scene) {
     for (const auto& [name, d] : scene.symbols) {
         if (name.rfind("Mirage_", 0) != 0) continue;
         const auto& known = known_names();
@@ -311,7 +311,7 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
                           (best.empty() ? "" : " (did you mean " + best + "?)"));
     }
     Reader r(scene);
-    AtmosphereSettings s;
+    MirageSettings s;
     MIRAGE_TRY(preset, r.text("Mirage_Preset", "paper"));
     MIRAGE_TRY(kind_name, r.text("Mirage_Profile", "inferior"));
     MIRAGE_TRY(eta0, r.number("Mirage_Eta0"));
@@ -388,8 +388,8 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     MIRAGE_TRY(exaggeration, ranged(r, "Mirage_Exaggeration", kMinExaggeration, kMaxExaggeration,
                                     "times the air's index excess over the ground's"));
     if (exaggeration) {
-        const std::string name = r.at("Mirage_Exaggeration") + "Mirage_Exaggeration = " +
-                                 shortest(*exaggeration);
+        const std::string name =
+            r.at("Mirage_Exaggeration") + "Mirage_Exaggeration = " + shortest(*exaggeration);
         if (auto st = exaggerate_atmosphere(s, *exaggeration, name); !st) return st.error();
     }
     MIRAGE_TRY(tol, r.number("Mirage_Tolerance"));
@@ -453,20 +453,22 @@ Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene) {
     return s;
 }
 
-Status exaggerate_atmosphere(AtmosphereSettings& s, double k, const std::string& name) {
+Status exaggerate_atmosphere(MirageSettings& s, double k, const std::string& name) {
     if (k == 1.0) return Ok{};
     if (!(k >= kMinExaggeration && k <= kMaxExaggeration))
         return make_error(name + ": the exaggeration must be from " + shortest(kMinExaggeration) +
                           " to " + shortest(kMaxExaggeration));
     if (!bends_rays(s))
-        return make_error(name + ": there is no index gradient to exaggerate: declare an "
-                                 "atmosphere (Mirage_Preset, ...) first");
+        return make_error(name +
+                          ": there is no index gradient to exaggerate: declare an "
+                          "atmosphere (Mirage_Preset, ...) first");
     // n_k^2 = n0^2 + k (n^2 - n0^2): the exponential profiles' eta1^2 times k.
     const double root_k = std::sqrt(k);
     if (s.profile.kind != ProfileKind::None) {
         s.profile.eta1 *= root_k;
         const std::string made = name + ": the exaggerated profile's ";
-        if (auto v = validate(s.profile, ProfileNames{made + "eta0", made + "eta1", made + "alpha"});
+        if (auto v =
+                validate(s.profile, ProfileNames{made + "eta0", made + "eta1", made + "alpha"});
             !v)
             return v.error();
     }
@@ -499,13 +501,13 @@ Status check_layer_count(double count, const std::string& name) {
                       std::to_string(kMaxLayerCount));
 }
 
-Profile profile_in_scene_units(const AtmosphereSettings& s) {
+Profile profile_in_scene_units(const MirageSettings& s) {
     Profile p = s.profile;
     p.alpha *= s.unit_m;  // exp(-alpha y): alpha per metre times metres per unit
     return p;
 }
 
-bool bends_rays(const AtmosphereSettings& s) {
+bool bends_rays(const MirageSettings& s) {
     return s.declared && (s.air || s.profile.kind != ProfileKind::None);
 }
 
@@ -514,8 +516,7 @@ double fit_tolerance_for(double tolerance_rad) {
     return std::clamp(eps, kMinFitTolerance, kMaxFitTolerance);
 }
 
-Result<Atmosphere> scene_atmosphere(const AtmosphereSettings& s, double tolerance_rad,
-                                    int* pieces) {
+Result<Atmosphere> scene_atmosphere(const MirageSettings& s, double tolerance_rad, int* pieces) {
     if (pieces) *pieces = 0;
     if (!s.air) return Atmosphere::exponential(profile_in_scene_units(s));
     FitSettings fs;

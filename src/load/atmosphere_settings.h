@@ -39,7 +39,7 @@ constexpr double kMinEarthRadiusM = 1e5;     // Mirage_Earth_Radius: 0 (flat) or
 constexpr double kMaxEarthRadiusM = 1e9;     // to this
 constexpr double kMaxLapseKPerKm = 100.0;    // |Mirage_Lapse|
 // kMaxFormHeightM, kMaxFormDeltaK, kMaxSmoothingM, kMinScaleHeightM: atmosphere/general_profile.h
-constexpr int kMaxInversions = 8;            // Mirage_Inversion, Mirage_Inversion_2, ...
+constexpr int kMaxInversions = 8;  // Mirage_Inversion, Mirage_Inversion_2, ...
 // The fitted model's |n_fit - n| bound: chosen from the path tolerance so that ray directions
 // stay within half of it (pi sqrt(eps) <= tolerance / 2), within these limits.
 // Mirage_Exaggeration (not air): from a thousandth of the air's index gradient to ten thousand
@@ -49,7 +49,10 @@ constexpr double kMaxExaggeration = 1e4;
 constexpr double kMinFitTolerance = 1e-13;
 constexpr double kMaxFitTolerance = 1e-10;
 
-struct AtmosphereSettings {
+/// A scene's Mirage_ settings: its atmosphere (the exponential profile or real air, the
+/// exaggeration, the ground's height, the unit), and how a command renders it (the path
+/// tolerance, the layers, the extent).
+struct MirageSettings {
     Profile profile;               // in metres; ProfileKind::None when the scene declares none
     std::string profile_label;     // "paper (inferior)", "explicit inferior", ...
     bool declared = false;         // the scene declares an atmosphere at all
@@ -65,16 +68,19 @@ struct AtmosphereSettings {
     // exponential profile on the curved Earth.
     std::shared_ptr<const AirSpec> air;
     std::vector<std::string> input_files;  // files the atmosphere was read from (a sounding)
-    double exaggeration = 1.0;  // Mirage_Exaggeration: n^2 - n0^2 times this (not air)
+    double exaggeration = 1.0;             // Mirage_Exaggeration: n^2 - n0^2 times this (not air)
 };
 
+/// The type's former name, for code not yet moved over (compile/stage_design*.cpp).
+using AtmosphereSettings = MirageSettings;
+
 /// Whether the scene's atmosphere bends rays at all.
-bool bends_rays(const AtmosphereSettings& settings);
+bool bends_rays(const MirageSettings& settings);
 
 /// Reads the Mirage_... declarations of a parsed scene.  An error names the declaration's
 /// file, line and column and the bad value; unknown Mirage_ names are errors too (a typo
 /// would otherwise be ignored silently).
-Result<AtmosphereSettings> read_atmosphere_settings(const Scene& scene);
+Result<MirageSettings> read_atmosphere_settings(const Scene& scene);
 
 /// The names of the settings a scene may declare (mirage.inc's own names left out).
 std::vector<std::string> atmosphere_setting_names();
@@ -85,7 +91,7 @@ std::vector<std::string> atmosphere_setting_names();
 /// y'' = (n^2)' / (2 beta^2) is then k times as large for the same invariant.  k = 1 changes
 /// nothing.  An error, prefixed with `name` (the setting with its place), for k out of
 /// [kMinExaggeration, kMaxExaggeration], no gradient, or a profile the factor makes invalid.
-Status exaggerate_atmosphere(AtmosphereSettings& settings, double k, const std::string& name);
+Status exaggerate_atmosphere(MirageSettings& settings, double k, const std::string& name);
 
 /// Checks a tolerance in pixels against its range; `name` says where it was given, with its
 /// place: "--tolerance", "scene.pov:3:10: Mirage_Tolerance =".  The one message of every
@@ -96,7 +102,7 @@ Status check_tolerance_px(double px, const std::string& name);
 Status check_layer_count(double count, const std::string& name);
 
 /// The profile in scene units: heights in units of unit_m metres.
-Profile profile_in_scene_units(const AtmosphereSettings& settings);
+Profile profile_in_scene_units(const MirageSettings& settings);
 
 /// The fit tolerance (|n_fit - n|) for paths sampled to `tolerance_rad`: directions through the
 /// model stay within tolerance_rad / 2 of the true ones (pi sqrt(eps)), clamped to
@@ -106,7 +112,7 @@ double fit_tolerance_for(double tolerance_rad);
 /// The scene's atmosphere in scene units, for paths sampled to `tolerance_rad`: the
 /// exponential closed forms (profile_in_scene_units), or real air's fitted model with its
 /// heights (and Earth radius) in scene units.  `pieces` (may be null) gets the model's size.
-Result<Atmosphere> scene_atmosphere(const AtmosphereSettings& settings, double tolerance_rad,
+Result<Atmosphere> scene_atmosphere(const MirageSettings& settings, double tolerance_rad,
                                     int* pieces = nullptr);
 
 }  // namespace mirage

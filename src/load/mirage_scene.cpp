@@ -50,8 +50,7 @@ std::string first_setting(const Scene& scene) {
 }
 
 /// A scene that never includes mirage.inc, refused as `check` asks.
-Status check_mirage_inc(const Scene& scene, const AtmosphereSettings& settings,
-                        MirageIncCheck check) {
+Status check_mirage_inc(const Scene& scene, const MirageSettings& settings, MirageIncCheck check) {
     if (check == MirageIncCheck::None || includes_mirage_inc(scene)) return Ok{};
     const std::string add =
         "add #include \"mirage.inc\" after its #version line (plain POV-Ray finds it with "
@@ -74,14 +73,15 @@ Status check_mirage_inc(const Scene& scene, const AtmosphereSettings& settings,
 
 }  // namespace
 
+SceneLoadOptions scene_load_options(const SceneInput& input) {
+    SceneLoadOptions o;
+    o.input() = input;
+    return o;
+}
+
 SceneLoadOptions scene_load_options(const std::string& scene, int width, int height,
                                     const std::vector<std::string>& library_paths) {
-    SceneLoadOptions o;
-    o.scene = scene;
-    o.width = width;
-    o.height = height;
-    o.library_paths = library_paths;
-    return o;
+    return scene_load_options(SceneInput{scene, width, height, library_paths});
 }
 
 Status check_library_paths(const std::vector<std::string>& paths) {
@@ -103,8 +103,7 @@ Status check_image_size(int width, int height) {
                       " must be 1 to " + std::to_string(kMaxImageSide) + " pixels each way");
 }
 
-Result<AtmosphereSettings> settle_mirage_scene(const Scene& scene,
-                                               const SceneLoadOptions& options) {
+Result<MirageSettings> settle_mirage_scene(const Scene& scene, const SceneLoadOptions& options) {
     auto settings = read_atmosphere_settings(scene);
     if (!settings) return settings.error();
     if (options.tolerance_px) settings->tolerance_px = *options.tolerance_px;

@@ -15,6 +15,7 @@
 #include "scene/parser.h"
 #include "scene/scene.h"
 #include "util/result.h"
+#include "util/scene_input.h"
 
 namespace mirage {
 
@@ -34,10 +35,8 @@ enum class MirageIncCheck {
     Always,      // compile: its layers have no other way into the scene
 };
 
-struct SceneLoadOptions {
-    std::string scene;                        // the .pov file
-    int width = 320, height = 240;            // the render's size, pixels
-    std::vector<std::string> library_paths;   // the user's include directories, searched first
+/// SceneInput: the scene, the render's size, the user's include directories (searched first).
+struct SceneLoadOptions : SceneInput {
     bool strict = true;                       // every object must be supported (false: skip others)
     std::optional<double> tolerance_px;       // --tolerance: replaces Mirage_Tolerance
     std::optional<LayerMode> layers;          // --layers: replaces Mirage_Layers
@@ -55,12 +54,13 @@ struct SceneLoadOptions {
 /// A scene with its atmosphere, ready for a command.
 struct MirageScene {
     Scene scene;
-    AtmosphereSettings settings;  // the scene's Mirage_ settings with the options' replacements
-    ParseOptions parse_options;   // as the scene was parsed: every include directory in order
+    MirageSettings settings;     // the scene's Mirage_ settings with the options' replacements
+    ParseOptions parse_options;  // as the scene was parsed: every include directory in order
 };
 
-/// The options for `scene` rendered at width x height, the user's include directories
-/// searched first; the rest as SceneLoadOptions has them.
+/// The options for the input's scene rendered at its size, its include directories searched
+/// first; the rest as SceneLoadOptions has them.
+SceneLoadOptions scene_load_options(const SceneInput& input);
 SceneLoadOptions scene_load_options(const std::string& scene, int width, int height,
                                     const std::vector<std::string>& library_paths);
 
@@ -79,7 +79,7 @@ Result<MirageScene> load_mirage_scene(const SceneLoadOptions& options);
 
 /// What load_mirage_scene checks after the parse, for a scene parsed already: the Mirage_
 /// settings with the options' replacements, and the camera's place.
-Result<AtmosphereSettings> settle_mirage_scene(const Scene& scene, const SceneLoadOptions& options);
+Result<MirageSettings> settle_mirage_scene(const Scene& scene, const SceneLoadOptions& options);
 
 /// Whether the scene, or a file it includes, includes mirage.inc (the parser lists every file
 /// it read in Scene::files).

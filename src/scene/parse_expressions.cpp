@@ -76,6 +76,8 @@ double srgb_to_linear(double c) {
     return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
+Numeric scalar(double x) { return Numeric::scalar(x); }
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -429,10 +431,8 @@ double SceneParser::rand_next(int stream, const Token& at) {
     return static_cast<double>(state) / 4294967295.0;
 }
 
-Numeric SceneParser::parse_function(const Token& name) {
-    const std::string& f = name.text();
-    auto scalar = [](double x) { return Numeric::scalar(x); };
-    // Constants.
+/// The built-in constants: pi, true, clock, version, x, t, u...
+std::optional<Numeric> SceneParser::builtin_constant(const std::string& f) const {
     if (f == "pi") return scalar(kPi);
     if (f == "true" || f == "yes" || f == "on") return scalar(1.0);
     if (f == "false" || f == "no" || f == "off") return scalar(0.0);
@@ -454,8 +454,12 @@ Numeric SceneParser::parse_function(const Token& name) {
         n.v[f == "u" ? 0 : 1] = 1.0;
         return n;
     }
+    return std::nullopt;
+}
 
-    // One float.
+/// The functions of one float: abs, sin, sqrt, seed, rand...
+std::optional<Numeric> SceneParser::parse_one_float_function(const Token& name) {
+    const std::string& f = name.text();
     struct Unary {
         const char* name;
         double (*fn)(double);
@@ -511,8 +515,12 @@ Numeric SceneParser::parse_function(const Token& name) {
         Token at = peek(0);
         return scalar(rand_next(int_value(parse_float_param(), at, "rand() stream"), at));
     }
+    return std::nullopt;
+}
 
-    // Two floats.
+/// The functions of two or more floats: atan2, pow, min, bitwise_and, select...
+std::optional<Numeric> SceneParser::parse_float_list_function(const Token& name) {
+    const std::string& f = name.text();
     if (f == "atan2" || f == "div" || f == "mod" || f == "pow") {
         expect_punct("(", "after '" + f + "'");
         double a = parse_float();
@@ -566,8 +574,12 @@ Numeric SceneParser::parse_function(const Token& name) {
         expect_punct(")", "after the arguments of 'select'");
         return scalar(c < 0.0 ? less : equal);
     }
+    return std::nullopt;
+}
 
-    // Strings.
+/// The numeric functions of strings: strlen, val, asc, file_exists, strcmp.
+std::optional<Numeric> SceneParser::parse_string_argument_function(const Token& name) {
+    const std::string& f = name.text();
     if (f == "strlen" || f == "val" || f == "asc" || f == "file_exists") {
         expect_punct("(", "after '" + f + "'");
         std::string s = parse_string(f == "file_exists");
@@ -586,8 +598,12 @@ Numeric SceneParser::parse_function(const Token& name) {
         int c = a.compare(b);
         return scalar(c < 0 ? -1.0 : (c > 0 ? 1.0 : 0.0));
     }
+    return std::nullopt;
+}
 
-    // Vectors.
+/// The functions of vectors: vdot, vcross, vrotate, vlength, vnormalize, vaxis_rotate.
+std::optional<Numeric> SceneParser::parse_vector_function(const Token& name) {
+    const std::string& f = name.text();
     if (f == "vdot" || f == "vcross" || f == "vrotate") {
         expect_punct("(", "after '" + f + "'");
         glm::dvec3 a = parse_vector();
@@ -620,8 +636,12 @@ Numeric SceneParser::parse_function(const Token& name) {
         if (glm::length(axis) == 0.0) fail(name, "vaxis_rotate about a zero-length axis");
         return Numeric::vector3(transform_point(make_axis_rotation(axis, degrees), p));
     }
+    return std::nullopt;
+}
 
-    // Arrays.
+/// The sizes of an array: dimensions, dimension_size.
+std::optional<Numeric> SceneParser::parse_array_function(const Token& name) {
+    const std::string& f = name.text();
     if (f == "dimensions" || f == "dimension_size") {
         expect_punct("(", "after '" + f + "'");
         Token a = next();
@@ -639,7 +659,18 @@ Numeric SceneParser::parse_function(const Token& name) {
         expect_punct(")", "after the arguments of '" + f + "'");
         return scalar(r);
     }
-    if (f == "defined") return scalar(parse_ifdef_param() ? 1.0 : 0.0);
+    return std::nullopt;
+}
+
+Numeric SceneParser::parse_function(const Token& name) {
+    const std::string& f = name.text();
+    if (auto n = builtin_constant(f)) return *n;
+    if (auto n = parse_one_float_function(name)) return *n;
+    if (auto n = parse_float_list_function(name)) return *n;
+    if (auto n = parse_string_argument_function(name)) return *n;
+    if (auto n = parse_vector_function(name)) return *n;
+    if (auto n = parse_array_function(name)) return *n;
+    if (f == "defined") return Numeric::scalar(parse_ifdef_param() ? 1.0 : 0.0);
 
     if (one_of(f, {"inside", "trace", "min_extent", "max_extent"})) {
         return parse_object_function(name);  // parse_queries.cpp

@@ -87,6 +87,90 @@ struct SceneParser::PatternTargets {
 // ---------------------------------------------------------------------------------------
 // Patterns
 
+/// slope { [point_at] vector [, lo, hi] [altitude vector [, lo, hi]] }, or slope vector.
+void SceneParser::parse_slope_pattern(Pattern& p) {
+    const Token tok = next();
+    p.kind = PatternKind::Slope;
+    p.altitude_vector = glm::dvec3(0.0);
+    p.slope_mod = p.altitude_mod = glm::dvec2(0.0);
+    p.slope_point_at = false;
+    // POV-Ray keeps a range as its low end and width; an empty range is ignored.
+    auto range = [&](glm::dvec2& mod) {
+        accept_comma();
+        mod.x = allow_float(0.0);
+        accept_comma();
+        mod.y = allow_float(0.0);
+        if (mod.y != 0.0 && mod.y == mod.x) {
+            mod = glm::dvec2(0.0);
+        } else {
+            mod.y -= mod.x;
+        }
+    };
+    if (peek_punct("{")) {
+        Token open = next();
+        p.slope_point_at = accept_word("point_at");
+        p.slope_vector = parse_vector();
+        range(p.slope_mod);
+        if (peek_word("altitude")) {
+            Token a = next();
+            if (p.slope_point_at) fail(a, "'altitude' cannot be used with 'point_at' in slope");
+            p.altitude_vector = parse_vector();
+            range(p.altitude_mod);
+        }
+        expect_punct("}", "to close 'slope'");
+        (void)open;
+    } else {
+        p.slope_vector = parse_vector();
+    }
+    if (p.slope_point_at) {
+        p.slope_len = 1.0;
+        p.altitude_len = 0.0;
+    } else {
+        p.slope_len = glm::length(p.slope_vector);
+        p.altitude_len = glm::length(p.altitude_vector);
+        if (p.slope_len != 0.0) p.slope_vector /= p.slope_len;
+        if (p.altitude_len != 0.0) p.altitude_vector /= p.altitude_len;
+        // POV-Ray sums the lengths in single precision.
+        const float total = static_cast<float>(p.slope_len + p.altitude_len);
+        if (total == 0.0f) fail(tok, "zero length for both slope and altitude");
+        p.slope_len /= total;
+        p.altitude_len = 1.0 - p.slope_len;
+    }
+}
+
+/// A pattern the tracer does not evaluate: refused in strict mode; in lenient mode skipped
+/// with the rest of its block or map entry, a plain pattern in its place.
+void SceneParser::skip_unsupported_pattern(Pattern& p) {
+    Token kw = next();
+    unsupported(kw, "pattern '" + kw.text() + "'");  // fails in strict mode
+    // Lenient mode: the rest of the enclosing block or map entry goes with it.
+    int depth = 0;
+    while (true) {
+        const Token& n = peek(0);
+        if (n.is_eof()) fail(n, "expected '}', got end of file");
+        if (depth == 0 && (n.is_punct("}") || n.is_punct("]"))) break;
+        if (n.is_punct("{") || n.is_punct("[")) ++depth;
+        if (n.is_punct("}") || n.is_punct("]")) --depth;
+        next();
+    }
+    p.kind = PatternKind::Solid;
+    skipped_pattern_ = true;
+}
+
+/// The patterns of a list of colours (checker, brick, hexagon...), with their list.
+void SceneParser::parse_list_pattern(Pattern& p, PatternKind list, PatternUse use,
+                                     PatternTargets& t) {
+    next();
+    if (list == PatternKind::Brick && p.kind != PatternKind::Brick) {
+        p.brick_size = glm::dvec3(8.0, 3.0, 4.5);
+        p.mortar = 0.5 - kEpsilon * 2.0;
+    }
+    p.kind = list;
+    p.frequency = 0.0;
+    if (use == PatternUse::Normal) *t.delta = 0.02;
+    parse_blend_list(p, list_pattern_count(list), use, t);
+}
+
 bool SceneParser::parse_pattern_type(Pattern& p, PatternUse use, PatternTargets& t) {
     const Token tok = peek(0);
     if (use == PatternUse::Pigment && starts_colour(tok)) {
@@ -186,15 +270,7 @@ bool SceneParser::parse_pattern_type(Pattern& p, PatternUse use, PatternTargets&
                        : w == "cubic"      ? PatternKind::Cubic
                                            : PatternKind::Solid;
     if (list != PatternKind::Solid) {
-        next();
-        if (list == PatternKind::Brick && p.kind != PatternKind::Brick) {
-            p.brick_size = glm::dvec3(8.0, 3.0, 4.5);
-            p.mortar = 0.5 - kEpsilon * 2.0;
-        }
-        p.kind = list;
-        p.frequency = 0.0;
-        if (use == PatternUse::Normal) *t.delta = 0.02;
-        parse_blend_list(p, list_pattern_count(list), use, t);
+        parse_list_pattern(p, list, use, t);
         return true;
     }
     if (w == "image_map" || w == "bump_map") {
@@ -219,70 +295,11 @@ bool SceneParser::parse_pattern_type(Pattern& p, PatternUse use, PatternTargets&
         return true;
     }
     if (w == "slope") {
-        next();
-        p.kind = PatternKind::Slope;
-        p.altitude_vector = glm::dvec3(0.0);
-        p.slope_mod = p.altitude_mod = glm::dvec2(0.0);
-        p.slope_point_at = false;
-        // POV-Ray keeps a range as its low end and width; an empty range is ignored.
-        auto range = [&](glm::dvec2& mod) {
-            accept_comma();
-            mod.x = allow_float(0.0);
-            accept_comma();
-            mod.y = allow_float(0.0);
-            if (mod.y != 0.0 && mod.y == mod.x) {
-                mod = glm::dvec2(0.0);
-            } else {
-                mod.y -= mod.x;
-            }
-        };
-        if (peek_punct("{")) {
-            Token open = next();
-            p.slope_point_at = accept_word("point_at");
-            p.slope_vector = parse_vector();
-            range(p.slope_mod);
-            if (peek_word("altitude")) {
-                Token a = next();
-                if (p.slope_point_at) fail(a, "'altitude' cannot be used with 'point_at' in slope");
-                p.altitude_vector = parse_vector();
-                range(p.altitude_mod);
-            }
-            expect_punct("}", "to close 'slope'");
-            (void)open;
-        } else {
-            p.slope_vector = parse_vector();
-        }
-        if (p.slope_point_at) {
-            p.slope_len = 1.0;
-            p.altitude_len = 0.0;
-        } else {
-            p.slope_len = glm::length(p.slope_vector);
-            p.altitude_len = glm::length(p.altitude_vector);
-            if (p.slope_len != 0.0) p.slope_vector /= p.slope_len;
-            if (p.altitude_len != 0.0) p.altitude_vector /= p.altitude_len;
-            // POV-Ray sums the lengths in single precision.
-            const float total = static_cast<float>(p.slope_len + p.altitude_len);
-            if (total == 0.0f) fail(tok, "zero length for both slope and altitude");
-            p.slope_len /= total;
-            p.altitude_len = 1.0 - p.slope_len;
-        }
+        parse_slope_pattern(p);
         return true;
     }
     if (is_unsupported_pattern(w)) {
-        Token kw = next();
-        unsupported(kw, "pattern '" + w + "'");  // fails in strict mode
-        // Lenient mode: the rest of the enclosing block or map entry goes with it.
-        int depth = 0;
-        while (true) {
-            const Token& n = peek(0);
-            if (n.is_eof()) fail(n, "expected '}', got end of file");
-            if (depth == 0 && (n.is_punct("}") || n.is_punct("]"))) break;
-            if (n.is_punct("{") || n.is_punct("[")) ++depth;
-            if (n.is_punct("}") || n.is_punct("]")) --depth;
-            next();
-        }
-        p.kind = PatternKind::Solid;
-        skipped_pattern_ = true;
+        skip_unsupported_pattern(p);
         return true;
     }
     return false;
@@ -368,6 +385,148 @@ void SceneParser::parse_blend_list(Pattern& p, int count, PatternUse use, Patter
     }
 }
 
+/// A modifier of one kind of pattern (brick_size, mortar, form, exterior...) or of normals
+/// (accuracy, bump_size, no_bump_scale) at the next token: parses it and returns true, or
+/// returns false.
+bool SceneParser::parse_pattern_kind_modifier(Pattern& p, PatternUse use, PatternTargets& t) {
+    const Token m = peek(0);
+    const std::string& w = m.text();
+    auto only = [&](const Token& item, bool allowed, const std::string& where) {
+        if (!allowed) fail(item, "'" + item.text() + "' can only be used with " + where);
+    };
+    if (w == "agate_turb") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Agate, "agate");
+        p.agate_turb = parse_float();
+        if (!p.turbulence) p.turbulence = Turbulence{};
+    } else if (w == "brick_size") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Brick, "brick");
+        p.brick_size = parse_vector();
+    } else if (w == "mortar") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Brick, "brick");
+        p.mortar = parse_float() - kEpsilon * 2.0;
+    } else if (w == "control0" || w == "control1") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Quilted, "quilted");
+        (w == "control0" ? p.control0 : p.control1) = parse_float();
+    } else if (w == "metric") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Crackle, "crackle");
+        p.crackle_metric = parse_vector().x;
+    } else if (w == "form") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Crackle, "crackle");
+        p.crackle_form = parse_vector();
+    } else if (w == "offset") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Crackle, "crackle");
+        p.crackle_offset = parse_float();
+    } else if (w == "solid") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Crackle, "crackle");
+        p.crackle_solid = true;
+    } else if (w == "exterior" || w == "interior") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Mandel, "mandel");
+        Token at = peek(0);
+        const int type = static_cast<int>(parse_float());
+        const int limit = w == "exterior" ? 8 : 6;
+        if (type < 0 || type > limit) {
+            fail(at, "the fractal pattern's " + w + " type must be 0 to " + std::to_string(limit) +
+                         ", got " + std::to_string(type));
+        }
+        accept_comma();
+        const double factor = parse_float();
+        if (w == "exterior") {
+            p.exterior_type = type;
+            p.exterior_factor = factor;
+        } else {
+            p.interior_type = type;
+            p.interior_factor = factor;
+        }
+    } else if (w == "exponent") {
+        Token item = next();
+        only(item, p.kind == PatternKind::Mandel, "mandel");
+        Token at = peek(0);
+        p.fractal_exponent = static_cast<int>(parse_float());
+        if (p.fractal_exponent != 2) {
+            unsupported(at, "mandel exponent " + std::to_string(p.fractal_exponent) + " (only 2)");
+            p.fractal_exponent = 2;
+        }
+    } else if (w == "accuracy") {
+        Token item = next();
+        only(item, use == PatternUse::Normal, "normals");
+        *t.delta = parse_float();
+    } else if (w == "bump_size") {
+        Token item = next();
+        only(item, use == PatternUse::Normal, "normals");
+        *t.amount = parse_float();
+    } else if (w == "no_bump_scale") {
+        next();
+        if (t.no_bump_scale) *t.no_bump_scale = true;
+    } else {
+        return false;
+    }
+    return true;
+}
+
+/// A map of the pattern's values (color_map, pigment_map, normal_map, slope_map,
+/// texture_map) or quick_color at the next token: parses it and returns true, or returns false.
+bool SceneParser::parse_pattern_map(Pattern& p, PatternUse use, PatternTargets& t) {
+    const Token m = peek(0);
+    const std::string& w = m.text();
+    if (w == "color_map" || w == "colour_map") {
+        Token item = next();
+        if (use != PatternUse::Pigment) fail(item, "color_map can only be used in a pigment");
+        if (refuses_maps(p.kind)) {
+            // POV-Ray refuses it too; in lenient mode the pattern may have been skipped,
+            // and in a declaration the pigment may stand in for an opaque one (the
+            // declaration is then opaque already).
+            const std::string what = p.kind == PatternKind::Solid ? "plain colour" : "checker";
+            const bool stand_in = opaque_capture_ && opaque_capture_->captured;
+            if ((options_.strict && !stand_in) || p.kind != PatternKind::Solid) {
+                fail(item,
+                     p.kind == PatternKind::Solid
+                         ? "color_map needs a pattern such as gradient (a " + what + " has none)"
+                         : "cannot use color_map with this pattern type");
+            }
+            skip_unsupported(item, Arity::Block, "color_map on a " + what);
+            return true;
+        }
+        *t.colour_map = parse_colour_map(item);
+        t.pigment_map->clear();
+    } else if (w == "pigment_map") {
+        Token item = next();
+        if (use != PatternUse::Pigment) fail(item, "pigment_map can only be used in a pigment");
+        if (refuses_maps(p.kind)) fail(item, "cannot use pigment_map with this pattern type");
+        *t.pigment_map = parse_pigment_map(item);
+        t.colour_map->clear();
+    } else if (w == "normal_map") {
+        Token item = next();
+        if (use != PatternUse::Normal) fail(item, "normal_map can only be used in a normal");
+        if (refuses_maps(p.kind)) fail(item, "cannot use normal_map with this pattern type");
+        *t.normal_map = parse_normal_map(item);
+    } else if (w == "slope_map") {
+        Token item = next();
+        if (use != PatternUse::Normal) fail(item, "slope_map can only be used in a normal");
+        if (refuses_maps(p.kind)) fail(item, "cannot use slope_map with this pattern type");
+        *t.slope_map = parse_slope_map(item);
+    } else if (w == "texture_map") {
+        Token item = next();
+        if (use != PatternUse::Texture) fail(item, "texture_map can only be used in a texture");
+        if (refuses_maps(p.kind)) fail(item, "cannot use texture_map with this pattern type");
+        *t.texture_map = parse_texture_map(item);
+    } else if (w == "quick_color" || w == "quick_colour") {
+        next();
+        parse_colour(true);  // only for quick previews
+    } else {
+        return false;
+    }
+    return true;
+}
+
 void SceneParser::parse_pattern(Pattern& p, PatternUse use, PatternTargets& t, const Token& kw) {
     skipped_pattern_ = false;
     parse_pattern_type(p, use, t);
@@ -377,9 +536,6 @@ void SceneParser::parse_pattern(Pattern& p, PatternUse use, PatternTargets& t, c
         accept_comma();
         *t.amount = allow_float(*t.amount);
     }
-    auto only = [&](const Token& item, bool allowed, const std::string& where) {
-        if (!allowed) fail(item, "'" + item.text() + "' can only be used with " + where);
-    };
     auto turbulence = [&]() -> Turbulence& {
         if (!p.turbulence) p.turbulence = Turbulence{};
         return *p.turbulence;
@@ -432,127 +588,10 @@ void SceneParser::parse_pattern(Pattern& p, PatternUse use, PatternTargets& t, c
                 fail(at, "noise_generator must be 0, 1, 2 or 3, got " + std::to_string(g));
             p.noise_generator = g;
             (void)item;
-        } else if (w == "agate_turb") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Agate, "agate");
-            p.agate_turb = parse_float();
-            if (!p.turbulence) p.turbulence = Turbulence{};
-        } else if (w == "brick_size") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Brick, "brick");
-            p.brick_size = parse_vector();
-        } else if (w == "mortar") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Brick, "brick");
-            p.mortar = parse_float() - kEpsilon * 2.0;
-        } else if (w == "control0" || w == "control1") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Quilted, "quilted");
-            (w == "control0" ? p.control0 : p.control1) = parse_float();
-        } else if (w == "metric") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Crackle, "crackle");
-            p.crackle_metric = parse_vector().x;
-        } else if (w == "form") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Crackle, "crackle");
-            p.crackle_form = parse_vector();
-        } else if (w == "offset") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Crackle, "crackle");
-            p.crackle_offset = parse_float();
-        } else if (w == "solid") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Crackle, "crackle");
-            p.crackle_solid = true;
-        } else if (w == "exterior" || w == "interior") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Mandel, "mandel");
-            Token at = peek(0);
-            const int type = static_cast<int>(parse_float());
-            const int limit = w == "exterior" ? 8 : 6;
-            if (type < 0 || type > limit) {
-                fail(at, "the fractal pattern's " + w + " type must be 0 to " +
-                             std::to_string(limit) + ", got " + std::to_string(type));
-            }
-            accept_comma();
-            const double factor = parse_float();
-            if (w == "exterior") {
-                p.exterior_type = type;
-                p.exterior_factor = factor;
-            } else {
-                p.interior_type = type;
-                p.interior_factor = factor;
-            }
-        } else if (w == "exponent") {
-            Token item = next();
-            only(item, p.kind == PatternKind::Mandel, "mandel");
-            Token at = peek(0);
-            p.fractal_exponent = static_cast<int>(parse_float());
-            if (p.fractal_exponent != 2) {
-                unsupported(at,
-                            "mandel exponent " + std::to_string(p.fractal_exponent) + " (only 2)");
-                p.fractal_exponent = 2;
-            }
-        } else if (w == "accuracy") {
-            Token item = next();
-            only(item, use == PatternUse::Normal, "normals");
-            *t.delta = parse_float();
-        } else if (w == "bump_size") {
-            Token item = next();
-            only(item, use == PatternUse::Normal, "normals");
-            *t.amount = parse_float();
-        } else if (w == "no_bump_scale") {
-            next();
-            if (t.no_bump_scale) *t.no_bump_scale = true;
         } else if (w == "warp") {
             Token item = next();
             parse_warp(p, item);
-        } else if (w == "color_map" || w == "colour_map") {
-            Token item = next();
-            if (use != PatternUse::Pigment) fail(item, "color_map can only be used in a pigment");
-            if (refuses_maps(p.kind)) {
-                // POV-Ray refuses it too; in lenient mode the pattern may have been skipped,
-                // and in a declaration the pigment may stand in for an opaque one (the
-                // declaration is then opaque already).
-                const std::string what = p.kind == PatternKind::Solid ? "plain colour" : "checker";
-                const bool stand_in = opaque_capture_ && opaque_capture_->captured;
-                if ((options_.strict && !stand_in) || p.kind != PatternKind::Solid) {
-                    fail(item, p.kind == PatternKind::Solid
-                                   ? "color_map needs a pattern such as gradient (a " + what +
-                                         " has none)"
-                                   : "cannot use color_map with this pattern type");
-                }
-                skip_unsupported(item, Arity::Block, "color_map on a " + what);
-                continue;
-            }
-            *t.colour_map = parse_colour_map(item);
-            t.pigment_map->clear();
-        } else if (w == "pigment_map") {
-            Token item = next();
-            if (use != PatternUse::Pigment) fail(item, "pigment_map can only be used in a pigment");
-            if (refuses_maps(p.kind)) fail(item, "cannot use pigment_map with this pattern type");
-            *t.pigment_map = parse_pigment_map(item);
-            t.colour_map->clear();
-        } else if (w == "normal_map") {
-            Token item = next();
-            if (use != PatternUse::Normal) fail(item, "normal_map can only be used in a normal");
-            if (refuses_maps(p.kind)) fail(item, "cannot use normal_map with this pattern type");
-            *t.normal_map = parse_normal_map(item);
-        } else if (w == "slope_map") {
-            Token item = next();
-            if (use != PatternUse::Normal) fail(item, "slope_map can only be used in a normal");
-            if (refuses_maps(p.kind)) fail(item, "cannot use slope_map with this pattern type");
-            *t.slope_map = parse_slope_map(item);
-        } else if (w == "texture_map") {
-            Token item = next();
-            if (use != PatternUse::Texture) fail(item, "texture_map can only be used in a texture");
-            if (refuses_maps(p.kind)) fail(item, "cannot use texture_map with this pattern type");
-            *t.texture_map = parse_texture_map(item);
-        } else if (w == "quick_color" || w == "quick_colour") {
-            next();
-            parse_colour(true);  // only for quick previews
-        } else {
+        } else if (!parse_pattern_kind_modifier(p, use, t) && !parse_pattern_map(p, use, t)) {
             break;
         }
     }

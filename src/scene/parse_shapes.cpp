@@ -127,30 +127,7 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
         q.constant = parse_float();
         return q;
     }
-    if (w == "triangle" || w == "smooth_triangle") {
-        // A single triangle keeps double precision (POV-Ray's Triangle object).
-        const bool smooth = w == "smooth_triangle";
-        auto data = std::make_shared<MeshData>();
-        data->single_precision = false;
-        MeshData::Face f;
-        for (int i = 0; i < 3; ++i) {
-            if (i) accept_comma();
-            data->vertices.push_back(parse_vector());
-            if (smooth) {
-                accept_comma();
-                glm::dvec3 n = parse_vector();
-                if (std::abs(n.x) < kEpsilon && std::abs(n.y) < kEpsilon &&
-                    std::abs(n.z) < kEpsilon) {
-                    n = glm::dvec3(1.0, 0.0, 0.0);  // as POV-Ray
-                }
-                data->normals.push_back(glm::normalize(n));
-                f.n[i] = i;
-            }
-            f.v[i] = i;
-        }
-        data->faces.push_back(f);
-        return Mesh{data};
-    }
+    if (w == "triangle" || w == "smooth_triangle") return parse_triangle(kw);
     if (w == "polygon") return parse_polygon(kw);
     if (w == "text") return parse_text(kw);
     if (w == "isosurface") return parse_isosurface(kw);
@@ -165,121 +142,155 @@ Shape SceneParser::parse_shape_arguments(const Token& kw) {
     }
     if (w == "height_field") return parse_height_field(kw);
     if (w == "blob") return parse_blob(kw);
-    if (w == "lathe") {
-        Lathe lathe;
-        if (accept_word("linear_spline")) {
-            lathe.spline = SplineKind::Linear;
-        } else if (accept_word("quadratic_spline")) {
-            lathe.spline = SplineKind::Quadratic;
-        } else if (accept_word("cubic_spline")) {
-            lathe.spline = SplineKind::Cubic;
-        } else if (accept_word("bezier_spline")) {
-            lathe.spline = SplineKind::Bezier;
-        }
-        Token at = peek(0);
-        const double n = parse_float();
-        const int minimum = lathe.spline == SplineKind::Linear      ? 2
-                            : lathe.spline == SplineKind::Quadratic ? 3
-                                                                    : 4;
-        if (n < minimum || n > 1e7 ||
-            (lathe.spline == SplineKind::Bezier && (static_cast<int>(n) & 3) != 0)) {
-            fail(at, "a lathe with these splines needs at least " + std::to_string(minimum) +
-                         " points (four per Bezier segment)");
-        }
-        for (int i = 0; i < static_cast<int>(n); ++i) {
-            accept_comma();
-            Token pt = peek(0);
-            const glm::dvec3 v = parse_vector();
-            if (i > 0 && i < static_cast<int>(n) - 1 && v.x < 0.0) {
-                fail(pt, "incorrect point in lathe: a negative radius");
-            }
-            lathe.points.emplace_back(v.x, v.y);
-        }
-        return lathe;
-    }
-    if (w == "sor") {
-        Sor sor;
-        Token at = peek(0);
-        const double n = parse_float();
-        if (n < 4.0 || n > 1e7) fail(at, "a surface of revolution needs at least four points");
-        for (int i = 0; i < static_cast<int>(n); ++i) {
-            accept_comma();
-            Token pt = peek(0);
-            const glm::dvec3 v = parse_vector();
-            if (v.x < 0.0 || (i > 1 && i < static_cast<int>(n) - 1 && v.y <= sor.points.back().y)) {
-                fail(pt,
-                     "incorrect point in surface of revolution (radii >= 0, heights "
-                     "increasing)");
-            }
-            sor.points.emplace_back(v.x, v.y);
-        }
-        if (accept_word("open")) sor.open = true;
-        return sor;
-    }
-    if (w == "prism") {
-        Prism prism;
-        while (true) {
-            if (accept_word("linear_spline")) {
-                prism.spline = SplineKind::Linear;
-            } else if (accept_word("quadratic_spline")) {
-                prism.spline = SplineKind::Quadratic;
-            } else if (accept_word("cubic_spline")) {
-                prism.spline = SplineKind::Cubic;
-            } else if (accept_word("bezier_spline")) {
-                prism.spline = SplineKind::Bezier;
-            } else if (accept_word("linear_sweep")) {
-                prism.conic = false;
-            } else if (accept_word("conic_sweep")) {
-                prism.conic = true;
-            } else {
-                break;
-            }
-        }
-        prism.height1 = parse_float();
-        accept_comma();
-        prism.height2 = parse_float();
-        accept_comma();
-        if (prism.height1 > prism.height2) std::swap(prism.height1, prism.height2);
-        Token at = peek(0);
-        const double n = parse_float();
-        if (n < 3.0 || n > 1e7) fail(at, "a prism needs at least three points");
-        for (int i = 0; i < static_cast<int>(n); ++i) {
-            accept_comma();
-            const glm::dvec3 v = parse_vector();
-            prism.points.emplace_back(v.x, v.y);
-        }
-        if (accept_word("open")) prism.open = true;
-        return prism;
-    }
-    if (w == "poly" || w == "cubic" || w == "quartic") {
-        Polynomial poly;
-        Token at = peek(0);
-        if (w == "poly") {
-            const double order = parse_float();
-            if (order < 2.0 || order > 35.0 || std::floor(order) != order) {
-                fail(at, "poly order " + format_str(order, 0, -1) + ": must be 2 to 35");
-            }
-            poly.order = static_cast<int>(order);
-            accept_comma();
-        } else {
-            poly.order = w == "cubic" ? 3 : 4;
-        }
-        const int count = (poly.order + 1) * (poly.order + 2) * (poly.order + 3) / 6;
-        Token open = expect_punct("<", "before the coefficients of '" + w + "'");
-        while (!peek_punct(">")) {
-            if (!poly.coefficients.empty()) accept_comma();
-            if (peek_punct(">")) break;
-            poly.coefficients.push_back(parse_float());
-        }
-        next();
-        if (static_cast<int>(poly.coefficients.size()) != count) {
-            fail(open, "'" + w + "' of order " + std::to_string(poly.order) + " needs " +
-                           std::to_string(count) + " coefficients, got " +
-                           std::to_string(poly.coefficients.size()));
-        }
-        return poly;
-    }
+    if (w == "lathe") return parse_lathe();
+    if (w == "sor") return parse_sor();
+    if (w == "prism") return parse_prism();
+    if (w == "poly" || w == "cubic" || w == "quartic") return parse_poly(kw);
     fail(kw, "expected an object, got " + describe(kw));
+}
+
+Shape SceneParser::parse_triangle(const Token& kw) {
+    const std::string& w = kw.text();
+    // A single triangle keeps double precision (POV-Ray's Triangle object).
+    const bool smooth = w == "smooth_triangle";
+    auto data = std::make_shared<MeshData>();
+    data->single_precision = false;
+    MeshData::Face f;
+    for (int i = 0; i < 3; ++i) {
+        if (i) accept_comma();
+        data->vertices.push_back(parse_vector());
+        if (smooth) {
+            accept_comma();
+            glm::dvec3 n = parse_vector();
+            if (std::abs(n.x) < kEpsilon && std::abs(n.y) < kEpsilon && std::abs(n.z) < kEpsilon) {
+                n = glm::dvec3(1.0, 0.0, 0.0);  // as POV-Ray
+            }
+            data->normals.push_back(glm::normalize(n));
+            f.n[i] = i;
+        }
+        f.v[i] = i;
+    }
+    data->faces.push_back(f);
+    return Mesh{data};
+}
+
+Shape SceneParser::parse_lathe() {
+    Lathe lathe;
+    if (accept_word("linear_spline")) {
+        lathe.spline = SplineKind::Linear;
+    } else if (accept_word("quadratic_spline")) {
+        lathe.spline = SplineKind::Quadratic;
+    } else if (accept_word("cubic_spline")) {
+        lathe.spline = SplineKind::Cubic;
+    } else if (accept_word("bezier_spline")) {
+        lathe.spline = SplineKind::Bezier;
+    }
+    Token at = peek(0);
+    const double n = parse_float();
+    const int minimum = lathe.spline == SplineKind::Linear      ? 2
+                        : lathe.spline == SplineKind::Quadratic ? 3
+                                                                : 4;
+    if (n < minimum || n > 1e7 ||
+        (lathe.spline == SplineKind::Bezier && (static_cast<int>(n) & 3) != 0)) {
+        fail(at, "a lathe with these splines needs at least " + std::to_string(minimum) +
+                     " points (four per Bezier segment)");
+    }
+    for (int i = 0; i < static_cast<int>(n); ++i) {
+        accept_comma();
+        Token pt = peek(0);
+        const glm::dvec3 v = parse_vector();
+        if (i > 0 && i < static_cast<int>(n) - 1 && v.x < 0.0) {
+            fail(pt, "incorrect point in lathe: a negative radius");
+        }
+        lathe.points.emplace_back(v.x, v.y);
+    }
+    return lathe;
+}
+
+Shape SceneParser::parse_sor() {
+    Sor sor;
+    Token at = peek(0);
+    const double n = parse_float();
+    if (n < 4.0 || n > 1e7) fail(at, "a surface of revolution needs at least four points");
+    for (int i = 0; i < static_cast<int>(n); ++i) {
+        accept_comma();
+        Token pt = peek(0);
+        const glm::dvec3 v = parse_vector();
+        if (v.x < 0.0 || (i > 1 && i < static_cast<int>(n) - 1 && v.y <= sor.points.back().y)) {
+            fail(pt,
+                 "incorrect point in surface of revolution (radii >= 0, heights "
+                 "increasing)");
+        }
+        sor.points.emplace_back(v.x, v.y);
+    }
+    if (accept_word("open")) sor.open = true;
+    return sor;
+}
+
+Shape SceneParser::parse_prism() {
+    Prism prism;
+    while (true) {
+        if (accept_word("linear_spline")) {
+            prism.spline = SplineKind::Linear;
+        } else if (accept_word("quadratic_spline")) {
+            prism.spline = SplineKind::Quadratic;
+        } else if (accept_word("cubic_spline")) {
+            prism.spline = SplineKind::Cubic;
+        } else if (accept_word("bezier_spline")) {
+            prism.spline = SplineKind::Bezier;
+        } else if (accept_word("linear_sweep")) {
+            prism.conic = false;
+        } else if (accept_word("conic_sweep")) {
+            prism.conic = true;
+        } else {
+            break;
+        }
+    }
+    prism.height1 = parse_float();
+    accept_comma();
+    prism.height2 = parse_float();
+    accept_comma();
+    if (prism.height1 > prism.height2) std::swap(prism.height1, prism.height2);
+    Token at = peek(0);
+    const double n = parse_float();
+    if (n < 3.0 || n > 1e7) fail(at, "a prism needs at least three points");
+    for (int i = 0; i < static_cast<int>(n); ++i) {
+        accept_comma();
+        const glm::dvec3 v = parse_vector();
+        prism.points.emplace_back(v.x, v.y);
+    }
+    if (accept_word("open")) prism.open = true;
+    return prism;
+}
+
+Shape SceneParser::parse_poly(const Token& kw) {
+    const std::string& w = kw.text();
+    Polynomial poly;
+    Token at = peek(0);
+    if (w == "poly") {
+        const double order = parse_float();
+        if (order < 2.0 || order > 35.0 || std::floor(order) != order) {
+            fail(at, "poly order " + format_str(order, 0, -1) + ": must be 2 to 35");
+        }
+        poly.order = static_cast<int>(order);
+        accept_comma();
+    } else {
+        poly.order = w == "cubic" ? 3 : 4;
+    }
+    const int count = (poly.order + 1) * (poly.order + 2) * (poly.order + 3) / 6;
+    Token open = expect_punct("<", "before the coefficients of '" + w + "'");
+    while (!peek_punct(">")) {
+        if (!poly.coefficients.empty()) accept_comma();
+        if (peek_punct(">")) break;
+        poly.coefficients.push_back(parse_float());
+    }
+    next();
+    if (static_cast<int>(poly.coefficients.size()) != count) {
+        fail(open, "'" + w + "' of order " + std::to_string(poly.order) + " needs " +
+                       std::to_string(count) + " coefficients, got " +
+                       std::to_string(poly.coefficients.size()));
+    }
+    return poly;
 }
 
 std::string SceneParser::find_scene_file(const std::string& name,
@@ -555,203 +566,222 @@ glm::dvec3 nonzero_normal(glm::dvec3 n) {
 
 }  // namespace
 
-ObjectNode SceneParser::parse_mesh(const Token& kw) {
-    std::vector<Texture> textures;  // per-triangle textures; faces refer to them (-1: none)
+/// A mesh's faces as parsed, with the texture each one names (an index into `textures`, -1:
+/// none).
+struct SceneParser::MeshParts {
+    std::shared_ptr<MeshData> data = std::make_shared<MeshData>();
+    std::vector<Texture> textures;
     std::vector<int> face_texture;
-    auto data = std::make_shared<MeshData>();
-    glm::dvec3 inside_vector(0.0);
+};
+
+ObjectNode SceneParser::parse_mesh(const Token& kw) {
+    MeshParts parts;
     if (kw.is_word("mesh")) {
-        while (true) {
-            const Token t = peek(0);
-            if (t.is_word("triangle") || t.is_word("smooth_triangle")) {
-                Token item = next();
-                const bool smooth = item.is_word("smooth_triangle");
-                expect_open_brace(item);
-                glm::dvec3 p[3], n[3];
+        parse_mesh_items(parts);
+    } else {
+        parse_mesh2_items(kw, parts);
+    }
+    if (parts.data->faces.empty()) fail(kw, "no triangles in the " + kw.text());
+    return mesh_object(kw, parts);
+}
+
+/// mesh: triangles and smooth triangles (each with its texture, if any), inside_vector.
+void SceneParser::parse_mesh_items(MeshParts& parts) {
+    MeshData* data = parts.data.get();
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_word("triangle") || t.is_word("smooth_triangle")) {
+            Token item = next();
+            const bool smooth = item.is_word("smooth_triangle");
+            expect_open_brace(item);
+            glm::dvec3 p[3], n[3];
+            for (int i = 0; i < 3; ++i) {
+                if (i) accept_comma();
+                p[i] = parse_vector();
+                if (smooth) {
+                    accept_comma();
+                    n[i] = nonzero_normal(parse_vector());
+                }
+            }
+            if (peek_word("uv_vectors")) {
+                next();
                 for (int i = 0; i < 3; ++i) {
                     if (i) accept_comma();
-                    p[i] = parse_vector();
-                    if (smooth) {
-                        accept_comma();
-                        n[i] = nonzero_normal(parse_vector());
-                    }
+                    parse_vector();  // uv coordinates: only uv_mapping uses them
                 }
-                if (peek_word("uv_vectors")) {
-                    next();
-                    for (int i = 0; i < 3; ++i) {
-                        if (i) accept_comma();
-                        parse_vector();  // uv coordinates: only uv_mapping uses them
-                    }
+            }
+            const std::optional<Texture> tex = parse_mesh_triangle_texture();
+            expect_close_brace(item);
+            if (degenerate_triangle(p[0], p[1], p[2])) continue;
+            MeshData::Face f;
+            for (int i = 0; i < 3; ++i) {
+                f.v[i] = static_cast<int>(data->vertices.size());
+                data->vertices.push_back(as_float(p[i]));
+                if (smooth) {
+                    f.n[i] = static_cast<int>(data->normals.size());
+                    data->normals.push_back(as_float(n[i]));
                 }
-                const std::optional<Texture> tex = parse_mesh_triangle_texture();
-                expect_close_brace(item);
-                if (degenerate_triangle(p[0], p[1], p[2])) continue;
+            }
+            data->faces.push_back(f);
+            if (tex) {
+                parts.textures.push_back(*tex);
+                parts.face_texture.push_back(static_cast<int>(parts.textures.size()) - 1);
+            } else {
+                parts.face_texture.push_back(-1);
+            }
+            continue;
+        }
+        if (t.is_word("inside_vector")) {
+            next();
+            data->inside_vector = parse_vector();
+            continue;
+        }
+        break;
+    }
+}
+
+/// mesh2: vertex_vectors, normal_vectors, uv_vectors, texture_list, face_indices, uv_indices,
+/// normal_indices, inside_vector.
+void SceneParser::parse_mesh2_items(const Token& kw, MeshParts& parts) {
+    MeshData* data = parts.data.get();
+    std::vector<glm::dvec3> normals;
+    std::vector<glm::ivec3> normal_indices;
+    bool have_normal_indices = false;
+    const auto count_of = [&](const Token& item) {
+        Token at = peek(0);
+        const double n = parse_float();
+        if (n < 0.0 || n > 1e8) {
+            fail(at, "'" + item.text() + "': bad count " + format_str(n, 0, -1));
+        }
+        accept_comma();
+        return static_cast<int>(n);
+    };
+    while (true) {
+        const Token t = peek(0);
+        if (t.is_word("vertex_vectors") || t.is_word("normal_vectors") || t.is_word("uv_vectors")) {
+            Token item = next();
+            expect_open_brace(item);
+            const int n = count_of(item);
+            for (int i = 0; i < n; ++i) {
+                const glm::dvec3 v = parse_vector();
+                accept_comma();
+                if (item.is_word("vertex_vectors")) data->vertices.push_back(as_float(v));
+                if (item.is_word("normal_vectors")) normals.push_back(as_float(nonzero_normal(v)));
+            }
+            expect_close_brace(item);
+            continue;
+        }
+        if (t.is_word("texture_list")) {
+            Token item = next();
+            expect_open_brace(item);
+            const int n = count_of(item);
+            for (int i = 0; i < n; ++i) {
+                Token tk = peek(0);
+                if (!tk.is_word("texture")) {
+                    fail(tk, "expected 'texture' in texture_list, got " + describe(tk));
+                }
+                next();
+                expect_open_brace(tk);
+                parts.textures.push_back(parse_texture_body(tk));
+                expect_close_brace(tk);
+                accept_comma();
+            }
+            expect_close_brace(item);
+            continue;
+        }
+        if (t.is_word("face_indices")) {
+            Token item = next();
+            expect_open_brace(item);
+            const int n = count_of(item);
+            for (int i = 0; i < n; ++i) {
+                Token at = peek(0);
+                const glm::dvec3 v = parse_vector();
+                accept_comma();
                 MeshData::Face f;
-                for (int i = 0; i < 3; ++i) {
-                    f.v[i] = static_cast<int>(data->vertices.size());
-                    data->vertices.push_back(as_float(p[i]));
-                    if (smooth) {
-                        f.n[i] = static_cast<int>(data->normals.size());
-                        data->normals.push_back(as_float(n[i]));
+                const int nv = static_cast<int>(data->vertices.size());
+                for (int k = 0; k < 3; ++k) {
+                    f.v[k] = static_cast<int>(v[k]);
+                    if (f.v[k] < 0 || f.v[k] >= nv) {
+                        fail(at, "face index " + std::to_string(f.v[k]) + " out of range 0 to " +
+                                     std::to_string(nv - 1));
                     }
+                }
+                int tex = -1;
+                for (int k = 0; k < 3 && starts_float(peek(0)); ++k) {
+                    Token tat = peek(0);
+                    const int ti = static_cast<int>(parse_float());
+                    accept_comma();
+                    if (ti < 0 || ti >= static_cast<int>(parts.textures.size())) {
+                        fail(tat, "texture index " + std::to_string(ti) + " out of range");
+                    }
+                    if (k == 0) tex = ti;
+                    if (k == 1) unsupported(tat, "three interpolated textures on a mesh2 face");
                 }
                 data->faces.push_back(f);
-                if (tex) {
-                    textures.push_back(*tex);
-                    face_texture.push_back(static_cast<int>(textures.size()) - 1);
-                } else {
-                    face_texture.push_back(-1);
-                }
-                continue;
+                parts.face_texture.push_back(tex);
             }
-            if (t.is_word("inside_vector")) {
-                next();
-                inside_vector = parse_vector();
-                continue;
-            }
-            break;
+            expect_close_brace(item);
+            continue;
         }
-    } else {
-        // mesh2: vertex_vectors, normal_vectors, uv_vectors, texture_list, face_indices,
-        // uv_indices, normal_indices, inside_vector.
-        std::vector<glm::dvec3> normals;
-        std::vector<glm::ivec3> normal_indices;
-        bool have_normal_indices = false;
-        const auto count_of = [&](const Token& item) {
-            Token at = peek(0);
-            const double n = parse_float();
-            if (n < 0.0 || n > 1e8) {
-                fail(at, "'" + item.text() + "': bad count " + format_str(n, 0, -1));
+        if (t.is_word("normal_indices") || t.is_word("uv_indices")) {
+            Token item = next();
+            expect_open_brace(item);
+            const int n = count_of(item);
+            for (int i = 0; i < n; ++i) {
+                const glm::dvec3 v = parse_vector();
+                accept_comma();
+                if (item.is_word("normal_indices")) normal_indices.emplace_back(v);
             }
-            accept_comma();
-            return static_cast<int>(n);
-        };
-        while (true) {
-            const Token t = peek(0);
-            if (t.is_word("vertex_vectors") || t.is_word("normal_vectors") ||
-                t.is_word("uv_vectors")) {
-                Token item = next();
-                expect_open_brace(item);
-                const int n = count_of(item);
-                for (int i = 0; i < n; ++i) {
-                    const glm::dvec3 v = parse_vector();
-                    accept_comma();
-                    if (item.is_word("vertex_vectors")) data->vertices.push_back(as_float(v));
-                    if (item.is_word("normal_vectors"))
-                        normals.push_back(as_float(nonzero_normal(v)));
-                }
-                expect_close_brace(item);
-                continue;
-            }
-            if (t.is_word("texture_list")) {
-                Token item = next();
-                expect_open_brace(item);
-                const int n = count_of(item);
-                for (int i = 0; i < n; ++i) {
-                    Token tk = peek(0);
-                    if (!tk.is_word("texture")) {
-                        fail(tk, "expected 'texture' in texture_list, got " + describe(tk));
-                    }
-                    next();
-                    expect_open_brace(tk);
-                    textures.push_back(parse_texture_body(tk));
-                    expect_close_brace(tk);
-                    accept_comma();
-                }
-                expect_close_brace(item);
-                continue;
-            }
-            if (t.is_word("face_indices")) {
-                Token item = next();
-                expect_open_brace(item);
-                const int n = count_of(item);
-                for (int i = 0; i < n; ++i) {
-                    Token at = peek(0);
-                    const glm::dvec3 v = parse_vector();
-                    accept_comma();
-                    MeshData::Face f;
-                    const int nv = static_cast<int>(data->vertices.size());
-                    for (int k = 0; k < 3; ++k) {
-                        f.v[k] = static_cast<int>(v[k]);
-                        if (f.v[k] < 0 || f.v[k] >= nv) {
-                            fail(at, "face index " + std::to_string(f.v[k]) +
-                                         " out of range 0 to " + std::to_string(nv - 1));
-                        }
-                    }
-                    int tex = -1;
-                    for (int k = 0; k < 3 && starts_float(peek(0)); ++k) {
-                        Token tat = peek(0);
-                        const int ti = static_cast<int>(parse_float());
-                        accept_comma();
-                        if (ti < 0 || ti >= static_cast<int>(textures.size())) {
-                            fail(tat, "texture index " + std::to_string(ti) + " out of range");
-                        }
-                        if (k == 0) tex = ti;
-                        if (k == 1) unsupported(tat, "three interpolated textures on a mesh2 face");
-                    }
-                    data->faces.push_back(f);
-                    face_texture.push_back(tex);
-                }
-                expect_close_brace(item);
-                continue;
-            }
-            if (t.is_word("normal_indices") || t.is_word("uv_indices")) {
-                Token item = next();
-                expect_open_brace(item);
-                const int n = count_of(item);
-                for (int i = 0; i < n; ++i) {
-                    const glm::dvec3 v = parse_vector();
-                    accept_comma();
-                    if (item.is_word("normal_indices")) normal_indices.emplace_back(v);
-                }
-                if (item.is_word("normal_indices")) have_normal_indices = true;
-                expect_close_brace(item);
-                continue;
-            }
-            if (t.is_word("inside_vector")) {
-                next();
-                inside_vector = parse_vector();
-                continue;
-            }
-            break;
+            if (item.is_word("normal_indices")) have_normal_indices = true;
+            expect_close_brace(item);
+            continue;
         }
-        // Normals without normal_indices pair with the vertices (POV-Ray's shortcut).
-        if (!have_normal_indices && !normals.empty() && normals.size() == data->vertices.size()) {
-            for (const auto& f : data->faces) normal_indices.emplace_back(f.v[0], f.v[1], f.v[2]);
+        if (t.is_word("inside_vector")) {
+            next();
+            data->inside_vector = parse_vector();
+            continue;
         }
-        data->normals = normals;
-        for (std::size_t i = 0; i < data->faces.size() && i < normal_indices.size(); ++i) {
-            for (int k = 0; k < 3; ++k) {
-                const int ni = normal_indices[i][k];
-                if (ni < 0 || ni >= static_cast<int>(normals.size())) {
-                    fail(kw, "mesh2: normal index " + std::to_string(ni) + " out of range");
-                }
-                data->faces[i].n[k] = ni;
-            }
-        }
-        // Degenerate faces are left out.
-        std::vector<MeshData::Face> kept;
-        std::vector<int> kept_texture;
-        for (std::size_t i = 0; i < data->faces.size(); ++i) {
-            const auto& f = data->faces[i];
-            if (degenerate_triangle(data->vertices[f.v[0]], data->vertices[f.v[1]],
-                                    data->vertices[f.v[2]])) {
-                continue;
-            }
-            kept.push_back(f);
-            kept_texture.push_back(face_texture[i]);
-        }
-        data->faces = std::move(kept);
-        face_texture = std::move(kept_texture);
+        break;
     }
-    if (data->faces.empty()) fail(kw, "no triangles in the " + kw.text());
-    data->inside_vector = inside_vector;
+    // Normals without normal_indices pair with the vertices (POV-Ray's shortcut).
+    if (!have_normal_indices && !normals.empty() && normals.size() == data->vertices.size()) {
+        for (const auto& f : data->faces) normal_indices.emplace_back(f.v[0], f.v[1], f.v[2]);
+    }
+    data->normals = normals;
+    for (std::size_t i = 0; i < data->faces.size() && i < normal_indices.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            const int ni = normal_indices[i][k];
+            if (ni < 0 || ni >= static_cast<int>(normals.size())) {
+                fail(kw, "mesh2: normal index " + std::to_string(ni) + " out of range");
+            }
+            data->faces[i].n[k] = ni;
+        }
+    }
+    // Degenerate faces are left out.
+    std::vector<MeshData::Face> kept;
+    std::vector<int> kept_texture;
+    for (std::size_t i = 0; i < data->faces.size(); ++i) {
+        const auto& f = data->faces[i];
+        if (degenerate_triangle(data->vertices[f.v[0]], data->vertices[f.v[1]],
+                                data->vertices[f.v[2]])) {
+            continue;
+        }
+        kept.push_back(f);
+        kept_texture.push_back(parts.face_texture[i]);
+    }
+    data->faces = std::move(kept);
+    parts.face_texture = std::move(kept_texture);
+}
 
+/// The parsed mesh as an object: one mesh, or, when its triangles name textures, one mesh per
+/// texture in a union.
+ObjectNode SceneParser::mesh_object(const Token& kw, const MeshParts& parts) {
+    const std::shared_ptr<MeshData>& data = parts.data;
     ObjectNode node;
     node.kind = ObjectNode::Kind::Shape;
     node.loc = kw.loc();
     bool textured = false;
-    for (int t : face_texture) textured |= t >= 0;
+    for (int t : parts.face_texture) textured |= t >= 0;
     if (!textured) {
         node.shape = Mesh{data};
         return node;
@@ -760,7 +790,7 @@ ObjectNode SceneParser::parse_mesh(const Token& kw) {
     node.kind = ObjectNode::Kind::Union;
     std::map<int, std::shared_ptr<MeshData>> groups;
     for (std::size_t i = 0; i < data->faces.size(); ++i) {
-        auto& g = groups[face_texture[i]];
+        auto& g = groups[parts.face_texture[i]];
         if (!g) {
             g = std::make_shared<MeshData>();
             g->vertices = data->vertices;
@@ -774,7 +804,7 @@ ObjectNode SceneParser::parse_mesh(const Token& kw) {
         part.kind = ObjectNode::Kind::Shape;
         part.loc = kw.loc();
         part.shape = Mesh{g};
-        if (t >= 0) part.texture = textures[static_cast<std::size_t>(t)];
+        if (t >= 0) part.texture = parts.textures[static_cast<std::size_t>(t)];
         node.children.push_back(std::move(part));
     }
     return node;

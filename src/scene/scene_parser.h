@@ -349,6 +349,14 @@ class SceneParser {
     Numeric parse_num_factor();
     Numeric parse_factor_body();
     Numeric parse_function(const Token& name);
+    // The built-in functions by family (parse_expressions.cpp): the value, or nullopt when
+    // the name is not one of the family's.
+    std::optional<Numeric> builtin_constant(const std::string& name) const;
+    std::optional<Numeric> parse_one_float_function(const Token& name);
+    std::optional<Numeric> parse_float_list_function(const Token& name);
+    std::optional<Numeric> parse_string_argument_function(const Token& name);
+    std::optional<Numeric> parse_vector_function(const Token& name);
+    std::optional<Numeric> parse_array_function(const Token& name);
     Numeric parse_object_function(const Token& name);  // trace, inside, min/max_extent
     // ---- user functions (parse_functions.cpp) ----
     /// After 'function': [( parameters )] { expression | internal(n) }.
@@ -405,8 +413,17 @@ class SceneParser {
     Shape parse_shape_arguments(const Token& keyword);
     Shape parse_blob(const Token& keyword);
     Shape parse_polygon(const Token& keyword);
+    Shape parse_triangle(const Token& keyword);  // triangle, smooth_triangle
+    Shape parse_lathe();
+    Shape parse_sor();
+    Shape parse_prism();
+    Shape parse_poly(const Token& keyword);  // poly, cubic, quartic
     HeightField parse_height_field(const Token& keyword);
     ObjectNode parse_mesh(const Token& keyword);
+    struct MeshParts;  // a mesh's faces and their textures (parse_shapes.cpp)
+    void parse_mesh_items(MeshParts& parts);
+    void parse_mesh2_items(const Token& keyword, MeshParts& parts);
+    static ObjectNode mesh_object(const Token& keyword, const MeshParts& parts);
     Shape parse_text(const Token& keyword);
     Shape parse_isosurface(const Token& keyword);
     /// A file the scene names (a font, an image, a height field, file_exists' argument), looked
@@ -456,6 +473,12 @@ class SceneParser {
     void parse_pattern(Pattern& pattern, PatternUse use, PatternTargets& targets,
                        const Token& keyword);
     bool parse_pattern_type(Pattern& pattern, PatternUse use, PatternTargets& targets);
+    void parse_slope_pattern(Pattern& pattern);
+    bool parse_pattern_kind_modifier(Pattern& pattern, PatternUse use, PatternTargets& targets);
+    bool parse_pattern_map(Pattern& pattern, PatternUse use, PatternTargets& targets);
+    void skip_unsupported_pattern(Pattern& pattern);
+    void parse_list_pattern(Pattern& pattern, PatternKind list, PatternUse use,
+                            PatternTargets& targets);
     void parse_blend_list(Pattern& pattern, int count, PatternUse use, PatternTargets& targets);
     void parse_warp(Pattern& pattern, const Token& keyword);
     void parse_image_map(Pattern& pattern, PatternUse use, const Token& keyword, double* amount);

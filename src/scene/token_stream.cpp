@@ -100,16 +100,10 @@ std::string SceneParser::read_source(const std::string& path, const Token* at) {
     if (source_bytes_ + size > limits.max_source_bytes) too_large(source_bytes_ + size);
     std::ifstream in(path, std::ios::binary);
     if (!in) refuse(std::string("cannot be opened: ") + std::strerror(errno));
-    // Read in pieces, so that a file that grows meanwhile is still cut at the limit.
     std::string text;
     text.reserve(static_cast<std::size_t>(size));
-    char piece[1 << 16];
-    while (in) {
-        in.read(piece, sizeof piece);
-        text.append(piece, static_cast<std::size_t>(in.gcount()));
-        if (source_bytes_ + text.size() > limits.max_source_bytes)
-            too_large(source_bytes_ + text.size());
-    }
+    if (!read_at_most(in, limits.max_source_bytes - source_bytes_, text))
+        too_large(source_bytes_ + text.size());
     if (in.bad()) refuse(std::string("cannot be read: ") + std::strerror(errno));
     source_bytes_ += text.size();
     scene_.files.push_back(path);
@@ -322,8 +316,7 @@ void SceneParser::reject_unknown_word(const Token& t) {
     auto sym = t.symbol ? t.symbol : lookup(t.text());
     if (!sym) fail(t, "unknown keyword '" + t.text() + "'");
     // An opaque value where a block's item belongs: its use is what fails.
-    if (auto* opaque = sym->value.get_if<OpaqueValue>())
-        fail_opaque_use(t, *sym, *opaque);
+    if (auto* opaque = sym->value.get_if<OpaqueValue>()) fail_opaque_use(t, *sym, *opaque);
 }
 
 void SceneParser::resolve(Token& t) {

@@ -184,7 +184,10 @@ bool box_roots(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& p, 
     return true;
 }
 
-Result<PreparedShape> prepare_shape(const Primitive& primitive) {
+namespace {
+
+/// The primitive's transform: finite, invertible, and its inverse the one carried.
+Status check_transform(const Primitive& primitive) {
     const Transform& t = primitive.transform;
     const std::string name = shape_name(primitive.shape);
     if (!all_finite(t.matrix) || !all_finite(t.inverse)) {
@@ -206,148 +209,187 @@ Result<PreparedShape> prepare_shape(const Primitive& primitive) {
             }
         }
     }
+    return Ok{};
+}
+
+void prepare_sphere(const Transform& t, const Sphere& sphere, PreparedShape& s) {
+    s.radius = sphere.radius;
+    s.radius_sq = sphere.radius * sphere.radius;
+    if (linear_is_identity(t.matrix)) {
+        s.kind = ShapeKind::Sphere;
+        s.centre = transform_point(t.matrix, sphere.center);
+    } else if (const double scale = similarity_scale(t.matrix); scale > 0.0) {
+        // POV-Ray keeps a rotated or uniformly scaled sphere a sphere.
+        s.kind = ShapeKind::Sphere;
+        s.centre = transform_point(t.matrix, sphere.center);
+        s.radius = sphere.radius * scale;
+        s.radius_sq = s.radius * s.radius;
+    } else {
+        s.kind = ShapeKind::Ellipsoid;
+        s.centre = sphere.center;
+        set_local_frame(s, t, glm::dmat4(1.0), glm::dmat4(1.0));
+    }
+}
+
+Status prepare_plane(const Primitive& primitive, const Plane& plane, PreparedShape& s) {
+    const Transform& t = primitive.transform;
+    const double length = glm::length(plane.normal);
+    if (!(length > kPovEpsilon)) {
+        return make_error(where(primitive) + "plane: degenerate normal (zero length)");
+    }
+    s.kind = ShapeKind::Plane;
+    if (linear_is_identity(t.matrix)) {
+        // As POV-Ray's Plane::Translate: Distance -= normal . translation.
+        s.normal = plane.normal;
+        s.pov_distance = -plane.distance - glm::dot(plane.normal, glm::dvec3(t.matrix[3]));
+    } else {
+        const glm::dvec3 n = glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * plane.normal);
+        const glm::dvec3 on_plane = plane.normal * (plane.distance / (length * length));
+        s.normal = n;
+        s.pov_distance = -glm::dot(n, transform_point(t.matrix, on_plane));
+    }
+    return Ok{};
+}
+
+void prepare_box(const Transform& t, const Box& box, PreparedShape& s) {
+    const glm::dvec3 lo = glm::min(box.corner1, box.corner2);
+    const glm::dvec3 hi = glm::max(box.corner1, box.corner2);
+    if (linear_is_diagonal(t.matrix)) {
+        // Translated and scaled, POV-Ray moves the corners and keeps no transform.
+        s.kind = ShapeKind::Box;
+        const glm::dvec3 a = transform_point(t.matrix, lo);
+        const glm::dvec3 b = transform_point(t.matrix, hi);
+        s.lo = glm::min(a, b);
+        s.hi = glm::max(a, b);
+    } else {
+        s.kind = ShapeKind::TransformedBox;
+        s.lo = lo;
+        s.hi = hi;
+        set_local_frame(s, t, glm::dmat4(1.0), glm::dmat4(1.0));
+    }
+}
+
+Status prepare_cylinder(const Primitive& primitive, const Cylinder& cyl, PreparedShape& s) {
+    const Transform& t = primitive.transform;
+    const glm::dvec3 axis = cyl.cap - cyl.base;
+    const double length = glm::length(axis);
+    if (!(length > kPovEpsilon)) {
+        return make_error(where(primitive) + "cylinder: degenerate, base point = cap point");
+    }
+    const double radius = std::abs(cyl.radius);
+    if (!(radius > 0.0)) return make_error(where(primitive) + "cylinder: radius is 0");
+    const glm::dvec3 w = axis / length;
+    glm::dvec3 u, v;
+    orthonormal_basis(w, u, v);
+    s.kind = ShapeKind::Cylinder;
+    s.open = cyl.open;
+    set_local_frame(s, t, frame_to_world(cyl.base, u, v, w, radius, radius, length),
+                    frame_from_world(cyl.base, u, v, w, radius, radius, length));
+    return Ok{};
+}
+
+Status prepare_disc(const Primitive& primitive, const Disc& disc, PreparedShape& s) {
+    const Transform& t = primitive.transform;
+    const double length = glm::length(disc.normal);
+    if (!(length > kPovEpsilon)) {
+        return make_error(where(primitive) + "disc: degenerate normal (zero length)");
+    }
+    const glm::dvec3 w = disc.normal / length;
+    glm::dvec3 u, v;
+    orthonormal_basis(w, u, v);
+    s.kind = ShapeKind::Disc;
+    s.inner_sq = disc.hole_radius * disc.hole_radius;
+    s.outer_sq = disc.radius * disc.radius;
+    set_local_frame(s, t, frame_to_world(disc.center, u, v, w, 1.0, 1.0, 1.0),
+                    frame_from_world(disc.center, u, v, w, 1.0, 1.0, 1.0));
+    // POV-Ray carries the disc's normal in world space: transformed as a normal, normalised.
+    s.normal = glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * w);
+    return Ok{};
+}
+
+Status prepare_cone(const Primitive& primitive, const Cone& cone, PreparedShape& s) {
+    const Transform& t = primitive.transform;
+    // POV-Ray's Compute_Cone_Data: the first point is its "apex"; the bigger end goes on
+    // top, at z = 1 of a canonical cone x^2 + y^2 = z^2 whose tip is the origin.
+    glm::dvec3 apex = cone.base, base = cone.cap;
+    double apex_r = cone.base_radius, base_r = cone.cap_radius;
+    glm::dvec3 axis = apex - base;
+    const double len = glm::length(axis);
+    if (!(len >= kPovEpsilon)) {
+        return make_error(where(primitive) + "cone: degenerate, base point = cap point");
+    }
+    axis /= len;
+    s.open = cone.open;
+    glm::dvec3 u, v;
+    const auto cylinder = [&](const glm::dvec3& from, const glm::dvec3& to, double r) {
+        glm::dvec3 w = to - from;
+        const double l = glm::length(w);
+        w /= l;
+        orthonormal_basis(w, u, v);
+        s.kind = ShapeKind::Cylinder;
+        set_local_frame(s, t, frame_to_world(from, u, v, w, r, r, l),
+                        frame_from_world(from, u, v, w, r, r, l));
+    };
+    if (std::abs(apex_r - base_r) < kPovEpsilon) {
+        cylinder(base, apex, apex_r);
+        return Ok{};
+    }
+    if (apex_r < base_r) {
+        std::swap(apex, base);
+        std::swap(apex_r, base_r);
+        axis = -axis;
+    }
+    const double to_tip = base_r * len / (apex_r - base_r);
+    const glm::dvec3 origin = base - axis * to_tip;
+    const double tlen = to_tip + len;
+    if ((apex_r - base_r) * len / tlen < kPovEpsilon) {
+        cylinder(base, apex, apex_r);
+        return Ok{};
+    }
+    s.kind = ShapeKind::Cone;
+    s.cone_dist = to_tip / tlen;
+    orthonormal_basis(axis, u, v);
+    set_local_frame(s, t, frame_to_world(origin, u, v, axis, apex_r, apex_r, tlen),
+                    frame_from_world(origin, u, v, axis, apex_r, apex_r, tlen));
+    return Ok{};
+}
+
+}  // namespace
+
+Result<PreparedShape> prepare_shape(const Primitive& primitive) {
+    if (auto st = check_transform(primitive); !st) return st.error();
+    const Transform& t = primitive.transform;
 
     PreparedShape s;
     s.inverse = primitive.inverse;
 
     if (const auto* sphere = std::get_if<Sphere>(&primitive.shape)) {
-        s.radius = sphere->radius;
-        s.radius_sq = sphere->radius * sphere->radius;
-        if (linear_is_identity(t.matrix)) {
-            s.kind = ShapeKind::Sphere;
-            s.centre = transform_point(t.matrix, sphere->center);
-        } else if (const double scale = similarity_scale(t.matrix); scale > 0.0) {
-            // POV-Ray keeps a rotated or uniformly scaled sphere a sphere.
-            s.kind = ShapeKind::Sphere;
-            s.centre = transform_point(t.matrix, sphere->center);
-            s.radius = sphere->radius * scale;
-            s.radius_sq = s.radius * s.radius;
-        } else {
-            s.kind = ShapeKind::Ellipsoid;
-            s.centre = sphere->center;
-            set_local_frame(s, t, glm::dmat4(1.0), glm::dmat4(1.0));
-        }
+        prepare_sphere(t, *sphere, s);
         return s;
     }
 
     if (const auto* plane = std::get_if<Plane>(&primitive.shape)) {
-        const double length = glm::length(plane->normal);
-        if (!(length > kPovEpsilon)) {
-            return make_error(where(primitive) + "plane: degenerate normal (zero length)");
-        }
-        s.kind = ShapeKind::Plane;
-        if (linear_is_identity(t.matrix)) {
-            // As POV-Ray's Plane::Translate: Distance -= normal . translation.
-            s.normal = plane->normal;
-            s.pov_distance = -plane->distance - glm::dot(plane->normal, glm::dvec3(t.matrix[3]));
-        } else {
-            const glm::dvec3 n =
-                glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * plane->normal);
-            const glm::dvec3 on_plane = plane->normal * (plane->distance / (length * length));
-            s.normal = n;
-            s.pov_distance = -glm::dot(n, transform_point(t.matrix, on_plane));
-        }
+        if (auto st = prepare_plane(primitive, *plane, s); !st) return st.error();
         return s;
     }
 
     if (const auto* box = std::get_if<Box>(&primitive.shape)) {
-        const glm::dvec3 lo = glm::min(box->corner1, box->corner2);
-        const glm::dvec3 hi = glm::max(box->corner1, box->corner2);
-        if (linear_is_diagonal(t.matrix)) {
-            // Translated and scaled, POV-Ray moves the corners and keeps no transform.
-            s.kind = ShapeKind::Box;
-            const glm::dvec3 a = transform_point(t.matrix, lo);
-            const glm::dvec3 b = transform_point(t.matrix, hi);
-            s.lo = glm::min(a, b);
-            s.hi = glm::max(a, b);
-        } else {
-            s.kind = ShapeKind::TransformedBox;
-            s.lo = lo;
-            s.hi = hi;
-            set_local_frame(s, t, glm::dmat4(1.0), glm::dmat4(1.0));
-        }
+        prepare_box(t, *box, s);
         return s;
     }
 
     if (const auto* cyl = std::get_if<Cylinder>(&primitive.shape)) {
-        const glm::dvec3 axis = cyl->cap - cyl->base;
-        const double length = glm::length(axis);
-        if (!(length > kPovEpsilon)) {
-            return make_error(where(primitive) + "cylinder: degenerate, base point = cap point");
-        }
-        const double radius = std::abs(cyl->radius);
-        if (!(radius > 0.0)) return make_error(where(primitive) + "cylinder: radius is 0");
-        const glm::dvec3 w = axis / length;
-        glm::dvec3 u, v;
-        orthonormal_basis(w, u, v);
-        s.kind = ShapeKind::Cylinder;
-        s.open = cyl->open;
-        set_local_frame(s, t, frame_to_world(cyl->base, u, v, w, radius, radius, length),
-                        frame_from_world(cyl->base, u, v, w, radius, radius, length));
+        if (auto st = prepare_cylinder(primitive, *cyl, s); !st) return st.error();
         return s;
     }
 
     if (const auto* disc = std::get_if<Disc>(&primitive.shape)) {
-        const double length = glm::length(disc->normal);
-        if (!(length > kPovEpsilon)) {
-            return make_error(where(primitive) + "disc: degenerate normal (zero length)");
-        }
-        const glm::dvec3 w = disc->normal / length;
-        glm::dvec3 u, v;
-        orthonormal_basis(w, u, v);
-        s.kind = ShapeKind::Disc;
-        s.inner_sq = disc->hole_radius * disc->hole_radius;
-        s.outer_sq = disc->radius * disc->radius;
-        set_local_frame(s, t, frame_to_world(disc->center, u, v, w, 1.0, 1.0, 1.0),
-                        frame_from_world(disc->center, u, v, w, 1.0, 1.0, 1.0));
-        // POV-Ray carries the disc's normal in world space: transformed as a normal, normalised.
-        s.normal = glm::normalize(glm::transpose(glm::dmat3(t.inverse)) * w);
+        if (auto st = prepare_disc(primitive, *disc, s); !st) return st.error();
         return s;
     }
 
     if (const auto* cone = std::get_if<Cone>(&primitive.shape)) {
-        // POV-Ray's Compute_Cone_Data: the first point is its "apex"; the bigger end goes on
-        // top, at z = 1 of a canonical cone x^2 + y^2 = z^2 whose tip is the origin.
-        glm::dvec3 apex = cone->base, base = cone->cap;
-        double apex_r = cone->base_radius, base_r = cone->cap_radius;
-        glm::dvec3 axis = apex - base;
-        const double len = glm::length(axis);
-        if (!(len >= kPovEpsilon)) {
-            return make_error(where(primitive) + "cone: degenerate, base point = cap point");
-        }
-        axis /= len;
-        s.open = cone->open;
-        glm::dvec3 u, v;
-        const auto cylinder = [&](const glm::dvec3& from, const glm::dvec3& to, double r) {
-            glm::dvec3 w = to - from;
-            const double l = glm::length(w);
-            w /= l;
-            orthonormal_basis(w, u, v);
-            s.kind = ShapeKind::Cylinder;
-            set_local_frame(s, t, frame_to_world(from, u, v, w, r, r, l),
-                            frame_from_world(from, u, v, w, r, r, l));
-        };
-        if (std::abs(apex_r - base_r) < kPovEpsilon) {
-            cylinder(base, apex, apex_r);
-            return s;
-        }
-        if (apex_r < base_r) {
-            std::swap(apex, base);
-            std::swap(apex_r, base_r);
-            axis = -axis;
-        }
-        const double to_tip = base_r * len / (apex_r - base_r);
-        const glm::dvec3 origin = base - axis * to_tip;
-        const double tlen = to_tip + len;
-        if ((apex_r - base_r) * len / tlen < kPovEpsilon) {
-            cylinder(base, apex, apex_r);
-            return s;
-        }
-        s.kind = ShapeKind::Cone;
-        s.cone_dist = to_tip / tlen;
-        orthonormal_basis(axis, u, v);
-        set_local_frame(s, t, frame_to_world(origin, u, v, axis, apex_r, apex_r, tlen),
-                        frame_from_world(origin, u, v, axis, apex_r, apex_r, tlen));
+        if (auto st = prepare_cone(primitive, *cone, s); !st) return st.error();
         return s;
     }
 

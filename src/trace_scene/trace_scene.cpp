@@ -53,7 +53,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     if (!opt.output.empty())
         if (auto s = check_image_name(opt.output); !s) return s.error();
 
-    SceneLoadOptions lo = scene_load_options(opt.scene, opt.width, opt.height, opt.library_paths);
+    SceneLoadOptions lo = scene_load_options(opt);
     lo.strict = true;  // the tracer renders every object: none may be left out silently
     lo.object_queries = tracer_object_queries();
     lo.tolerance_px = opt.tolerance_px;
@@ -63,7 +63,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     lo.mirage_inc = opt.atmosphere ? MirageIncCheck::IfDeclared : MirageIncCheck::None;
     auto loaded = load_mirage_scene(lo);
     if (!loaded) return loaded.error();
-    const AtmosphereSettings& settings = loaded->settings;
+    const MirageSettings& settings = loaded->settings;
     if (opt.atmosphere && settings.declared) {
         // A camera under the atmosphere's ground is refused as compile refuses it (its rays
         // would start under the ground and see the ground's underside).

@@ -13,6 +13,7 @@
 #include "scene/camera.h"
 #include "trace/render.h"
 #include "util/result.h"
+#include "util/scene_input.h"
 
 namespace mirage {
 
@@ -23,16 +24,13 @@ enum class PathMode {
     Scanline,  // camera rays along their row's path (Khote & Howard); reflections per ray
 };
 
-struct TraceOptions {
-    std::string scene;                       // the .pov file
+struct TraceOptions : SceneInput {
     std::string output;                      // .png or .exr; empty: nothing written
-    int width = 320, height = 240;           // image size, pixels
     std::optional<double> tolerance_px;      // overrides Mirage_Tolerance (default 0.5), pixels
     int threads = 0;                         // worker threads; 0 = all cores
     bool scanline_paths = false;             // one path per image row (level camera only)
     bool atmosphere = true;                  // false: straight rays whatever the scene declares
     bool reference_sampling = false;         // per-ray paths sampled to the tolerance all along
-    std::vector<std::string> library_paths;  // extra include directories, searched first
     bool progress = true;                    // progress bar on stderr when it is a terminal
     std::optional<double> clock;             // --clock (POV-Ray's +K): a still at this clock
     std::map<std::string, double> declares;  // --declare (POV-Ray's Declare=)

@@ -15,6 +15,16 @@ std::string bytes_text(std::size_t n) {
     return s;
 }
 
+bool read_at_most(std::istream& in, std::size_t max_bytes, std::string& text) {
+    char piece[1 << 16];
+    while (in) {
+        in.read(piece, sizeof piece);
+        text.append(piece, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > max_bytes) return false;
+    }
+    return true;
+}
+
 Result<std::string> read_input_file(const std::string& path, const InputKind& kind) {
     namespace fs = std::filesystem;
     auto refuse = [&](const std::string& why) { return make_error(path + ": " + why); };
@@ -37,15 +47,9 @@ Result<std::string> read_input_file(const std::string& path, const InputKind& ki
     if (size > kind.max_bytes) return too_large(static_cast<std::size_t>(size));
     std::ifstream in(path, std::ios::binary);
     if (!in) return refuse(std::string("cannot be opened: ") + std::strerror(errno));
-    // Read in pieces, so that a file that grows meanwhile is still cut at the limit.
     std::string text;
     text.reserve(static_cast<std::size_t>(size));
-    char piece[1 << 16];
-    while (in) {
-        in.read(piece, sizeof piece);
-        text.append(piece, static_cast<std::size_t>(in.gcount()));
-        if (text.size() > kind.max_bytes) return too_large(text.size());
-    }
+    if (!read_at_most(in, kind.max_bytes, text)) return too_large(text.size());
     if (in.bad()) return refuse(std::string("cannot be read: ") + std::strerror(errno));
     return text;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <istream>
 #include <string>
 
 #include "util/result.h"
@@ -23,6 +24,10 @@ struct InputKind {
 /// opened, so a FIFO does not block), larger than kind.max_bytes (checked before reading and
 /// while reading, so a file that grows meanwhile is cut at the limit) or unreadable.
 Result<std::string> read_input_file(const std::string& path, const InputKind& kind);
+
+/// Reads `in` to its end into `text`, in pieces, so that a file that grows meanwhile is still
+/// cut at the limit: false as soon as `text` holds more than `max_bytes` bytes.
+bool read_at_most(std::istream& in, std::size_t max_bytes, std::string& text);
 
 /// "1.5 MiB", "12 KiB", "300 bytes": a size for messages.
 std::string bytes_text(std::size_t bytes);

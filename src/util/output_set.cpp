@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "util/check.h"
 #include "util/output_path.h"
 
 namespace mirage {
@@ -47,6 +48,10 @@ OutputSet::OutputSet(std::vector<std::string> inputs) : inputs_(std::move(inputs
 
 OutputSet::~OutputSet() {
     for (const Staged& s : staged_) std::remove(s.temporary.c_str());
+    if (!staging_folder_.empty()) {
+        std::error_code ec;
+        fs::remove_all(staging_folder_, ec);
+    }
 }
 
 void OutputSet::protect(const std::vector<std::string>& inputs) {
@@ -85,6 +90,30 @@ Status OutputSet::adopt(const std::string& temporary, const std::string& target)
     }
     staged_.push_back({*out, temporary});
     return Ok{};
+}
+
+Result<std::string> OutputSet::make_staging_folder(const std::string& out_dir) {
+    const fs::path folder = fs::path(out_dir) / (".staging-" + std::to_string(::getpid()));
+    std::error_code ec;
+    fs::remove_all(folder, ec);
+    fs::create_directories(folder, ec);
+    if (ec) return make_error(folder.string() + ": cannot create: " + ec.message());
+    staging_folder_ = folder.string();
+    staging_out_dir_ = out_dir;
+    return staging_folder_;
+}
+
+Status OutputSet::commit_staging_folder() {
+    MIRAGE_CHECK(!staging_folder_.empty());
+    const fs::path folder(staging_folder_);
+    std::error_code ec;
+    for (const auto& e : fs::recursive_directory_iterator(folder, ec)) {
+        if (!e.is_regular_file()) continue;
+        const fs::path target = fs::path(staging_out_dir_) / fs::relative(e.path(), folder);
+        if (auto s = adopt(e.path().string(), target.string()); !s) return s;
+    }
+    if (ec) return make_error(staging_folder_ + ": cannot list: " + ec.message());
+    return commit();
 }
 
 Status OutputSet::write_text(const std::string& path, std::string_view content) {

@@ -47,6 +47,16 @@ class OutputSet {
     /// targets renamed already get back what they held).  The message names the file.
     Status commit();
 
+    /// A staging folder for outputs written under a folder of their own (`out_dir`), at their
+    /// paths relative to it: `out_dir/.staging-<pid>`, made afresh and removed with the set.
+    /// Returns its path.
+    Result<std::string> make_staging_folder(const std::string& out_dir);
+
+    /// Adopts every file under the staging folder as the output at the same path below
+    /// `out_dir` (each checked as adopt() checks: none may replace an input), then commits
+    /// the set.
+    Status commit_staging_folder();
+
     /// The targets staged so far, in order.
     std::vector<std::string> targets() const;
 
@@ -57,6 +67,7 @@ class OutputSet {
     };
     std::vector<std::string> inputs_;
     std::vector<Staged> staged_;
+    std::string staging_folder_, staging_out_dir_;  // make_staging_folder's
 };
 
 }  // namespace mirage

@@ -107,5 +107,46 @@ sphere { <2.5, 1.6, 14>, 1 pigment { color rgb <0.8, 0.2, 0.1> } }
         EXPECT_NE(e.path().filename().string().rfind(".staging", 0), 0u) << e.path();
 }
 
+// The study's results may not replace any file the scene was read from: the scene, and each
+// file it includes (here one named as the summary is, in the output folder).
+TEST(DesignStudy, RefusesToReplaceAFileTheSceneIncludes) {
+    const fs::path dir = mirage::testing::test_temp_path("mirage_design_study_include");
+    fs::remove_all(dir);
+    fs::create_directories(dir / "out");
+    const std::string included = (dir / "out" / "summary.md").string();
+    const std::string content = "#declare Sphere_Colour = rgb <0.8, 0.2, 0.1>;\n";
+    std::ofstream(included) << content;
+    const std::string scene = (dir / "desert.pov").string();
+    std::ofstream(scene) << R"(#version 3.7;
+#declare Mirage_Preset = "paper";
+#include "mirage.inc"
+#include "out/summary.md"
+camera { location <0, 1.5, 0> look_at <0, 1.5, 10> right x * image_width / image_height angle 60 }
+light_source { <-30, 60, -20>, color rgb 1 }
+plane { y, 0 pigment { color rgb 0.7 } }
+sphere { <2.5, 1.6, 14>, 1 pigment { color Sphere_Colour } }
+)";
+    StudyOptions o;
+    o.scene = scene;
+    o.width = 48;
+    o.height = 36;
+    o.out_dir = (dir / "out").string();
+    o.uniform_counts = {4};
+    o.graded_levels = {};
+    o.rays_per_row = 2;
+    o.render = false;
+    auto r = run_design_study(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.message().find("would overwrite"), std::string::npos) << r.message();
+    EXPECT_NE(r.message().find("summary.md"), std::string::npos) << r.message();
+    auto after = read_file(included);
+    ASSERT_TRUE(after.ok());
+    EXPECT_EQ(*after, content);
+    // None of the other results is put in place either.
+    EXPECT_FALSE(fs::exists(dir / "out" / "study.csv"));
+    for (const auto& e : fs::directory_iterator(dir / "out"))
+        EXPECT_NE(e.path().filename().string().rfind(".staging", 0), 0u) << e.path();
+}
+
 }  // namespace
 }  // namespace mirage

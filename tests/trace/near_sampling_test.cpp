@@ -38,7 +38,7 @@ struct Loaded {
     Scene scene;
     Profile profile;
     double tolerance_px = 0.5;
-    AtmosphereSettings settings;
+    MirageSettings settings;
 };
 
 Loaded load(const std::string& path, int width, int height) {
