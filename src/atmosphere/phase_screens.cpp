@@ -26,6 +26,28 @@ double disc_average(double qr) {
     return qr < 1e-6 ? 1.0 - qr * qr / 8.0 : 2.0 * std::cyl_bessel_j(1.0, qr) / qr;
 }
 
+// sin(x) for the tilts' sums, several times as fast as the library's and free of branches,
+// so that a loop of it vectorizes: x reduced to [-pi, pi] by the nearest multiple of 2 pi
+// (rounded by adding and taking away 1.5 * 2^52; exact enough for |x| up to 1e6, whose
+// reduction then rounds by 1e-10), then Taylor's series to x^19, whose error there is below
+// pi^21 / 21! = 6e-10.  Plain double arithmetic: the same bytes on every thread.
+inline double fast_sin(double x) {
+    constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
+    const double k = (x * (0.5 / kPi) + kRound) - kRound;
+    const double r = (x - k * 6.283185307179586232) - k * 2.4492935982947064e-16;
+    const double r2 = r * r;
+    double p = -1.0 / 121645100408832000.0;  // -1 / 19!
+    p = p * r2 + 1.0 / 355687428096000.0;
+    p = p * r2 - 1.0 / 1307674368000.0;
+    p = p * r2 + 1.0 / 6227020800.0;
+    p = p * r2 - 1.0 / 39916800.0;
+    p = p * r2 + 1.0 / 362880.0;
+    p = p * r2 - 1.0 / 5040.0;
+    p = p * r2 + 1.0 / 120.0;
+    p = p * r2 - 1.0 / 6.0;
+    return r + r * r2 * p;
+}
+
 bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -45,6 +67,9 @@ Status check_screen_layout(const ScreenLayout& l) {
     if (!(l.aperture_m >= 0.0 && l.aperture_m <= kMaxApertureM))
         return make_error("aperture " + shortest(l.aperture_m) + " m must be from 0 to " +
                           shortest(kMaxApertureM) + " m");
+    if (l.modes_per_e_fold < 1 || l.modes_per_e_fold > kMaxModesPerEFold)
+        return make_error("modes per e-fold " + std::to_string(l.modes_per_e_fold) +
+                          " must be from 1 to " + std::to_string(kMaxModesPerEFold));
     return Ok{};
 }
 
@@ -63,16 +88,17 @@ Result<PhaseScreens> PhaseScreens::make(const TurbulenceSettings& settings,
                                                   : glm::dvec3(1.0, 0.0, 0.0);
     const glm::dvec3 u = glm::normalize(glm::cross(helper, e));
     const glm::dvec3 v = glm::cross(e, u);
-    // From kappa0 / 20 (the spectrum is flat below kappa0: the shell's tilt variance falls as
-    // q^4) to 3.5 kappa_m (exp(-12) of the spectrum left) or, with an aperture of radius R, to
-    // 30 / R, beyond which the aperture leaves less than 1e-4 of the tilt variance
-    // ((2 J1(x) / x)^2 < 8 / (pi x^3)).
+    // From kappa0 / 4 (the spectrum is flat below kappa0: a shell's share of the tilt variance
+    // falls as q^4, and below kappa0 / 4 all of them hold less than 1e-3 of it, as they do of
+    // the phase's structure function at r << L0) to 3.5 kappa_m (exp(-12) of the spectrum left)
+    // or, with an aperture of radius R, to 16 / R, beyond which the aperture leaves about 1 % of
+    // the tilt variance ((2 J1(x) / x)^2 < 8 / (pi x^3)).
     const double radius = 0.5 * layout.aperture_m;
     double top = 3.5 * 5.92 / settings.inner_scale_m;
-    if (radius > 0.0) top = std::min(top, 30.0 / radius);
-    const double bottom = 2.0 * kPi / settings.outer_scale_m / 20.0;
+    if (radius > 0.0) top = std::min(top, 16.0 / radius);
+    const double bottom = 2.0 * kPi / settings.outer_scale_m / 4.0;
     const double lo = std::log(bottom), hi = std::log(std::max(top, 2.0 * bottom));
-    const int n = static_cast<int>(std::ceil((hi - lo) * settings.modes_per_e_fold));
+    const int n = static_cast<int>(std::ceil((hi - lo) * layout.modes_per_e_fold));
     const double step = (hi - lo) / n;
     out.screens_.resize(layout.count);
     for (int j = 0; j < layout.count; ++j) {
@@ -83,7 +109,6 @@ Result<PhaseScreens> PhaseScreens::make(const TurbulenceSettings& settings,
         std::mt19937_64 rng(seq);
         Screen& screen = out.screens_[j];
         screen.modes.reserve(n);
-        screen.tilt_factor.reserve(n);
         const double first_angle = 2.0 * kPi * uniform(rng);
         for (int m = 0; m < n; ++m) {
             const double q = std::exp(lo + (m + uniform(rng)) * step);
@@ -97,7 +122,11 @@ Result<PhaseScreens> PhaseScreens::make(const TurbulenceSettings& settings,
             mode.amplitude = std::sqrt(2.0 * shell);
             mode.phase = 2.0 * kPi * uniform(rng);
             screen.modes.push_back(mode);
-            screen.tilt_factor.push_back(disc_average(q * radius));
+            screen.kx.push_back(mode.wavevector.x);
+            screen.ky.push_back(mode.wavevector.y);
+            screen.kz.push_back(mode.wavevector.z);
+            screen.phase.push_back(mode.phase);
+            screen.weight.push_back(mode.amplitude * disc_average(q * radius));
         }
     }
     return out;
@@ -120,11 +149,21 @@ glm::dvec3 PhaseScreens::tilt(int j, const glm::dvec3& p, double t) const {
     MIRAGE_CHECK(j >= 0 && j < count());
     const glm::dvec3 x = p - settings_.wind * t;
     const Screen& s = screens_[j];
+    const std::size_t n = s.kx.size();
+    // The modes' sines first (a loop without a sum, which the compiler vectorizes), then the
+    // sum in the modes' order.
+    thread_local std::vector<double> sines;
+    sines.resize(n);
+    double* out = sines.data();
+    const double *kx = s.kx.data(), *ky = s.ky.data(), *kz = s.kz.data();
+    const double *phase = s.phase.data(), *weight = s.weight.data();
+    for (std::size_t k = 0; k < n; ++k)
+        out[k] = weight[k] * fast_sin(kx[k] * x.x + ky[k] * x.y + kz[k] * x.z + phase[k]);
     glm::dvec3 g(0.0);
-    for (std::size_t k = 0; k < s.modes.size(); ++k) {
-        const ScreenMode& m = s.modes[k];
-        g -= (m.amplitude * s.tilt_factor[k] * std::sin(glm::dot(m.wavevector, x) + m.phase)) *
-             m.wavevector;
+    for (std::size_t k = 0; k < n; ++k) {
+        g.x -= out[k] * kx[k];
+        g.y -= out[k] * ky[k];
+        g.z -= out[k] * kz[k];
     }
     return g;
 }

@@ -38,13 +38,18 @@ struct ScreenLayout {
     double reach_m = 100.0;              // how far the turbulent air reaches along the axis
     int count = 16;                      // screens
     double aperture_m = 0.0;             // the camera's aperture diameter D (0: a point)
+    // Wavenumbers per factor e of |q| on each screen: a ray sums the modes of every screen it
+    // crosses, so a few per screen make its tilt Gaussian (PhaseScreens tests), and each costs a
+    // sine per crossing.
+    int modes_per_e_fold = 6;
 };
 
 constexpr int kMaxScreens = 1024;
 constexpr double kMaxApertureM = 10.0;
 
 /// Checks the layout: a finite origin, a non-zero axis, reach from kMinScaleM to 1e9 m, count
-/// from 1 to kMaxScreens, aperture from 0 to kMaxApertureM.  The message names the value.
+/// from 1 to kMaxScreens, aperture from 0 to kMaxApertureM, modes per e-fold from 1 to
+/// kMaxModesPerEFold.  The message names the value.
 Status check_screen_layout(const ScreenLayout& layout);
 
 /// One screen's two-dimensional mode: amplitude * cos(wavevector . x + phase), the wavevector
@@ -85,7 +90,9 @@ class PhaseScreens {
   private:
     struct Screen {
         std::vector<ScreenMode> modes;
-        std::vector<double> tilt_factor;  // per mode: the aperture's average, 2 J1(x) / x
+        // For the tilt's sum, by component so that it vectorizes: the wavevector, the phase and
+        // the amplitude times the aperture's average 2 J1(x) / x.
+        std::vector<double> kx, ky, kz, phase, weight;
     };
     TurbulenceSettings settings_;
     ScreenLayout layout_;
