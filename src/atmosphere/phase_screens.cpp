@@ -59,8 +59,8 @@ Status check_screen_layout(const ScreenLayout& l) {
     const double a = glm::length(l.axis);
     if (!(a > 0.0 && std::isfinite(a))) return make_error("the screens' axis must be a direction");
     if (!(l.reach_m >= kMinScaleM && l.reach_m <= 1e9))
-        return make_error("the turbulent air's reach " + shortest(l.reach_m) +
-                          " m must be from " + shortest(kMinScaleM) + " to 1e+09 m");
+        return make_error("the turbulent air's reach " + shortest(l.reach_m) + " m must be from " +
+                          shortest(kMinScaleM) + " to 1e+09 m");
     if (l.count < 1 || l.count > kMaxScreens)
         return make_error("screens " + std::to_string(l.count) + " must be from 1 to " +
                           std::to_string(kMaxScreens));
@@ -84,8 +84,8 @@ Result<PhaseScreens> PhaseScreens::make(const TurbulenceSettings& settings,
     out.spacing_ = layout.reach_m / layout.count;
     const glm::dvec3 e = out.layout_.axis;
     // Two unit vectors across the axis.
-    const glm::dvec3 helper = std::abs(e.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0)
-                                                  : glm::dvec3(1.0, 0.0, 0.0);
+    const glm::dvec3 helper =
+        std::abs(e.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
     const glm::dvec3 u = glm::normalize(glm::cross(helper, e));
     const glm::dvec3 v = glm::cross(e, u);
     // From kappa0 / 4 (the spectrum is flat below kappa0: a shell's share of the tilt variance

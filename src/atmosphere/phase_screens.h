@@ -33,11 +33,11 @@ namespace mirage {
 /// Where the screens stand: planes across `axis`, `count` of them at (j + 1/2) reach / count
 /// from `origin` (j = 0 .. count - 1), each for the slab of air reach / count thick around it.
 struct ScreenLayout {
-    glm::dvec3 origin{0.0};              // the eye, m
-    glm::dvec3 axis{0.0, 0.0, 1.0};      // the line of sight: the screens' normal (made unit)
-    double reach_m = 100.0;              // how far the turbulent air reaches along the axis
-    int count = 16;                      // screens
-    double aperture_m = 0.0;             // the camera's aperture diameter D (0: a point)
+    glm::dvec3 origin{0.0};          // the eye, m
+    glm::dvec3 axis{0.0, 0.0, 1.0};  // the line of sight: the screens' normal (made unit)
+    double reach_m = 100.0;          // how far the turbulent air reaches along the axis
+    int count = 16;                  // screens
+    double aperture_m = 0.0;         // the camera's aperture diameter D (0: a point)
     // Wavenumbers per factor e of |q| on each screen: a ray sums the modes of every screen it
     // crosses, so a few per screen make its tilt Gaussian (PhaseScreens tests), and each costs a
     // sine per crossing.
@@ -60,7 +60,8 @@ class PhaseScreens {
   public:
     /// Draws the screens of `settings.seed` (each screen its own stream of it); both must pass
     /// their checks.
-    static Result<PhaseScreens> make(const TurbulenceSettings& settings, const ScreenLayout& layout);
+    static Result<PhaseScreens> make(const TurbulenceSettings& settings,
+                                     const ScreenLayout& layout);
 
     int count() const { return static_cast<int>(screens_.size()); }
     /// Screen j's distance from the origin along the axis, m.
@@ -136,9 +137,9 @@ class ScreenWalk {
 
     const PhaseScreens* screens_;
     double t_;
-    glm::dvec3 at_;              // the unperturbed point reached
-    glm::dvec3 offset_{0.0};     // the perturbed point minus the unperturbed, m
-    glm::dvec3 turn_{0.0};       // the direction's change so far, rad
+    glm::dvec3 at_;           // the unperturbed point reached
+    glm::dvec3 offset_{0.0};  // the perturbed point minus the unperturbed, m
+    glm::dvec3 turn_{0.0};    // the direction's change so far, rad
 };
 
 }  // namespace mirage

@@ -89,7 +89,8 @@ TEST(PhaseScreens, ModesLieAcrossTheAxisAndScreensDiffer) {
     for (int j = 0; j < s.count(); ++j)
         for (const auto& m : s.modes(j))
             EXPECT_LT(std::abs(glm::dot(m.wavevector, e)), 1e-12 * glm::length(m.wavevector));
-    EXPECT_NE(s.phase(0, glm::dvec3(0.3, 0.1, 0.2), 0.0), s.phase(1, glm::dvec3(0.3, 0.1, 0.2), 0.0));
+    EXPECT_NE(s.phase(0, glm::dvec3(0.3, 0.1, 0.2), 0.0),
+              s.phase(1, glm::dvec3(0.3, 0.1, 0.2), 0.0));
 }
 
 TEST(PhaseScreens, TiltIsThePhasesGradientWithoutAperture) {
@@ -258,8 +259,9 @@ TEST(PhaseScreens, OneRealizationsTiltsAreGaussianOverLongPaths) {
         const double variance = mean_square(t);
         double largest = 0.0;
         for (double x : t) largest = std::max(largest, x * x / variance);
-        std::printf("  seed %d: variance / formula %.3f, largest tilt^2 / variance %.1f (bound %.1f)\n",
-                    7000 + k, variance / ap, largest, bound);
+        std::printf(
+            "  seed %d: variance / formula %.3f, largest tilt^2 / variance %.1f (bound %.1f)\n",
+            7000 + k, variance / ap, largest, bound);
         EXPECT_NEAR(variance / ap, 1.0, 0.20) << "seed " << 7000 + k;
         EXPECT_LT(largest, bound) << "seed " << 7000 + k;
     }
@@ -299,10 +301,11 @@ TEST(PhaseScreens, ApertureAveragesTheTilt) {
     const double variance = mean_square(stack_tilts(s, l, 200, 16, 90000));
     const double expected = tilt_variance_integral(s, l.reach_m, l.aperture_m);
     const double point = tilt_variance_integral(s, l.reach_m, 0.0);
-    std::printf("  D = 5 cm: <alpha^2> %.4g, integral %.4g (ratio %.3f), 2.91 C_n^2 L D^-1/3 %.4g, "
-                "a point %.4g\n",
-                variance, expected, variance / expected,
-                2.91 * s.cn2 * l.reach_m * std::pow(l.aperture_m, -1.0 / 3.0), point);
+    std::printf(
+        "  D = 5 cm: <alpha^2> %.4g, integral %.4g (ratio %.3f), 2.91 C_n^2 L D^-1/3 %.4g, "
+        "a point %.4g\n",
+        variance, expected, variance / expected,
+        2.91 * s.cn2 * l.reach_m * std::pow(l.aperture_m, -1.0 / 3.0), point);
     EXPECT_NEAR(variance / expected, 1.0, 0.20);
     EXPECT_LT(expected, 0.5 * point);  // the aperture matters at these scales
 }

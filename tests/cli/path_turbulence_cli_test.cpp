@@ -32,8 +32,9 @@ std::vector<std::string> dashed(const std::string& svg) {
 TEST(PathTurbulenceCli, DrawsEachRealizationOfEachRay) {
     const auto dir = test_temp_path("path_turbulence");
     std::filesystem::create_directories(dir);
-    const std::string fan = "path --preset hot-road --eye-height 1.5 --elevation-deg -0.3 "
-                            "--fan-count 5 --svg ";
+    const std::string fan =
+        "path --preset hot-road --eye-height 1.5 --elevation-deg -0.3 "
+        "--fan-count 5 --svg ";
     auto calm = run_tool(fan + quoted(dir / "calm.svg"));
     ASSERT_EQ(calm.exit_code, 0) << calm.err;
     EXPECT_TRUE(dashed(read_bytes(dir / "calm.svg")).empty());
@@ -63,13 +64,15 @@ TEST(PathTurbulenceCli, DrawsEachRealizationOfEachRay) {
 TEST(PathTurbulenceCli, BadValuesAreNamed) {
     const auto dir = test_temp_path("path_turbulence_bad");
     std::filesystem::create_directories(dir);
-    const std::string fan =
-        "path --preset hot-road --eye-height 1.5 --elevation-deg -0.3 --svg " + quoted(dir / "f.svg");
-    auto r = run_tool("path --preset hot-road --eye-height 1.5 --elevation-deg -0.3 "
-                      "--turbulence-cn2 1e-12");
+    const std::string fan = "path --preset hot-road --eye-height 1.5 --elevation-deg -0.3 --svg " +
+                            quoted(dir / "f.svg");
+    auto r = run_tool(
+        "path --preset hot-road --eye-height 1.5 --elevation-deg -0.3 "
+        "--turbulence-cn2 1e-12");
     EXPECT_NE(r.exit_code, 0);
-    EXPECT_NE(r.err.find("--turbulence-cn2 draws perturbed rays on the ray diagram: give --svg FILE"),
-              std::string::npos)
+    EXPECT_NE(
+        r.err.find("--turbulence-cn2 draws perturbed rays on the ray diagram: give --svg FILE"),
+        std::string::npos)
         << r.err;
     r = run_tool(fan + " --turbulence-cn2 -1e-12");
     EXPECT_NE(r.exit_code, 0);

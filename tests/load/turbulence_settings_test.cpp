@@ -38,7 +38,9 @@ class TurbulenceSettingsLoad : public ::testing::Test {
         EXPECT_FALSE(r.ok()) << settings;
         return r.ok() ? std::string() : r.message();
     }
-    std::string at(int line) { return (dir_ / "s.pov").string() + ":" + std::to_string(line) + ":10: "; }
+    std::string at(int line) {
+        return (dir_ / "s.pov").string() + ":" + std::to_string(line) + ":10: ";
+    }
 };
 
 TEST_F(TurbulenceSettingsLoad, ReadsTheValuesAndTheDefaults) {
@@ -84,11 +86,13 @@ TEST_F(TurbulenceSettingsLoad, EachValueOutOfRangeIsRefusedWithItsPlace) {
     EXPECT_EQ(error(cn2 + "#declare Mirage_Turbulence_Outer = 1e6;"),
               at(2) + "Mirage_Turbulence_Outer = 1e+06 must be from 1e-05 to 1e+05 (m)");
     EXPECT_EQ(error(cn2 + "#declare Mirage_Turbulence_Inner = 3;"),
-              at(2) + "the inner scale 3 m (Mirage_Turbulence_Inner) must be below the outer "
-                      "scale 1 m (Mirage_Turbulence_Outer)");
+              at(2) +
+                  "the inner scale 3 m (Mirage_Turbulence_Inner) must be below the outer "
+                  "scale 1 m (Mirage_Turbulence_Outer)");
     EXPECT_EQ(error(cn2 + "#declare Mirage_Turbulence_Outer = 0.001;"),
-              at(2) + "the inner scale 0.005 m (Mirage_Turbulence_Inner) must be below the outer "
-                      "scale 0.001 m (Mirage_Turbulence_Outer)");
+              at(2) +
+                  "the inner scale 0.005 m (Mirage_Turbulence_Inner) must be below the outer "
+                  "scale 0.001 m (Mirage_Turbulence_Outer)");
     EXPECT_EQ(error(cn2 + "#declare Mirage_Wind = <2000, 0, 0>;"),
               at(2) + "Mirage_Wind = <2000, 0, 0>: its speed 2000 m/s must be at most 1000 m/s");
     EXPECT_EQ(error(cn2 + "#declare Mirage_Wind = 3;"),

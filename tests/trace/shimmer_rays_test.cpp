@@ -102,8 +102,9 @@ TEST(ShimmerRays, ImageShiftsHaveTheSphericalWavesVariance) {
     }
     const double variance = sum / n;
     const double length = kWall - kEye.z;
-    const double plane = 2.0 * kPi * kPi * length *
-                         integrate_kappa([&](double k) { return k * k * k * index_spectrum(t, k); });
+    const double plane = 2.0 * kPi * kPi * length * integrate_kappa([&](double k) {
+                             return k * k * k * index_spectrum(t, k);
+                         });
     std::printf("  <alpha^2> = %.4g rad^2, spherical wave %.4g (ratio %.3f), plane wave %.4g\n",
                 variance, plane / 3.0, variance / (plane / 3.0), plane);
     EXPECT_NEAR(variance / (plane / 3.0), 1.0, 0.20);

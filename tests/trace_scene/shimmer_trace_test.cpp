@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 
 class ShimmerTrace : public ::testing::Test {
   protected:
-    fs::path dir_ = fs::path(::testing::TempDir()) / ("mirage_shimmer_" + std::to_string(::getpid()));
+    fs::path dir_ =
+        fs::path(::testing::TempDir()) / ("mirage_shimmer_" + std::to_string(::getpid()));
     void SetUp() override { fs::create_directories(dir_); }
     void TearDown() override { fs::remove_all(dir_); }
 
@@ -66,19 +67,22 @@ TEST_F(ShimmerTrace, TheStillShimmersAndIsReproducible) {
     EXPECT_GT(differing(calm, one), 50) << "the turbulence moves no pixel";
     EXPECT_EQ(differing(one, two), 0) << "1 and 2 threads differ";
     // C_n^2 = 0 is the calm scene, byte for byte, whatever goes with it.
-    EXPECT_EQ(differing(calm, trace(scene("zero", "#declare Mirage_Turbulence_Cn2 = 0;\n"
-                                                  "#declare Mirage_Wind = <2, 0, 0>;"))),
+    EXPECT_EQ(differing(calm, trace(scene("zero",
+                                          "#declare Mirage_Turbulence_Cn2 = 0;\n"
+                                          "#declare Mirage_Wind = <2, 0, 0>;"))),
               0);
     // Another seed, other air.
-    const Image other = trace(scene("other", "#declare Mirage_Turbulence_Cn2 = 1e-12;\n"
-                                             "#declare Mirage_Turbulence_Seed = 8;\n"
-                                             "#declare Mirage_Wind = <2, 0, 0>;"));
+    const Image other = trace(scene("other",
+                                    "#declare Mirage_Turbulence_Cn2 = 1e-12;\n"
+                                    "#declare Mirage_Turbulence_Seed = 8;\n"
+                                    "#declare Mirage_Wind = <2, 0, 0>;"));
     EXPECT_GT(differing(one, other), 50);
 }
 
 TEST_F(ShimmerTrace, TheClockMovesTheAirWithTheWind) {
-    const std::string windy = scene("windy", "#declare Mirage_Turbulence_Cn2 = 1e-12;\n"
-                                             "#declare Mirage_Wind = <2, 0, 0>;");
+    const std::string windy = scene("windy",
+                                    "#declare Mirage_Turbulence_Cn2 = 1e-12;\n"
+                                    "#declare Mirage_Wind = <2, 0, 0>;");
     const std::string still = scene("still", "#declare Mirage_Turbulence_Cn2 = 1e-12;");
     const Image at0 = trace(windy, 0, 0.0);
     EXPECT_EQ(differing(at0, trace(windy)), 0) << "no clock is clock 0";
