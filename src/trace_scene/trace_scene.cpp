@@ -193,7 +193,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         // Refused for a tilted camera even without an atmosphere: the option asks for it.
         auto scanline = ScanlinePropagator::make(curved, scene.camera, opt.width, opt.height);
         if (!scanline) return scanline.error();
-        if (opt.atmosphere && bends) {
+        if (opt.atmosphere && (bends || shimmers)) {
             propagator = std::make_unique<ScanlinePropagator>(std::move(*scanline));
             report.mode = PathMode::Scanline;
         }

@@ -35,8 +35,10 @@ class ShimmerTrace : public ::testing::Test {
                             "scale 0.02 } finish { ambient 1 diffuse 0 } }\n";
         return p.string();
     }
-    Image trace(const std::string& path, int threads = 0, std::optional<double> clock = {}) {
+    Image trace(const std::string& path, int threads = 0, std::optional<double> clock = {},
+                bool scanline = false) {
         TraceOptions o;
+        o.scanline_paths = scanline;
         o.scene = path;
         o.width = 64;
         o.height = 48;
@@ -77,6 +79,26 @@ TEST_F(ShimmerTrace, TheStillShimmersAndIsReproducible) {
                                     "#declare Mirage_Turbulence_Seed = 8;\n"
                                     "#declare Mirage_Wind = <2, 0, 0>;"));
     EXPECT_GT(differing(one, other), 50);
+}
+
+// Per-scanline paths (one path per row, Khote & Howard) are walked through the air too, with or
+// without an atmosphere that bends them.
+TEST_F(ShimmerTrace, ScanlinePathsShimmerToo) {
+    const std::string air = "#declare Mirage_Turbulence_Cn2 = 1e-12;";
+    const Image calm = trace(scene("calm", ""), 0, {}, true);
+    const Image one = trace(scene("air", air), 1, {}, true);
+    EXPECT_GT(differing(calm, one), 50);
+    EXPECT_EQ(differing(one, trace(scene("air", air), 2, {}, true)), 0);
+    const fs::path straight = dir_ / "straight.pov";
+    std::ofstream(straight) << air << "\ncamera { location <0, 1.2, 0> look_at <0, 1.2, 50> angle 2 }\n"
+                            << "box { <-5, 0, 50>, <5, 3, 50.1> pigment { checker rgb 0 rgb 1 "
+                               "scale 0.02 } finish { ambient 1 diffuse 0 } }\n";
+    const fs::path still = dir_ / "still.pov";
+    std::ofstream(still) << "camera { location <0, 1.2, 0> look_at <0, 1.2, 50> angle 2 }\n"
+                         << "box { <-5, 0, 50>, <5, 3, 50.1> pigment { checker rgb 0 rgb 1 "
+                            "scale 0.02 } finish { ambient 1 diffuse 0 } }\n";
+    EXPECT_GT(differing(trace(still.string(), 0, {}, true), trace(straight.string(), 0, {}, true)),
+              50);
 }
 
 TEST_F(ShimmerTrace, TheClockMovesTheAirWithTheWind) {
