@@ -90,7 +90,8 @@ TEST_F(ShimmerTrace, ScanlinePathsShimmerToo) {
     EXPECT_GT(differing(calm, one), 50);
     EXPECT_EQ(differing(one, trace(scene("air", air), 2, {}, true)), 0);
     const fs::path straight = dir_ / "straight.pov";
-    std::ofstream(straight) << air << "\ncamera { location <0, 1.2, 0> look_at <0, 1.2, 50> angle 2 }\n"
+    std::ofstream(straight) << air
+                            << "\ncamera { location <0, 1.2, 0> look_at <0, 1.2, 50> angle 2 }\n"
                             << "box { <-5, 0, 50>, <5, 3, 50.1> pigment { checker rgb 0 rgb 1 "
                                "scale 0.02 } finish { ambient 1 diffuse 0 } }\n";
     const fs::path still = dir_ / "still.pov";
@@ -99,6 +100,24 @@ TEST_F(ShimmerTrace, ScanlinePathsShimmerToo) {
                             "scale 0.02 } finish { ambient 1 diffuse 0 } }\n";
     EXPECT_GT(differing(trace(still.string(), 0, {}, true), trace(straight.string(), 0, {}, true)),
               50);
+}
+
+// The air reaches the farthest bounded object; a scene without one must say how far.
+TEST_F(ShimmerTrace, AirWithoutAReachIsRefused) {
+    const fs::path p = dir_ / "open.pov";
+    std::ofstream(p) << "#declare Mirage_Turbulence_Cn2 = 1e-12;\n"
+                        "camera { location <0, 1.2, 0> look_at <0, 1.2, 50> }\n"
+                        "plane { y, 0 pigment { rgb 1 } }\n";
+    TraceOptions o;
+    o.scene = p.string();
+    o.progress = false;
+    auto r = trace_scene(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message(), p.string() +
+                               ": Mirage_Turbulence_Cn2: the scene has no bounded object to say "
+                               "how far the turbulent air reaches: declare Mirage_Extent");
+    std::ofstream(p, std::ios::app) << "#declare Mirage_Extent = 100;\n";
+    EXPECT_TRUE(trace_scene(o).ok());
 }
 
 TEST_F(ShimmerTrace, TheClockMovesTheAirWithTheWind) {
