@@ -21,6 +21,7 @@
 #include "atmosphere/vanishing.h"
 #include "cli/commands.h"
 #include "report/ray_diagram.h"
+#include "trace/curved_propagator.h"
 #include "report/transfer_diagram.h"
 #include "util/csv.h"
 #include "util/format.h"
@@ -48,6 +49,11 @@ struct PathOptions {
     std::string svg;
     double fan_from_deg = kNaN, fan_to_deg = kNaN;
     int fan_count = 13;
+    // Turbulent air (docs/turbulence.md): the fan's rays through `realizations` of it, dashed.
+    double turbulence_cn2 = kNaN;
+    double turbulence_inner = kNaN, turbulence_outer = kNaN, turbulence_aperture = 0.0;
+    double turbulence_seed = 1.0;
+    int realizations = 4;
     std::string batch;
     double object_distance = kNaN, object_height = kNaN;  // the vanishing of a point's mirage
 
@@ -146,6 +152,62 @@ void run_batch(const PathOptions& o) {
     std::cout << *out;
 }
 
+// The fan's rays through `realizations` of turbulent air (phase screens across the level line of
+// sight, out to the drawn distance, seeds from --turbulence-seed on), each walked as the tracer
+// walks it (followed_points), cut where it reaches the ground.
+void add_perturbed_rays(const PathOptions& o, RayDiagramSettings& st) {
+    TurbulenceSettings t;
+    t.cn2 = o.turbulence_cn2;
+    if (!std::isnan(o.turbulence_inner)) t.inner_scale_m = o.turbulence_inner;
+    if (!std::isnan(o.turbulence_outer)) t.outer_scale_m = o.turbulence_outer;
+    if (!(o.turbulence_seed >= 0.0 && o.turbulence_seed <= 4294967295.0 &&
+          std::floor(o.turbulence_seed) == o.turbulence_seed))
+        fail("--turbulence-seed " + shortest(o.turbulence_seed) +
+             ": must be a whole number from 0 to 4294967295");
+    if (auto c = check_turbulence(t); !c) fail("--turbulence-cn2 and its options: " + c.message());
+    if (!(t.cn2 > 0.0)) fail("--turbulence-cn2 0: nothing to draw (give more than 0)");
+    const double y0 = flattened_height(o.eye_height, st.atmosphere.earth_radius());
+    const glm::dvec3 eye(0.0, y0, 0.0);
+    ScreenLayout layout;
+    layout.origin = eye;
+    layout.reach_m = st.max_distance;
+    layout.aperture_m = o.turbulence_aperture;
+    if (auto c = check_screen_layout(layout); !c) fail("--turbulence-aperture: " + c.message());
+    for (int r = 0; r < o.realizations; ++r) {
+        t.seed = static_cast<std::uint64_t>(o.turbulence_seed) + r;
+        auto screens = PhaseScreens::make(t, layout);
+        if (!screens) fail(screens.message());
+        CurvedSettings cs;
+        cs.general = st.atmosphere;
+        cs.tolerance_rad = st.tolerance_rad;
+        cs.tolerance_m = st.tolerance_m;
+        cs.max_dz = st.max_distance;
+        cs.eye = eye;
+        cs.turbulence = std::make_shared<const PhaseScreens>(std::move(*screens));
+        for (int j = 0; j < st.count; ++j) {
+            const double f = st.count == 1 ? 0.5 : double(j) / (st.count - 1);
+            const double e = (st.elev_from_deg + f * (st.elev_to_deg - st.elev_from_deg)) * M_PI / 180;
+            const std::vector<glm::dvec3> points =
+                followed_points(cs, eye, glm::dvec3(0.0, std::sin(e), std::cos(e)), st.max_distance);
+            OverlaidRay ray;
+            ray.fan_ray = j;
+            for (std::size_t k = 0; k < points.size(); ++k) {
+                const glm::dvec3& p = points[k];
+                if (p.y < 0.0 && k > 0) {  // to the ground, then no further
+                    const glm::dvec3& a = points[k - 1];
+                    const double u = a.y / (a.y - p.y);
+                    ray.points.push_back({a.z + u * (p.z - a.z), 0.0});
+                    break;
+                }
+                ray.points.push_back({p.z, p.y});
+            }
+            st.overlaid.push_back(std::move(ray));
+        }
+    }
+    st.overlaid_label = "through turbulent air, C_n^2 " + shortest(t.cn2) + " m^-2/3, " +
+                        std::to_string(o.realizations) + " realizations";
+}
+
 void write_svg(const PathOptions& o, const Atmosphere& atm, const std::string& label,
                const std::vector<std::string>& legend, double elev_deg) {
     RayDiagramSettings st;
@@ -179,6 +241,7 @@ void write_svg(const PathOptions& o, const Atmosphere& atm, const std::string& l
         }
         st.max_distance = std::min(reach, 1e6);
     }
+    if (!std::isnan(o.turbulence_cn2)) add_perturbed_rays(o, st);
     auto svg = ray_diagram_svg(st);
     if (!svg) fail(svg.message());
     OutputSet outputs(input_files(o));
@@ -757,6 +820,18 @@ void setup_path_command(CLI::App& app) {
     sub->add_option("--fan-count", o->fan_count, "rays in the fan")
         ->check(CLI::Range(1, kMaxFanRays))
         ->capture_default_str();
+    sub->add_option("--turbulence-cn2", o->turbulence_cn2,
+                    "with --svg: draw the fan's rays through turbulent air of this C_n^2, m^-2/3 "
+                    "(dashed; docs/turbulence.md)");
+    sub->add_option("--turbulence-inner", o->turbulence_inner, "its inner scale, m (default 0.005)");
+    sub->add_option("--turbulence-outer", o->turbulence_outer, "its outer scale, m (default 1)");
+    sub->add_option("--turbulence-aperture", o->turbulence_aperture,
+                    "the aperture its tilts are averaged over, m (default 0: a point)");
+    sub->add_option("--turbulence-seed", o->turbulence_seed, "the first realization's seed")
+        ->capture_default_str();
+    sub->add_option("--realizations", o->realizations, "realizations of the turbulent air drawn")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
     sub->add_option("--batch", o->batch,
                     "evaluate the rays of a CSV (reference columns) and print a CSV")
         ->check(non_empty_name());
@@ -832,12 +907,15 @@ void setup_path_command(CLI::App& app) {
             "--help",     "--preset",   "--profile",       "--json",
             "--svg",      "--batch",    "--surface-layer", "--inversion",
             "--sounding", "--isobaric", "--index",         "--general",
-            "--ducts",    "--png",      "--fan-count",     "--transfer-count"};
+            "--ducts",    "--png",      "--fan-count",     "--transfer-count",
+            "--realizations"};
         if (!opt->get_name().empty() && !kNotNumbers.count(opt->get_name()) &&
             opt->get_type_size() != 0)
             opt->check(number);
     }
     sub->callback([o] {
+        if (!std::isnan(o->turbulence_cn2) && o->svg.empty())
+            fail("--turbulence-cn2 draws perturbed rays on the ray diagram: give --svg FILE");
         if (!o->batch.empty() && (!o->svg.empty() || !o->png.empty()))
             fail(std::string(!o->svg.empty() ? "--svg" : "--png") +
                  " draws one ray's diagram: it does not go with --batch, which prints a CSV of "

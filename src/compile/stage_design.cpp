@@ -150,7 +150,7 @@ std::optional<std::string> turning_under_the_float_step(const CompileContext& ct
 // the elevation of the eye's rays that turn there), the layers kept off skimming pixel rays;
 // the designs fitted to the camera's rays need the exponential closed forms and are refused.
 Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& rays) {
-    const AtmosphereSettings& st = ctx.settings;
+    const MirageSettings& st = ctx.settings;
     const Atmosphere& air = *ctx.air;
     Design d;
     d.stack = air_layers(air, {});
@@ -398,7 +398,7 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
     if (ctx.many_origins) return design_many_origins(ctx, rays);
     if (ctx.air) return design_air_layers(ctx, rays);
     Design d;
-    const AtmosphereSettings& st = ctx.settings;
+    const MirageSettings& st = ctx.settings;
     d.stack.profile = ctx.profile;
     d.stack.excess = {eta_sq_excess(ctx.profile, ctx.eye_y)};
     if (!st.declared || ctx.profile.kind == ProfileKind::None) {

@@ -139,7 +139,7 @@ std::optional<glm::dvec3> entry_into_atmosphere(const glm::dvec3& origin, const 
 }
 
 Result<Design> design_many_origins(const CompileContext& ctx, const CameraRays& rays) {
-    const AtmosphereSettings& st = ctx.settings;
+    const MirageSettings& st = ctx.settings;
     Design d;
     const bool air = static_cast<bool>(ctx.air);
     if (air) {

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
 #include <memory>
 #include <vector>
 
 #include "atmosphere/exact_path.h"
 #include "atmosphere/general_profile.h"
+#include "atmosphere/phase_screens.h"
 #include "util/edit_distance.h"
 #include "util/format.h"
 
@@ -32,6 +34,13 @@ const char* const kKnown[] = {
     "Mirage_Layers",
     "Mirage_Layer_Count",
     "Mirage_Exaggeration",
+    // turbulent air (docs/turbulence.md)
+    "Mirage_Turbulence_Cn2",
+    "Mirage_Turbulence_Inner",
+    "Mirage_Turbulence_Outer",
+    "Mirage_Turbulence_Seed",
+    "Mirage_Turbulence_Aperture",
+    "Mirage_Wind",
     // real air (the general engine)
     "Mirage_Sounding",
     "Mirage_Sounding_Max_Gap",
@@ -292,6 +301,55 @@ Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     return Ok{};
 }
 
+// Turbulent air: Mirage_Turbulence_Cn2 (0 or none: off) and the settings that go with it, each
+// checked with its place.
+Status read_turbulence(const Reader& r, MirageSettings& s) {
+    MIRAGE_TRY(cn2, ranged(r, "Mirage_Turbulence_Cn2", 0.0, kMaxCn2, "m^-2/3"));
+    MIRAGE_TRY(inner, ranged(r, "Mirage_Turbulence_Inner", kMinScaleM, kMaxScaleM, "m"));
+    MIRAGE_TRY(outer, ranged(r, "Mirage_Turbulence_Outer", kMinScaleM, kMaxScaleM, "m"));
+    MIRAGE_TRY(seed, ranged(r, "Mirage_Turbulence_Seed", 0.0, kMaxTurbulenceSeed,
+                            "a whole number"));
+    MIRAGE_TRY(aperture, ranged(r, "Mirage_Turbulence_Aperture", 0.0, kMaxApertureM, "m"));
+    MIRAGE_TRY(wind, r.vector("Mirage_Wind", "<1.5, 0, 0> (m/s)"));
+    if (!cn2) {
+        for (const char* name : {"Mirage_Turbulence_Inner", "Mirage_Turbulence_Outer",
+                                 "Mirage_Turbulence_Seed", "Mirage_Turbulence_Aperture",
+                                 "Mirage_Wind"})
+            if (r.has(name))
+                return make_error(r.at(name) + name +
+                                  " without Mirage_Turbulence_Cn2 (the turbulence's strength)");
+        return Ok{};
+    }
+    if (seed && std::floor(*seed) != *seed)
+        return make_error(r.at("Mirage_Turbulence_Seed") + "Mirage_Turbulence_Seed = " +
+                          shortest(*seed) + " must be a whole number from 0 to " +
+                          shortest(kMaxTurbulenceSeed));
+    TurbulenceSettings t;
+    t.cn2 = *cn2;
+    if (inner) t.inner_scale_m = *inner;
+    if (outer) t.outer_scale_m = *outer;
+    if (!(t.inner_scale_m < t.outer_scale_m))
+        return make_error(r.at(inner ? "Mirage_Turbulence_Inner" : "Mirage_Turbulence_Outer") +
+                          "the inner scale " + shortest(t.inner_scale_m) +
+                          " m (Mirage_Turbulence_Inner) must be below the outer scale " +
+                          shortest(t.outer_scale_m) + " m (Mirage_Turbulence_Outer)");
+    if (wind) {
+        const double speed = glm::length(*wind);
+        if (!(speed <= kMaxWindMps))
+            return make_error(r.at("Mirage_Wind") + "Mirage_Wind = <" + shortest(wind->x) + ", " +
+                              shortest(wind->y) + ", " + shortest(wind->z) + ">: its speed " +
+                              shortest(speed) + " m/s must be at most " + shortest(kMaxWindMps) +
+                              " m/s");
+        t.wind = *wind;
+    }
+    if (seed) t.seed = static_cast<std::uint64_t>(*seed);
+    if (auto st = check_turbulence(t); !st)
+        return make_error(r.at("Mirage_Turbulence_Cn2") + "Mirage_Turbulence_Cn2: " + st.message());
+    s.turbulence_aperture_m = aperture ? *aperture : 0.0;
+    if (t.cn2 > 0.0) s.turbulence = t;
+    return Ok{};
+}
+
 }  // namespace
 
 std::vector<std::string> atmosphere_setting_names() {
@@ -450,6 +508,7 @@ Result<MirageSettings> read_atmosphere_settings(const Scene& scene) {
             return c.error();
         s.layer_count = static_cast<int>(*count);
     }
+    if (auto st = read_turbulence(r, s); !st) return st.error();
     return s;
 }
 

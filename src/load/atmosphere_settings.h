@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "atmosphere/profile.h"
+#include "atmosphere/turbulence.h"
 #include "scene/scene.h"
 #include "util/result.h"
 
@@ -69,10 +70,15 @@ struct MirageSettings {
     std::shared_ptr<const AirSpec> air;
     std::vector<std::string> input_files;  // files the atmosphere was read from (a sounding)
     double exaggeration = 1.0;             // Mirage_Exaggeration: n^2 - n0^2 times this (not air)
+    // Turbulent air (Mirage_Turbulence_Cn2 > 0, docs/turbulence.md): its settings in metres and
+    // m/s; unset when the scene declares none or C_n^2 = 0.
+    std::optional<TurbulenceSettings> turbulence;
+    double turbulence_aperture_m = 0.0;  // Mirage_Turbulence_Aperture: the camera's, m
 };
 
-/// The type's former name, for code not yet moved over (compile/stage_design*.cpp).
-using AtmosphereSettings = MirageSettings;
+// Turbulence's defaults in a scene: an inner scale of 5 mm and an outer one of 1 m (the air a
+// metre or two above hot ground), no wind, seed 1, a point aperture.
+constexpr double kMaxTurbulenceSeed = 4294967295.0;  // Mirage_Turbulence_Seed: 0 to 2^32 - 1
 
 /// Whether the scene's atmosphere bends rays at all.
 bool bends_rays(const MirageSettings& settings);

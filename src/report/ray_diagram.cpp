@@ -116,7 +116,18 @@ Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
         for (const auto& p : rays[j].curve) s << f.px(p.x) << "," << f.py(p.y) << " ";
         s << "\"/>\n";
     }
-    s << "</g>\n<g clip-path=\"url(#plot)\">\n";
+    s << "</g>\n";
+    if (!st.overlaid.empty()) {
+        s << "<g clip-path=\"url(#plot)\" fill=\"none\" stroke-width=\"0.7\" opacity=\"0.8\">\n";
+        for (const OverlaidRay& r : st.overlaid) {
+            const double t = rays.size() == 1 ? 0.5 : double(r.fan_ray) / (rays.size() - 1);
+            s << "<polyline stroke=\"" << fan_colour(t) << "\" stroke-dasharray=\"3,2\" points=\"";
+            for (const auto& p : r.points) s << f.px(p.x) << "," << f.py(phys(p.y)) << " ";
+            s << "\"/>\n";
+        }
+        s << "</g>\n";
+    }
+    s << "<g clip-path=\"url(#plot)\">\n";
     for (size_t j = 0; j < rays.size(); ++j) {
         const double t = rays.size() == 1 ? 0.5 : double(j) / (rays.size() - 1);
         const auto& d = rays[j];
@@ -164,6 +175,7 @@ Result<std::string> ray_diagram_svg(const RayDiagramSettings& st) {
     line("dots: polyline samples");
     line("diamonds: turning points");
     line("crosses: ground hits");
+    if (!st.overlaid.empty()) line("dashed: " + st.overlaid_label);
     if (st.atmosphere.quadratic_profile() &&
         !find_ducts(*st.atmosphere.quadratic_profile()).empty())
         line("shaded: ducts (level rays trapped)");

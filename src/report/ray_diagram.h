@@ -4,6 +4,7 @@
 // the sphere against distances along it.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,13 @@ namespace mirage {
 
 /// The most rays a diagram draws.
 constexpr int kMaxFanRays = 500;
+
+/// A ray drawn thin over the fan: points (horizontal distance, model height) in m, and the fan ray
+/// it goes with (its colour).
+struct OverlaidRay {
+    int fan_ray = 0;
+    std::vector<glm::dvec2> points;
+};
 
 struct RayDiagramSettings {
     Atmosphere atmosphere;
@@ -26,6 +34,9 @@ struct RayDiagramSettings {
     double max_distance = 40.0;       // horizontal extent drawn, m
     double tolerance_rad = 1e-3;      // sampling tolerance, angle seen from the eye
     double tolerance_m = 0.0;         // sampling tolerance, fixed part, m
+    // Drawn thin over the fan (mirage path's rays through turbulent air), with a legend line.
+    std::vector<OverlaidRay> overlaid;
+    std::string overlaid_label;
     int width_px = 960;
     int height_px = 560;
 };

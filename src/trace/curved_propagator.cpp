@@ -464,9 +464,78 @@ CurvedPath reference_path(const CurvedSettings& settings, const glm::dvec3& orig
     return cp;
 }
 
-// Marches `cp` from `origin` on from the march's current point (which is `origin`).
+// A ray's walk through the turbulent air's screens (CurvedSettings::turbulence), in scene
+// units (the screens are in metres).
+class Shimmer {
+  public:
+    Shimmer(const CurvedSettings& s, const glm::dvec3& start)
+        : unit_(s.unit_m), walk_(*s.turbulence, s.turbulence_time_s, start * s.unit_m) {}
+
+    /// Marches on to the image of the path's point `to`: the kinks on the way, then it.  True
+    /// on a hit.
+    bool to(PolylineMarch& march, const glm::dvec3& to) {
+        walk_.to(to * unit_, points());
+        for (const glm::dvec3& p : points())
+            if (march.segment_to(p / unit_)) return true;
+        return false;
+    }
+    /// The last straight ray along unit d: the kinks ahead, then the ray turned by them all.
+    bool ray(PolylineMarch& march, const glm::dvec3& d) {
+        walk_.ray(d, points());
+        for (const glm::dvec3& p : points())
+            if (march.segment_to(p / unit_)) return true;
+        return march.ray(walk_.direction(d));
+    }
+    glm::dvec3 direction(const glm::dvec3& d) const { return walk_.direction(d); }
+    /// The image of the path's point `to` without marching (for plots).
+    void to(const glm::dvec3& to, std::vector<glm::dvec3>& out) {
+        walk_.to(to * unit_, points());
+        for (const glm::dvec3& p : points()) out.push_back(p / unit_);
+    }
+    void ray(const glm::dvec3& d, std::vector<glm::dvec3>& out) {
+        walk_.ray(d, points());
+        for (const glm::dvec3& p : points()) out.push_back(p / unit_);
+    }
+
+  private:
+    static std::vector<glm::dvec3>& points() {
+        thread_local std::vector<glm::dvec3> p;
+        return p;
+    }
+    double unit_;
+    ScreenWalk walk_;
+};
+
+// The final direction of a sampled path and the sky's direction when it escapes (on the
+// curved Earth, turned from the local horizontal where that slope holds to the start's).
+struct PathEndDirections {
+    glm::dvec3 final_direction;
+    std::optional<glm::dvec3> sky;
+};
+
+PathEndDirections end_directions(const glm::dvec2& heading, const CurvedPath& cp) {
+    double slope = cp.path.end_slope;
+    if (cp.path.end == PathEnd::Ground) {
+        slope = cp.general ? cp.general->slope_at(cp.general->dz_ground())
+                           : slope_at(cp.ray, cp.ray.dz_ground);
+    }
+    MIRAGE_CHECK(std::isfinite(slope));
+    PathEndDirections out;
+    out.final_direction = glm::normalize(glm::dvec3(heading.x, slope, heading.y));
+    if (cp.earth_radius > 0.0 && cp.path.end != PathEnd::Ground) {
+        // The slope is the path's in the flattened frame, against the local horizontal at
+        // end_slope_dz; the sky is seen from the start, whose horizontal is tilted from that
+        // by end_slope_dz / R.
+        const double e = std::atan(slope) - cp.path.end_slope_dz / cp.earth_radius;
+        out.sky = glm::dvec3(std::cos(e) * heading.x, std::sin(e), std::cos(e) * heading.y);
+    }
+    return out;
+}
+
+// Marches `cp` from `origin` on from the march's current point (which is `origin`), through
+// the screens of `shimmer` when given.
 PathHit march_from(PolylineMarch& march, const glm::dvec3& origin, const glm::dvec2& heading,
-                   const CurvedPath& cp) {
+                   const CurvedPath& cp, Shimmer* shimmer = nullptr) {
     const auto& points = cp.path.points;
     const auto& clear = cp.path.clear_length;
     auto world = [&](const glm::dvec2& p) {
@@ -474,40 +543,49 @@ PathHit march_from(PolylineMarch& march, const glm::dvec3& origin, const glm::dv
     };
     // The first sample is the start itself.
     for (std::size_t k = 1; k < points.size(); ++k) {
-        if (k <= clear.size() && clear[k - 1] > 0.0) {
+        if (shimmer) {
+            // A stretch known clear of the scene is tested all the same: the perturbed path
+            // is not the one the sampler cleared.
+            if (shimmer->to(march, world(points[k]))) return march.result();
+        } else if (k <= clear.size() && clear[k - 1] > 0.0) {
             march.skip_to(world(points[k]), clear[k - 1]);
         } else if (march.segment_to(world(points[k]))) {
             return march.result();
         }
     }
-    double slope = cp.path.end_slope;
-    if (cp.path.end == PathEnd::Ground) {
-        slope = cp.general ? cp.general->slope_at(cp.general->dz_ground())
-                           : slope_at(cp.ray, cp.ray.dz_ground);
-    }
-    MIRAGE_CHECK(std::isfinite(slope));
-    const glm::dvec3 final_direction = glm::normalize(glm::dvec3(heading.x, slope, heading.y));
-    if (cp.path.end_clear) {
-        march.skip_ray(final_direction);
+    const PathEndDirections end = end_directions(heading, cp);
+    if (shimmer) {
+        shimmer->ray(march, end.final_direction);
+    } else if (cp.path.end_clear) {
+        march.skip_ray(end.final_direction);
     } else {
-        march.ray(final_direction);
+        march.ray(end.final_direction);
     }
     PathHit result = march.result();
-    if (!result.hit && cp.earth_radius > 0.0 && cp.path.end != PathEnd::Ground) {
-        // The slope is the path's in the flattened frame, against the local horizontal at
-        // end_slope_dz; the sky is seen from the start, whose horizontal is tilted from that
-        // by end_slope_dz / R.
-        const double e = std::atan(slope) - cp.path.end_slope_dz / cp.earth_radius;
-        result.direction =
-            glm::dvec3(std::cos(e) * heading.x, std::sin(e), std::cos(e) * heading.y);
+    if (!result.hit && end.sky) {
+        result.direction = shimmer ? shimmer->direction(*end.sky) : *end.sky;
     }
     return result;
 }
 
 PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec2& heading,
-              const CurvedPath& cp) {
+              const CurvedPath& cp, const CurvedSettings& settings) {
     PolylineMarch march(accel, origin);
+    if (settings.turbulence) {
+        Shimmer shimmer(settings, origin);
+        return march_from(march, origin, heading, cp, &shimmer);
+    }
     return march_from(march, origin, heading, cp);
+}
+
+// A straight ray, walked through the screens when the settings have them.
+PathHit march_straight(const SceneAccel& accel, const RayStart& start,
+                       const CurvedSettings& settings, const StraightPropagator& straight) {
+    if (!settings.turbulence) return straight.propagate(accel, start);
+    PolylineMarch march(accel, start.origin);
+    Shimmer shimmer(settings, start.origin);
+    shimmer.ray(march, start.direction);
+    return march.result();
 }
 
 // Whether a ray goes straight, for the reference sampling (curved_path).
@@ -567,8 +645,41 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const Scen
     return cp;
 }
 
-PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin, const CurvedPath& cp) {
-    return march(accel, origin, cp.heading, cp);
+PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin, const CurvedPath& cp,
+                          const CurvedSettings& settings) {
+    return march(accel, origin, cp.heading, cp, settings);
+}
+
+std::vector<glm::dvec3> followed_points(const CurvedSettings& settings, const glm::dvec3& origin,
+                                        const glm::dvec3& direction, double tail) {
+    std::vector<glm::dvec3> out{origin};
+    const std::optional<CurvedPath> cp = curved_path(settings, origin, direction, 0.0);
+    std::optional<Shimmer> shimmer;
+    if (settings.turbulence) shimmer.emplace(settings, origin);
+    glm::dvec3 last = direction;
+    if (cp) {
+        auto world = [&](const glm::dvec2& p) {
+            return glm::dvec3(origin.x + p.x * cp->heading.x, p.y, origin.z + p.x * cp->heading.y);
+        };
+        for (std::size_t k = 1; k < cp->path.points.size(); ++k) {
+            if (shimmer) {
+                shimmer->to(world(cp->path.points[k]), out);
+            } else {
+                out.push_back(world(cp->path.points[k]));
+            }
+        }
+        last = end_directions(cp->heading, *cp).final_direction;
+    }
+    if (shimmer) {
+        shimmer->ray(last, out);
+        last = shimmer->direction(last);
+    }
+    out.push_back(out.back() + tail * last);
+    return out;
+}
+
+double bounded_reach(const SceneAccel& accel, const glm::dvec3& eye) {
+    return scene_reach(accel, eye);
 }
 
 CurvedPropagator::CurvedPropagator(const CurvedSettings& settings) : settings_(settings) {
@@ -584,33 +695,40 @@ PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& sta
         glm::dvec3 at_ground = start.origin + t * start.direction;
         at_ground.y = 0.0;
         PolylineMarch march(accel, start.origin);
-        if (march.segment_to(at_ground)) return march.result();
+        std::optional<Shimmer> shimmer;
+        if (settings_.turbulence) shimmer.emplace(settings_, start.origin);
+        if (shimmer ? shimmer->to(march, at_ground) : march.segment_to(at_ground))
+            return march.result();
         RayStart rest = start;
         rest.origin = at_ground;
         rest.travelled = start.travelled + march.path_length();
         const std::optional<CurvedPath> cp =
             curved_path(settings_, accel, rest.origin, rest.direction, rest.travelled);
         if (!cp) {
-            march.ray(start.direction);
+            if (shimmer) {
+                shimmer->ray(march, start.direction);
+            } else {
+                march.ray(start.direction);
+            }
             return march.result();
         }
-        return march_from(march, rest.origin, cp->heading, *cp);
+        return march_from(march, rest.origin, cp->heading, *cp, shimmer ? &*shimmer : nullptr);
     }
     if (settings_.sampling == PathSampling::Reference) {
         const auto cp =
             settings_.general
                 ? curved_path(settings_, accel, start.origin, start.direction, start.travelled)
                 : curved_path(settings_, start.origin, start.direction, start.travelled);
-        if (!cp) return straight_.propagate(accel, start);
-        return march_curved_path(accel, start.origin, *cp);
+        if (!cp) return march_straight(accel, start, settings_, straight_);
+        return march_curved_path(accel, start.origin, *cp, settings_);
     }
     // One path per thread, its storage reused from ray to ray.
     thread_local CurvedPath cp;
     if (!near_surfaces_path(settings_, &accel, start.origin, start.direction, start.travelled,
                             cp)) {
-        return straight_.propagate(accel, start);
+        return march_straight(accel, start, settings_, straight_);
     }
-    return march_curved_path(accel, start.origin, cp);
+    return march_curved_path(accel, start.origin, cp, settings_);
 }
 
 ScanlinePropagator::ScanlinePropagator(const CurvedSettings& settings, std::vector<Row> rows)
@@ -657,11 +775,12 @@ PathHit ScanlinePropagator::propagate(const SceneAccel& accel, const RayStart& s
     const Row& r = rows_[row];
     // The row's path turned into this ray's azimuth.
     const glm::dvec2 heading(d.x / hl, d.z / hl);
-    if (r.path) return march(accel, start.origin, heading, *r.path);
-    if (d.y / hl == r.slope) return straight_.propagate(accel, start);
+    const CurvedSettings& settings = per_ray_.settings();
+    if (r.path) return march(accel, start.origin, heading, *r.path, settings);
+    if (d.y / hl == r.slope) return march_straight(accel, start, settings, straight_);
     RayStart turned = start;
     turned.direction = glm::normalize(glm::dvec3(heading.x, r.slope, heading.y));
-    return straight_.propagate(accel, turned);
+    return march_straight(accel, turned, settings, straight_);
 }
 
 bool camera_is_level(const Camera& camera) {

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "atmosphere/exact_path.h"
 #include "atmosphere/exact_ray.h"
 #include "atmosphere/path_sampler.h"
+#include "atmosphere/phase_screens.h"
 #include "atmosphere/sampler.h"
 #include "scene/scene.h"
 #include "trace/propagator.h"
@@ -51,6 +53,12 @@ struct CurvedSettings {
     // Where the camera rays start.  Rays from there share an index, by azimuth, of the boxes
     // their vertical planes can cross (built once per scene and thread).
     std::optional<glm::dvec3> eye = std::nullopt;
+    // Turbulent air (docs/turbulence.md): when set, every ray's path, curved or straight, camera
+    // or reflected, is walked through these screens (ScreenWalk) at time turbulence_time_s, each
+    // screen it crosses a kink.  The screens are in metres: scene units times unit_m.
+    std::shared_ptr<const PhaseScreens> turbulence = nullptr;
+    double turbulence_time_s = 0.0;  // s: the scene's clock
+    double unit_m = 1.0;             // metres per scene unit
 };
 
 /// One ray's path in its vertical plane: the exact ray and its sampled polyline, and the
@@ -80,7 +88,8 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const Scen
                                       const glm::dvec3& origin, const glm::dvec3& direction,
                                       double travelled);
 
-/// Marches `path` from `origin` through the scene, its vertical plane along path.heading.
+/// Marches `path` from `origin` through the scene, its vertical plane along path.heading; with
+/// `settings.turbulence`, walked through its screens (CurvedSettings).
 /// After the last sample the ray goes on straight: with the path's asymptotic (or cut) slope
 /// for a path that ends in the air, and along the exact path's tangent where it reaches the
 /// ground at y = 0 when no surface is there (a scene without a ground object: the ray goes
@@ -89,7 +98,18 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const Scen
 /// turned from the local horizontal where that slope holds to the start's.  Segments marked clear
 /// (SampledPath::clear_length) are followed without testing them against the scene.
 PathHit march_curved_path(const SceneAccel& accel, const glm::dvec3& origin,
-                          const CurvedPath& path);
+                          const CurvedPath& path, const CurvedSettings& settings = {});
+
+/// The points (scene units) of a ray's path as the tracer follows it: the exact path's samples
+/// (a straight ray: its origin alone) walked through the turbulent air's screens when
+/// `settings.turbulence` is set, then `tail` scene units along its last direction.  For plots
+/// (mirage path's fan of perturbed rays).
+std::vector<glm::dvec3> followed_points(const CurvedSettings& settings, const glm::dvec3& origin,
+                                        const glm::dvec3& direction, double tail);
+
+/// The horizontal reach of the scene's bounded objects from `eye`: the farthest corner of their
+/// boxes (0 without any).
+double bounded_reach(const SceneAccel& accel, const glm::dvec3& eye);
 
 /// Every ray (camera and reflected, each from its own start and direction) along its own
 /// exact path.  A ray that starts below the ground (a camera with many origins, some under

@@ -6,10 +6,13 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "atmosphere/phase_screens.h"
+#include "load/atmosphere_settings.h"
 #include "scene/camera.h"
 #include "trace/render.h"
 #include "util/result.h"
@@ -58,6 +61,12 @@ struct TraceReport {
 /// without assumed_gamma gets no gamma handling at all (the file holds the values as they
 /// are).  Turns `image` into the linear values that write_png encodes to those codes.
 void apply_output_gamma(Image& image, const GlobalSettings& global);
+
+/// The phase screens of the scene's turbulent air (settings.turbulence, which must be set):
+/// across the camera's line of sight from its eye, out to Mirage_Extent or the farthest corner
+/// of the scene's bounded objects, in metres.  `scene` as traced (lowered to its ground).
+Result<std::shared_ptr<const PhaseScreens>> scene_screens(const Scene& scene,
+                                                          const MirageSettings& settings);
 
 /// Traces the scene.  On failure nothing was written and the message names the place at
 /// fault (file:line:column for the scene, the option for a bad value).
