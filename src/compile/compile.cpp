@@ -270,6 +270,15 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     // camera with one eye and layers to aim through.
     const bool corrected =
         opt.camera == CameraModel::Corrected && !ctx.many_origins && stack.boundaries() > 0;
+    // Only the corrected camera's rays are aimed where the turbulent air sends the exact ones.
+    if (ctx.turbulence && !corrected)
+        rep.warnings.push_back(
+            "the turbulent air (Mirage_Turbulence_Cn2) shimmers in POV-Ray's render only through "
+            "the corrected camera, which " +
+            std::string(opt.camera != CameraModel::Corrected ? "--camera perspective leaves out"
+                        : ctx.many_origins ? "a camera with many origins cannot have"
+                                           : "needs layers to aim through (this scene has none)") +
+            ": this render is still; mirage trace's shimmers");
     // (With many origins the design's errors are the check's at the pixel centres, below:
     // the errors at the scene's edge are angles seen from one eye.  With the corrected camera
     // they are the check's too: the camera's own rays are not what POV-Ray shoots.)
@@ -390,6 +399,9 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         ps.progress = opt.progress;
         ps.general = ctx.air;
         ps.max_dz = ctx.air_max_dz;
+        ps.turbulence = ctx.turbulence;
+        ps.turbulence_time_s = ctx.turbulence_time_s;
+        ps.unit_m = ctx.settings.unit_m;
         if (corrected) ps.aim = corrected_camera_aim(ctx, rendered, rays);
         const PixelCheck pc =
             check_pixels(rendered, ctx.profile, ctx.scene, *ctx.accel, object_query(*ctx.accel),

@@ -406,6 +406,9 @@ PixelCheck check_many_origins(const LayerStack& rendered, const Profile& profile
     cs.tolerance_m = 0.05 * s.footprint.distance;
     if (s.general) cs.general = *s.general;
     cs.max_dz = s.max_dz;
+    cs.turbulence = s.turbulence;
+    cs.turbulence_time_s = s.turbulence_time_s;
+    cs.unit_m = s.unit_m;
     const CurvedPropagator exact(cs);
 
     std::vector<OriginEnds> ends(n);
@@ -491,6 +494,9 @@ PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, cons
     cs.tolerance_rad = s.exact_tolerance_rad;
     if (s.general) cs.general = *s.general;
     cs.max_dz = s.max_dz;
+    cs.turbulence = s.turbulence;
+    cs.turbulence_time_s = s.turbulence_time_s;
+    cs.unit_m = s.unit_m;
     cs.eye = s.eye;  // the camera rays' start: they share its index of the scene's boxes
     const CurvedPropagator exact(cs);
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "atmosphere/phase_screens.h"
 #include "atmosphere/profile.h"
 #include "layers/band_tracer3d.h"
 #include "layers/stack.h"
@@ -60,6 +61,11 @@ struct PixelCheckSettings {
     // ::max_dz), not `profile`.
     std::shared_ptr<const Atmosphere> general;
     double max_dz = 0.0;
+    // Turbulent air: the exact rays walked through these screens at that time, as the
+    // tracer's are (CurvedSettings::turbulence); unit_m metres per scene unit.
+    std::shared_ptr<const PhaseScreens> turbulence;
+    double turbulence_time_s = 0.0;
+    double unit_m = 1.0;
     // A camera whose rays start at different points: ray i leaves (*origins)[i] (not `eye`),
     // `camera_y` is the height of the layer POV-Ray's atmosphere stands for, and the errors are
     // distances across the rays in the camera's unit of a pixel, footprint.distance +

@@ -49,9 +49,17 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
         return o.ground ? std::numeric_limits<double>::quiet_NaN() : o.y;
     };
     BandAim aim;
-    aim.candidates = [&rays, eye, walk, through, exact_height](size_t i, const glm::dvec3& d,
-                                                               const ExactEnd& end,
-                                                               std::vector<glm::dvec3>& out) {
+    // In still air an exact ray stays in its vertical plane; through turbulent air it leaves
+    // it, and the band ray is aimed in the vertical plane of where the exact one ends.
+    const bool turbulent = ctx.turbulence != nullptr;
+    aim.candidates = [&rays, eye, walk, through, exact_height, turbulent](
+                         size_t i, const glm::dvec3& camera_d, const ExactEnd& end,
+                         std::vector<glm::dvec3>& out) {
+        glm::dvec3 d = camera_d;
+        if (turbulent) {
+            const glm::dvec3 v = end.hit ? end.point - eye : end.direction;
+            if (std::hypot(v.x, v.z) > 0.0) d = v;
+        }
         const double hl = std::hypot(d.x, d.z);
         if (end.hit) {
             // Through the surface the exact ray meets.
@@ -74,7 +82,7 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
             if (auto c = through(i, d, r, exact_height(i, r))) out.push_back(*c);
         }
         // As the camera has it, carried to the mesh's float precision.
-        out.push_back(mesh_camera_direction(d));
+        out.push_back(mesh_camera_direction(camera_d));
     };
     aim.through = [through, exact_height](size_t i, const glm::dvec3& d, double r) {
         return through(i, d, r, exact_height(i, r));

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "compile/stages.h"
+#include "trace/scene_screens.h"
 #include "load/mirage_scene.h"
 #include "pov/povray_path.h"
 #include "scene/camera.h"
@@ -297,6 +298,14 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
 
     ctx.profile = profile_in_scene_units(ctx.settings);
     if (auto s = ctx.settings.air ? fit_real_air(opt, ctx) : Status(Ok{}); !s) return s.error();
+    // Turbulent air: the exact rays the corrected camera aims at are walked through it, at the
+    // clock the scene was parsed at (a frame of an animation shimmers).
+    if (ctx.settings.turbulence) {
+        auto screens = scene_screens(ctx.scene, ctx.settings);
+        if (!screens) return screens.error();
+        ctx.turbulence = std::move(*screens);
+        ctx.turbulence_time_s = turbulence_time_s(loaded->parse_options);
+    }
     ctx.gaps = uses_gaps(opt, ctx);
     // Gaps thick enough that POV-Ray sees both of their faces along the steepest camera ray
     // (it ignores hits closer than MIN_ISECT_DEPTH = 1e-4 units to a ray's origin).

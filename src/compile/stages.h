@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "atmosphere/phase_screens.h"
 #include "compile/compile.h"
 #include "compile/pixel_check.h"
 #include "layers/band_tracer3d.h"
@@ -59,6 +60,10 @@ struct CompileContext {
     // band and the pixel check's exact rays follow; `profile` is then not used.
     std::shared_ptr<const Atmosphere> air;
     double air_max_dz = 0.0;  // how far the tracer follows real air's paths (CurvedSettings)
+    // Turbulent air (Mirage_Turbulence_Cn2): its screens and the time they stand at, which the
+    // pixel check's exact rays are walked through (CurvedSettings::turbulence).
+    std::shared_ptr<const PhaseScreens> turbulence;
+    double turbulence_time_s = 0.0;
     std::string name;
     Camera camera;
     double eye_y = 0.0;

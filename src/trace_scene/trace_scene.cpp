@@ -16,6 +16,7 @@
 #include "trace/curved_propagator.h"
 #include "trace/object_query.h"
 #include "trace/scene_accel.h"
+#include "trace/scene_screens.h"
 #include "util/check.h"
 #include "util/format.h"
 #include "util/output_set.h"
@@ -45,32 +46,6 @@ std::string path_mode_name(PathMode mode) {
             return "per-scanline paths";
     }
     return "";
-}
-
-Result<std::shared_ptr<const PhaseScreens>> scene_screens(const Scene& scene,
-                                                          const MirageSettings& settings) {
-    MIRAGE_CHECK(settings.turbulence.has_value());
-    const Camera& camera = scene.camera;
-    ScreenLayout layout;
-    layout.origin = camera.location * settings.unit_m;
-    layout.axis = glm::normalize(camera.direction);
-    layout.aperture_m = settings.turbulence_aperture_m;
-    double reach = 0.0;
-    if (settings.extent) {
-        reach = *settings.extent;
-    } else {
-        auto accel = SceneAccel::build(scene);
-        if (!accel) return accel.error();
-        reach = bounded_reach(*accel, camera.location);
-    }
-    if (!(reach > 0.0))
-        return make_error(scene.file +
-                          ": Mirage_Turbulence_Cn2: the scene has no bounded object to say how far "
-                          "the turbulent air reaches: declare Mirage_Extent");
-    layout.reach_m = reach * settings.unit_m;
-    auto screens = PhaseScreens::make(*settings.turbulence, layout);
-    if (!screens) return make_error(scene.file + ": turbulence: " + screens.message());
-    return std::make_shared<const PhaseScreens>(std::move(*screens));
 }
 
 Result<TraceReport> trace_scene(const TraceOptions& opt) {
@@ -181,9 +156,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         auto screens = scene_screens(scene, settings);
         if (!screens) return screens.error();
         curved.turbulence = std::move(*screens);
-        curved.turbulence_time_s = loaded->parse_options.animation
-                                       ? loaded->parse_options.animation->clock
-                                       : thread_animation_clock().clock;
+        curved.turbulence_time_s = turbulence_time_s(loaded->parse_options);
         curved.unit_m = settings.unit_m;
         report.atmosphere += ", turbulence C_n^2 " + shortest(settings.turbulence->cn2) +
                              " m^-2/3 at " + shortest(curved.turbulence_time_s) + " s";

@@ -62,12 +62,6 @@ struct TraceReport {
 /// are).  Turns `image` into the linear values that write_png encodes to those codes.
 void apply_output_gamma(Image& image, const GlobalSettings& global);
 
-/// The phase screens of the scene's turbulent air (settings.turbulence, which must be set):
-/// across the camera's line of sight from its eye, out to Mirage_Extent or the farthest corner
-/// of the scene's bounded objects, in metres.  `scene` as traced (lowered to its ground).
-Result<std::shared_ptr<const PhaseScreens>> scene_screens(const Scene& scene,
-                                                          const MirageSettings& settings);
-
 /// Traces the scene.  On failure nothing was written and the message names the place at
 /// fault (file:line:column for the scene, the option for a bad value).
 Result<TraceReport> trace_scene(const TraceOptions& options);

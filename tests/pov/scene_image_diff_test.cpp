@@ -72,9 +72,6 @@ std::vector<std::string> shipped_scenes() {
         // engine and banded by equal index steps: real_air_image_diff_test.cpp.
         auto loaded = load_mirage_scene(scene_load_options(e.path().string(), kW, kH, {}));
         if (loaded.ok() && loaded->settings.air) continue;
-        // Turbulent air shimmers in the tracer only (docs/turbulence.md): shimmer_road.pov is
-        // road.pov with it, and road.pov is checked.
-        if (loaded.ok() && loaded->settings.turbulence) continue;
         names.push_back(e.path().stem().string());
     }
     std::sort(names.begin(), names.end());
