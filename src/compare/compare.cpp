@@ -254,6 +254,7 @@ Result<BandRunOutcome> run_band(Sweep& sw, CompareModel model, double setting,
     row.seconds = run->seconds;
     row.render_seconds = run->log.trace_seconds.value_or(0.0);
     row.cpu_seconds = run->log.cpu_seconds.value_or(0.0);
+    row.process_cpu_seconds = run->process_cpu_seconds;
     row.threads = run->log.threads;
     row.compile_seconds = rep->seconds;
     row.rmse = cmp->rmse;
@@ -309,6 +310,7 @@ Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
     row.seconds = std::chrono::duration<double>(t1 - t0).count();
     row.render_seconds = rep->render.stats.seconds;
     row.cpu_seconds = cpu1 - cpu0;
+    row.process_cpu_seconds = row.cpu_seconds;
     row.threads = rep->render.stats.threads;
     row.rmse = cmp->rmse;
     row.psnr_db = cmp->psnr_db;

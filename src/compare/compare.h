@@ -62,6 +62,8 @@ struct CompareRow {
     double render_seconds = 0.0;       // POV-Ray's own "Trace Time"; the tracer's render loop
     double cpu_seconds = 0.0;          // POV-Ray's render CPU-seconds; the process's CPU time over
                                        // the tracer call
+    double process_cpu_seconds = 0.0;  // processor time of the whole POV-Ray process (parse
+                                       // included, its idle waits not); the tracer call's
     int threads = 0;                   // render threads
     double compile_seconds = -1.0;     // mirage compile's time (bands); -1 for the tracer
     double rmse = 0.0, psnr_db = 0.0;  // against the reference, 8-bit codes / 255

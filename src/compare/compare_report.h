@@ -21,6 +21,9 @@ std::string setting_label(const CompareRow& row);
 enum class TimeBasis {
     Wall,    // `seconds`: the whole POV-Ray process, the whole tracer call
     Render,  // `render_seconds`: POV-Ray's Trace Time, the tracer's render loop
+    // `process_cpu_seconds`: processor time of the whole POV-Ray process (parse included,
+    // without the wall clock's idle waits), of the whole tracer call
+    Processor,
 };
 
 /// The rows of one model as points of error (RMSE) against time, on their Pareto front.
