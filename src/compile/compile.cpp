@@ -221,6 +221,97 @@ Result<CameraTexts> emit_corrected_camera(const CompileContext& ctx, const Camer
     return t;
 }
 
+// The report's lines that come from the settings alone.
+void start_report(const CompileContext& ctx, CompileReport& rep) {
+    const CompileOptions& opt = ctx.options;
+    const MirageSettings& st = ctx.settings;
+    rep.scene = opt.scene;
+    rep.name = ctx.name;
+    rep.width = opt.width;
+    rep.height = opt.height;
+    rep.tolerance_px = st.tolerance_px;
+    rep.atmosphere = st.declared ? st.profile_label : "none declared";
+    rep.layout = ctx.gaps ? "gaps" : "nested";
+    rep.gap = ctx.gaps ? ctx.gap : 0.0;
+    rep.extent = ctx.extent;
+    rep.left_out = ctx.left_out;
+    rep.warnings = ctx.warnings;
+}
+
+// What the design says of itself, and a warning when the turbulent air cannot shimmer through
+// POV-Ray (only the corrected camera's rays are aimed where it sends the exact ones).
+void record_design(const CompileContext& ctx, const Design& design, bool corrected,
+                   CompileReport& rep) {
+    rep.mode = design.mode;
+    rep.layers = design.stack.boundaries();
+    rep.max_error_px_fitted = design.max_error_px_fitted;
+    rep.max_trace_level = design.max_trace_level;
+    for (const auto& l : design.left_out) rep.left_out.push_back(l);
+    for (const auto& w : design.warnings) rep.warnings.push_back(w);
+    if (ctx.turbulence && !corrected)
+        rep.warnings.push_back(
+            "the turbulent air (Mirage_Turbulence_Cn2) shimmers in POV-Ray's render only through "
+            "the corrected camera, which " +
+            std::string(ctx.options.camera != CameraModel::Corrected
+                            ? "--camera perspective leaves out"
+                        : ctx.many_origins ? "a camera with many origins cannot have"
+                                           : "needs layers to aim through (this scene has none)") +
+            ": this render is still; mirage trace's shimmers");
+}
+
+// Where the layers lie around the camera, and what the fitted designs leave out below and
+// above them (the corrected camera's layers say that themselves).
+void record_layer_span(const CompileContext& ctx, const Design& design, CompileReport& rep) {
+    const LayerStack& stack = design.stack;
+    const int k_cam = stack.layer_at(ctx.eye_y);
+    rep.below_camera = k_cam;
+    rep.above_camera = stack.boundaries() - k_cam;
+    if (rep.layers == 0) return;
+    rep.lowest = stack.heights.front();
+    rep.highest = stack.heights.back();
+    const bool fitted = design.mode == "adaptive" || design.mode == "uniform";
+    if (ctx.profile.kind == ProfileKind::Inferior && fitted)
+        rep.left_out.push_back("layers below y = " + sig(rep.lowest, 4) +
+                               ": no camera ray turns lower");
+    if (!ctx.air && fitted)
+        rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
+                               ": the index is within 1% of eta(infinity), or no camera ray "
+                               "reaches higher");
+}
+
+// The pixel check of every ray against its exact ray: the layers as far as they reach, the
+// exact paths a twentieth of a pixel from the truth (errors read to that), real air's model
+// and the turbulent air as the tracer has them.
+PixelCheckSettings pixel_check_settings(const CompileContext& ctx, const CameraRays& rays,
+                                        const LayerStack& rendered, double reach,
+                                        const std::optional<double>& reach_below) {
+    double finest = kInf;
+    for (double p : rays.pixel_rad) finest = std::min(finest, p);
+    const glm::dvec3 eye = ctx.camera.location;
+    PixelCheckSettings ps;
+    ps.width = rays.grid_width();
+    ps.height = rays.grid_height();
+    ps.eye = eye;
+    ps.camera_y = ctx.reference_y(rendered);
+    if (ctx.many_origins) {
+        ps.origins = &rays.origin;
+        ps.footprint = ctx.footprint;
+        ps.far = ctx.extent;
+    }
+    ps.layers = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
+    if (reach_below) {
+        const double r = *reach_below;
+        ps.layers_below = HorizontalBox{eye.x - r, eye.x + r, eye.z - r, eye.z + r};
+    }
+    ps.exact_tolerance_rad = 0.05 * finest;
+    ps.general = ctx.air;
+    ps.max_dz = ctx.air_max_dz;
+    ps.turbulence = ctx.turbulence;
+    ps.turbulence_time_s = ctx.turbulence_time_s;
+    ps.unit_m = ctx.settings.unit_m;
+    return ps;
+}
+
 }  // namespace
 
 Result<CompileReport> compile_scene(const CompileOptions& opt) {
@@ -238,17 +329,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     NewDirectories folders;
     OutputSet outputs(ctx.scene.files);
     const MirageSettings& st = ctx.settings;
-    rep.scene = opt.scene;
-    rep.name = ctx.name;
-    rep.width = opt.width;
-    rep.height = opt.height;
-    rep.tolerance_px = st.tolerance_px;
-    rep.atmosphere = st.declared ? st.profile_label : "none declared";
-    rep.layout = ctx.gaps ? "gaps" : "nested";
-    rep.gap = ctx.gaps ? ctx.gap : 0.0;
-    rep.extent = ctx.extent;
-    rep.left_out = ctx.left_out;
-    rep.warnings = ctx.warnings;
+    start_report(ctx, rep);
     clock.done("settings");
 
     const CameraRays rays = camera_rays(ctx, opt.samples_per_side);
@@ -260,25 +341,11 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     const Design& design = *design_r;
     const LayerStack& stack = design.stack;
     const LayerStack rendered = ctx.rendered(stack);
-    rep.mode = design.mode;
-    rep.layers = stack.boundaries();
-    rep.max_error_px_fitted = design.max_error_px_fitted;
-    rep.max_trace_level = design.max_trace_level;
-    for (const auto& l : design.left_out) rep.left_out.push_back(l);
-    for (const auto& w : design.warnings) rep.warnings.push_back(w);
     // The corrected camera: POV-Ray's rays aimed through the layers (stage "camera"), for a
     // camera with one eye and layers to aim through.
     const bool corrected =
         opt.camera == CameraModel::Corrected && !ctx.many_origins && stack.boundaries() > 0;
-    // Only the corrected camera's rays are aimed where the turbulent air sends the exact ones.
-    if (ctx.turbulence && !corrected)
-        rep.warnings.push_back(
-            "the turbulent air (Mirage_Turbulence_Cn2) shimmers in POV-Ray's render only through "
-            "the corrected camera, which " +
-            std::string(opt.camera != CameraModel::Corrected ? "--camera perspective leaves out"
-                        : ctx.many_origins ? "a camera with many origins cannot have"
-                                           : "needs layers to aim through (this scene has none)") +
-            ": this render is still; mirage trace's shimmers");
+    record_design(ctx, design, corrected, rep);
     // (With many origins the design's errors are the check's at the pixel centres, below:
     // the errors at the scene's edge are angles seen from one eye.  With the corrected camera
     // they are the check's too: the camera's own rays are not what POV-Ray shoots.)
@@ -307,22 +374,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             ctx.many_origins ? std::nullopt : layers_reach_below(ctx, rendered, centres, reach);
     }
     clock.done("reach");
-    const int k_cam = stack.layer_at(ctx.eye_y);
-    rep.below_camera = k_cam;
-    rep.above_camera = stack.boundaries() - k_cam;
-    if (rep.layers > 0) {
-        rep.lowest = stack.heights.front();
-        rep.highest = stack.heights.back();
-        // (The corrected camera's layers say themselves what they leave out.)
-        const bool fitted = design.mode == "adaptive" || design.mode == "uniform";
-        if (ctx.profile.kind == ProfileKind::Inferior && fitted)
-            rep.left_out.push_back("layers below y = " + sig(rep.lowest, 4) +
-                                   ": no camera ray turns lower");
-        if (!ctx.air && fitted)
-            rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
-                                   ": the index is within 1% of eta(infinity), or no camera ray "
-                                   "reaches higher");
-    }
+    record_layer_span(ctx, design, rep);
     if (ctx.many_origins && !(rep.layers > 0)) {
         // No layers: nothing bends, and no pixel errs.
         summarize_design_errors(std::vector<double>(centres.size(), 0.0), centres, st.tolerance_px,
@@ -376,32 +428,8 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     // scene's edge).
     if (stack.boundaries() > 0) {
         std::vector<bool> cut_off(rays.size(), false);
-        double finest = kInf;
-        for (double p : rays.pixel_rad) finest = std::min(finest, p);
-        PixelCheckSettings ps;
-        ps.width = rays.grid_width();
-        ps.height = rays.grid_height();
-        ps.eye = ctx.camera.location;
-        ps.camera_y = ctx.reference_y(rendered);
-        if (ctx.many_origins) {
-            ps.origins = &rays.origin;
-            ps.footprint = ctx.footprint;
-            ps.far = ctx.extent;
-        }
-        ps.layers = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
-        if (reach_below) {
-            const double r = *reach_below;
-            ps.layers_below = HorizontalBox{ctx.camera.location.x - r, ctx.camera.location.x + r,
-                                            ctx.camera.location.z - r, ctx.camera.location.z + r};
-        }
-        // The exact paths a twentieth of a pixel from the truth: errors read to that.
-        ps.exact_tolerance_rad = 0.05 * finest;
+        PixelCheckSettings ps = pixel_check_settings(ctx, rays, rendered, reach, reach_below);
         ps.progress = opt.progress;
-        ps.general = ctx.air;
-        ps.max_dz = ctx.air_max_dz;
-        ps.turbulence = ctx.turbulence;
-        ps.turbulence_time_s = ctx.turbulence_time_s;
-        ps.unit_m = ctx.settings.unit_m;
         if (corrected) ps.aim = corrected_camera_aim(ctx, rendered, rays);
         const PixelCheck pc =
             check_pixels(rendered, ctx.profile, ctx.scene, *ctx.accel, object_query(*ctx.accel),
