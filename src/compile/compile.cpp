@@ -312,6 +312,59 @@ PixelCheckSettings pixel_check_settings(const CompileContext& ctx, const CameraR
     return ps;
 }
 
+// Where every output goes (in the output folder, the image where the options say), the image
+// checked: not an input, and a file when the corrected camera's render is to be cropped.
+Status name_outputs(const CompileContext& ctx, bool corrected, const OutputSet& outputs,
+                    CompileReport& rep) {
+    const fs::path dir = ctx.out_dir;
+    rep.include_path = (dir / "mirage_layers.inc").string();
+    rep.csv_path = (dir / "layers.csv").string();
+    rep.ini_path = (dir / (rep.name + ".ini")).string();
+    rep.report_path = (dir / "report.json").string();
+    rep.image_path = ctx.image;
+    rep.error_map_path = ctx.options.error_map;
+    if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
+    // The corrected camera's render is read back to drop its extra row: a file, not a stream.
+    if (auto out = resolve_output_path(rep.image_path); corrected && out && out->stream)
+        return make_error(rep.image_path +
+                          ": POV-Ray's render through the corrected camera is read back and "
+                          "cropped after it is written, so the image must be a file, not a "
+                          "device or a pipe (render to a file and copy it, or use --camera "
+                          "perspective)");
+    return Ok{};
+}
+
+// Every file the compile writes, staged and then committed: all of them, or none.
+Status write_outputs(const CompileReport& rep, const EmittedFiles& files, CameraTexts camera_text,
+                     OutputSet& outputs) {
+    std::vector<std::pair<std::string, std::string>> texts = {{rep.include_path, files.include},
+                                                              {rep.csv_path, files.csv},
+                                                              {rep.ini_path, files.ini},
+                                                              {rep.report_path, report_json(rep)}};
+    if (!camera_text.mesh.empty()) {
+        texts.emplace_back(rep.camera_path, std::move(camera_text.mesh));
+        texts.emplace_back(rep.render_scene_path, std::move(camera_text.scene));
+    }
+    for (const auto& [path, text] : texts)
+        if (auto s = outputs.write_text(path, text); !s) return s.error();
+    if (!rep.error_map_path.empty())
+        if (auto s = write_exr(error_map_image(rep), rep.error_map_path, &outputs); !s)
+            return s.error();
+    return outputs.commit();
+}
+
+// How far the layers reach, and that they end there.
+void record_layers_reach(double reach, const std::optional<double>& reach_below,
+                         CompileReport& rep) {
+    rep.layers_extent = reach;
+    if (rep.layers > 0)
+        rep.left_out.push_back(
+            "the layers beyond " + sig(reach, 4) + " units from the camera" +
+            (reach_below ? " (those below the camera's beyond " + sig(*reach_below, 4) + ")"
+                         : std::string()) +
+            ": every camera ray has left them by then");
+}
+
 }  // namespace
 
 Result<CompileReport> compile_scene(const CompileOptions& opt) {
@@ -383,20 +436,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
     // (compile_settings checked these paths for POV-Ray.)
     const fs::path abs_dir = ctx.out_dir;
     if (auto s = folders.make(ctx.out_dir); !s) return s.error();
-    rep.include_path = (abs_dir / "mirage_layers.inc").string();
-    rep.csv_path = (abs_dir / "layers.csv").string();
-    rep.ini_path = (abs_dir / (rep.name + ".ini")).string();
-    rep.report_path = (abs_dir / "report.json").string();
-    rep.image_path = ctx.image;
-    rep.error_map_path = opt.error_map;
-    if (auto s = outputs.check(rep.image_path); !s) return s.error();  // POV-Ray renders it
-    // The corrected camera's render is read back to drop its extra row: a file, not a stream.
-    if (auto out = resolve_output_path(rep.image_path); corrected && out && out->stream)
-        return make_error(rep.image_path +
-                          ": POV-Ray's render through the corrected camera is read back and "
-                          "cropped after it is written, so the image must be a file, not a "
-                          "device or a pipe (render to a file and copy it, or use --camera "
-                          "perspective)");
+    if (auto s = name_outputs(ctx, corrected, outputs, rep); !s) return s.error();
     // The include's header, once the pixel centres' errors are known.
     auto header = [&] {
         return std::vector<std::string>{
@@ -461,6 +501,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
             camera_text = std::move(*cam);
         }
     } else {
+        // No layers: no pixel errs.
         const size_t n = static_cast<size_t>(opt.width) * opt.height;
         rep.pixel_error_px.assign(n, 0.0f);
         rep.pixel_shift_rows.assign(n, 0.0f);
@@ -468,29 +509,10 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         rep.samples_per_side = rays.per_side;
     }
     clock.done(corrected ? "camera" : "check");
-    rep.layers_extent = reach;
-    if (rep.layers > 0)
-        rep.left_out.push_back(
-            "the layers beyond " + sig(reach, 4) + " units from the camera" +
-            (reach_below ? " (those below the camera's beyond " + sig(*reach_below, 4) + ")"
-                         : std::string()) +
-            ": every camera ray has left them by then");
+    record_layers_reach(reach, reach_below, rep);
 
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::vector<std::pair<std::string, std::string>> texts = {{rep.include_path, files.include},
-                                                              {rep.csv_path, files.csv},
-                                                              {rep.ini_path, files.ini},
-                                                              {rep.report_path, report_json(rep)}};
-    if (!camera_text.mesh.empty()) {
-        texts.emplace_back(rep.camera_path, std::move(camera_text.mesh));
-        texts.emplace_back(rep.render_scene_path, std::move(camera_text.scene));
-    }
-    for (const auto& [path, text] : texts)
-        if (auto s = outputs.write_text(path, text); !s) return s.error();
-    if (!opt.error_map.empty()) {
-        if (auto s = write_exr(error_map_image(rep), opt.error_map, &outputs); !s) return s.error();
-    }
-    if (auto s = outputs.commit(); !s) return s.error();
+    if (auto s = write_outputs(rep, files, std::move(camera_text), outputs); !s) return s.error();
     folders.keep();
     clock.done("report");
     return rep;
