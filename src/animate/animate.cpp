@@ -98,7 +98,10 @@ std::string shell_quote(const std::string& s) {
 
 std::string join_command(const std::vector<std::string>& argv) {
     std::string s;
-    for (const auto& a : argv) s += (s.empty() ? "" : " ") + shell_quote(a);
+    for (const auto& a : argv) {
+        if (!s.empty()) s += ' ';
+        s += shell_quote(a);
+    }
     return s;
 }
 
@@ -548,7 +551,10 @@ std::string slurm_array_list(const std::vector<int>& frames) {
         while (j + 1 < f.size() && f[j + 1] == f[j] + 1) ++j;
         if (!s.empty()) s += ",";
         s += std::to_string(f[i]);
-        if (j > i) s += "-" + std::to_string(f[j]);
+        if (j > i) {
+            s += '-';
+            s += std::to_string(f[j]);
+        }
         i = j + 1;
     }
     return s;
@@ -631,15 +637,10 @@ Result<std::vector<VanishingRow>> vanishing_rows(const Animation& a) {
     return rows;
 }
 
-Result<AnimateReport> run_animation(const AnimateOptions& options) {
-    auto resolved = resolve_animation(options);
-    if (!resolved) return resolved.error();
-    const Animation& a = *resolved;
-    const AnimateOptions& o = a.options;
-    AnimateReport rep;
+// What the run needs before any frame: POV-Ray's paths and program (the band model), ffmpeg,
+// and the runner's programs and hosts.
+Status check_tools_and_inputs(const AnimateOptions& o) {
     std::error_code ec;
-
-    // Everything that could stop the run before a frame is rendered is checked first.
     if (o.model == FrameModel::Bands) {
         // Every frame's .ini names these for POV-Ray: refused at once if it cannot take one.
         if (auto s = check_povray_path(o.scene, "the scene"); !s) return s.error();
@@ -686,20 +687,14 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
             return make_error("--hosts: the path of mirage, " + o.self +
                               ", holds '{', which GNU parallel would replace");
     }
-    // Taken away again (if empty) when the run is refused before animation.json is written.
-    NewDirectories folders;
-    if (auto s = folders.make(a.frames_dir); !s)
-        return make_error(o.out_dir + ": cannot create the output directory: " + s.message());
-    {
-        const std::string probe = temporary_name_for((fs::path(a.frames_dir) / "probe").string());
-        std::ofstream p(probe);
-        const bool writable = static_cast<bool>(p << "probe\n");
-        p.close();
-        fs::remove(probe, ec);
-        if (!writable) return make_error(o.out_dir + ": cannot write in the output directory");
-    }
+    return Ok{};
+}
 
-    // What the frames are of: a directory of another animation's frames is not reused.
+// What the frames are of, written to animation.json: a directory of another animation's
+// frames (another scene, a changed scene, another frame command) is not reused.
+Status claim_frames(const Animation& a) {
+    const AnimateOptions& o = a.options;
+    std::error_code ec;
     nlohmann::json what;
     what["scene"] = o.scene;
     what["scene_fingerprint"] = fingerprint(read_text(o.scene));
@@ -726,7 +721,71 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
                     "): choose another -o, or remove " + a.frames_dir + " to render them again");
         }
     }
-    if (auto s = write_file_atomic(what_path, json_text(what) + "\n"); !s) return s.error();
+    return write_file_atomic(what_path, json_text(what) + "\n");
+}
+
+// The summary and the report of the marked objects (an addition: when it cannot be made, a
+// scene whose atmosphere is not an inferior mirage, the frames and the video stand and a note
+// says why).
+Status write_summary(const Animation& a, AnimateReport& rep) {
+    const AnimateOptions& o = a.options;
+    auto rows = vanishing_rows(a);
+    if (!rows) {
+        rep.notes.push_back("no vanishing report: " + rows.message());
+        rows = std::vector<VanishingRow>{};
+    }
+    AnimationSummary sum;
+    sum.name = a.name;
+    sum.scene = o.scene;
+    sum.model = model_name(o.model);
+    sum.width = o.width;
+    sum.height = o.height;
+    sum.runner = o.runner == FrameRunner::Local   ? "local, " + std::to_string(o.jobs) + " at once"
+                 : o.runner == FrameRunner::Slurm ? "Slurm array job"
+                                                  : "GNU parallel over " + o.hosts_file;
+    sum.threads = o.threads;
+    sum.frames_seconds = rep.frames_seconds;
+    sum.assemble_seconds = rep.assemble_seconds;
+    sum.out_dir = o.out_dir;
+    sum.gnuplot = o.gnuplot;
+    const MachineInfo m = read_machine_info();
+    sum.machine = std::to_string(m.cores) + " cores, " + m.cpu + ", load " + m.load;
+    sum.frame_command = join_command(a.task_argv("N"));
+    for (const auto& f : rep.frames)
+        sum.frames.push_back({f.number, f.clock, f.seconds, f.rendered_now});
+    auto written = write_animation_report(sum, *rows);
+    if (!written) return written.error();
+    rep.vanishing_csv = written->csv;
+    rep.vanishing_png = written->png;
+    rep.vanishing_svg = written->svg;
+    rep.summary = written->summary;
+    for (const auto& n : written->notes) rep.notes.push_back(n);
+    return Ok{};
+}
+Result<AnimateReport> run_animation(const AnimateOptions& options) {
+    auto resolved = resolve_animation(options);
+    if (!resolved) return resolved.error();
+    const Animation& a = *resolved;
+    const AnimateOptions& o = a.options;
+    AnimateReport rep;
+    std::error_code ec;
+
+    // Everything that could stop the run before a frame is rendered is checked first.
+    if (auto s = check_tools_and_inputs(o); !s) return s.error();
+    // Taken away again (if empty) when the run is refused before animation.json is written.
+    NewDirectories folders;
+    if (auto s = folders.make(a.frames_dir); !s)
+        return make_error(o.out_dir + ": cannot create the output directory: " + s.message());
+    {
+        const std::string probe = temporary_name_for((fs::path(a.frames_dir) / "probe").string());
+        std::ofstream p(probe);
+        const bool writable = static_cast<bool>(p << "probe\n");
+        p.close();
+        fs::remove(probe, ec);
+        if (!writable) return make_error(o.out_dir + ": cannot write in the output directory");
+    }
+
+    if (auto s = claim_frames(a); !s) return s.error();
     folders.keep();
     for (const auto& i : a.ignored) rep.notes.push_back(i + ": not an animation option, ignored");
 
@@ -806,39 +865,7 @@ Result<AnimateReport> run_animation(const AnimateOptions& options) {
     rep.assemble_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
 
-    // The report of the marked objects is an addition: when it cannot be made (a scene whose
-    // atmosphere is not an inferior mirage), the frames and the video stand and a note says why.
-    auto rows = vanishing_rows(a);
-    if (!rows) {
-        rep.notes.push_back("no vanishing report: " + rows.message());
-        rows = std::vector<VanishingRow>{};
-    }
-    AnimationSummary sum;
-    sum.name = a.name;
-    sum.scene = o.scene;
-    sum.model = model_name(o.model);
-    sum.width = o.width;
-    sum.height = o.height;
-    sum.runner = o.runner == FrameRunner::Local   ? "local, " + std::to_string(o.jobs) + " at once"
-                 : o.runner == FrameRunner::Slurm ? "Slurm array job"
-                                                  : "GNU parallel over " + o.hosts_file;
-    sum.threads = o.threads;
-    sum.frames_seconds = rep.frames_seconds;
-    sum.assemble_seconds = rep.assemble_seconds;
-    sum.out_dir = o.out_dir;
-    sum.gnuplot = o.gnuplot;
-    const MachineInfo m = read_machine_info();
-    sum.machine = std::to_string(m.cores) + " cores, " + m.cpu + ", load " + m.load;
-    sum.frame_command = join_command(a.task_argv("N"));
-    for (const auto& f : rep.frames)
-        sum.frames.push_back({f.number, f.clock, f.seconds, f.rendered_now});
-    auto written = write_animation_report(sum, *rows);
-    if (!written) return written.error();
-    rep.vanishing_csv = written->csv;
-    rep.vanishing_png = written->png;
-    rep.vanishing_svg = written->svg;
-    rep.summary = written->summary;
-    for (const auto& n : written->notes) rep.notes.push_back(n);
+    if (auto s = write_summary(a, rep); !s) return s.error();
     return rep;
 }
 
