@@ -256,8 +256,10 @@ std::string gnuplot_script(const CompareResult& result) {
     return gp.str();
 }
 
-std::string summary_markdown(const CompareResult& r) {
-    std::ostringstream md;
+namespace {
+
+// The summary's opening: the scene and its reference, and one row per rendered setting.
+void write_summary_table(std::ostream& md, const CompareResult& r) {
     md << "# mirage compare: " << r.name << "\n\n"
        << "Scene `" << r.scene << "` at " << r.width << "x" << r.height << ", atmosphere "
        << r.atmosphere << ". Every render is compared with a reference traced along per-ray "
@@ -279,6 +281,13 @@ std::string summary_markdown(const CompareResult& r) {
            << (band ? sig(row.p95_shift_rows, 3) : "") << " |\n";
     }
     if (r.rows.empty()) md << "| (no setting was rendered) | | | | | | | | | |\n";
+}
+
+}  // namespace
+
+std::string summary_markdown(const CompareResult& r) {
+    std::ostringstream md;
+    write_summary_table(md, r);
 
     md << "\n## At equal error\n\n"
        << "Each model's settings form a curve of RMSE against seconds; settings that took longer "

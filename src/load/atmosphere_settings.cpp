@@ -359,6 +359,74 @@ std::vector<std::string> atmosphere_setting_names() {
     return names;
 }
 
+namespace {
+
+// The settings besides the atmosphere: the tolerance, the extent, the unit, the ground's height
+// and the layers asked for, each checked with its place.
+Status read_rendering_settings(const Reader& r, MirageSettings& s) {
+    MIRAGE_TRY(tol, r.number("Mirage_Tolerance"));
+    if (tol) {
+        if (auto c = check_tolerance_px(*tol, r.at("Mirage_Tolerance") + "Mirage_Tolerance ="); !c)
+            return c.error();
+        s.tolerance_px = *tol;
+    }
+    MIRAGE_TRY(extent, r.number("Mirage_Extent"));
+    if (extent) {
+        if (!(*extent > 0.0 && *extent <= kMaxCoordinate))
+            return make_error(r.at("Mirage_Extent") + "Mirage_Extent = " + shortest(*extent) +
+                              " must be more than 0 and at most " + shortest(kMaxCoordinate) +
+                              " (scene units)");
+        s.extent = *extent;
+    }
+    MIRAGE_TRY(unit, r.number("Mirage_Unit"));
+    if (unit) {
+        if (!(*unit >= kMinUnitM && *unit <= kMaxUnitM))
+            return make_error(r.at("Mirage_Unit") + "Mirage_Unit = " + shortest(*unit) +
+                              " must be from " + shortest(kMinUnitM) + " to " +
+                              shortest(kMaxUnitM) + " (metres per unit)");
+        s.unit_m = *unit;
+        // The profile the tracer and the compiler use has alpha per scene unit.
+        const Profile scaled = profile_in_scene_units(s);
+        if (s.declared && !s.air && !validate(scaled))
+            return make_error(r.at("Mirage_Unit") + "Mirage_Unit = " + shortest(*unit) +
+                              " makes alpha " + shortest(scaled.alpha) +
+                              " per scene unit, outside " + shortest(kMinAlpha) + " to " +
+                              shortest(kMaxAlpha));
+    }
+    MIRAGE_TRY(ground, r.number("Mirage_Ground_Height"));
+    if (ground) {
+        // The scene is moved by it (the tracer lowers every object to the ground).
+        if (!(std::abs(*ground) <= kMaxCoordinate))
+            return make_error(r.at("Mirage_Ground_Height") + "Mirage_Ground_Height = " +
+                              shortest(*ground) + " must be from " + shortest(-kMaxCoordinate) +
+                              " to " + shortest(kMaxCoordinate) + " (scene units)");
+        s.ground_height = *ground;
+    }
+    MIRAGE_TRY(mode, r.text("Mirage_Layers", "adaptive"));
+    if (mode) {
+        if (*mode == "adaptive") {
+            s.layers = LayerMode::Adaptive;
+        } else if (*mode == "uniform") {
+            s.layers = LayerMode::Uniform;
+        } else if (*mode == "index-steps") {
+            s.layers = LayerMode::IndexSteps;
+        } else {
+            return make_error(r.at("Mirage_Layers") + "Mirage_Layers \"" + *mode +
+                              "\": expected \"adaptive\", \"uniform\" or \"index-steps\"");
+        }
+    }
+    MIRAGE_TRY(count, r.number("Mirage_Layer_Count"));
+    if (count) {
+        if (auto c = check_layer_count(*count, r.at("Mirage_Layer_Count") + "Mirage_Layer_Count =");
+            !c)
+            return c.error();
+        s.layer_count = static_cast<int>(*count);
+    }
+    return Ok{};
+}
+
+}  // namespace
+
 Result<MirageSettings> read_atmosphere_settings(const Scene& scene) {
     for (const auto& [name, d] : scene.symbols) {
         if (name.rfind("Mirage_", 0) != 0) continue;
@@ -450,64 +518,7 @@ Result<MirageSettings> read_atmosphere_settings(const Scene& scene) {
             r.at("Mirage_Exaggeration") + "Mirage_Exaggeration = " + shortest(*exaggeration);
         if (auto st = exaggerate_atmosphere(s, *exaggeration, name); !st) return st.error();
     }
-    MIRAGE_TRY(tol, r.number("Mirage_Tolerance"));
-    if (tol) {
-        if (auto c = check_tolerance_px(*tol, r.at("Mirage_Tolerance") + "Mirage_Tolerance ="); !c)
-            return c.error();
-        s.tolerance_px = *tol;
-    }
-    MIRAGE_TRY(extent, r.number("Mirage_Extent"));
-    if (extent) {
-        if (!(*extent > 0.0 && *extent <= kMaxCoordinate))
-            return make_error(r.at("Mirage_Extent") + "Mirage_Extent = " + shortest(*extent) +
-                              " must be more than 0 and at most " + shortest(kMaxCoordinate) +
-                              " (scene units)");
-        s.extent = *extent;
-    }
-    MIRAGE_TRY(unit, r.number("Mirage_Unit"));
-    if (unit) {
-        if (!(*unit >= kMinUnitM && *unit <= kMaxUnitM))
-            return make_error(r.at("Mirage_Unit") + "Mirage_Unit = " + shortest(*unit) +
-                              " must be from " + shortest(kMinUnitM) + " to " +
-                              shortest(kMaxUnitM) + " (metres per unit)");
-        s.unit_m = *unit;
-        // The profile the tracer and the compiler use has alpha per scene unit.
-        const Profile scaled = profile_in_scene_units(s);
-        if (s.declared && !s.air && !validate(scaled))
-            return make_error(r.at("Mirage_Unit") + "Mirage_Unit = " + shortest(*unit) +
-                              " makes alpha " + shortest(scaled.alpha) +
-                              " per scene unit, outside " + shortest(kMinAlpha) + " to " +
-                              shortest(kMaxAlpha));
-    }
-    MIRAGE_TRY(ground, r.number("Mirage_Ground_Height"));
-    if (ground) {
-        // The scene is moved by it (the tracer lowers every object to the ground).
-        if (!(std::abs(*ground) <= kMaxCoordinate))
-            return make_error(r.at("Mirage_Ground_Height") + "Mirage_Ground_Height = " +
-                              shortest(*ground) + " must be from " + shortest(-kMaxCoordinate) +
-                              " to " + shortest(kMaxCoordinate) + " (scene units)");
-        s.ground_height = *ground;
-    }
-    MIRAGE_TRY(mode, r.text("Mirage_Layers", "adaptive"));
-    if (mode) {
-        if (*mode == "adaptive") {
-            s.layers = LayerMode::Adaptive;
-        } else if (*mode == "uniform") {
-            s.layers = LayerMode::Uniform;
-        } else if (*mode == "index-steps") {
-            s.layers = LayerMode::IndexSteps;
-        } else {
-            return make_error(r.at("Mirage_Layers") + "Mirage_Layers \"" + *mode +
-                              "\": expected \"adaptive\", \"uniform\" or \"index-steps\"");
-        }
-    }
-    MIRAGE_TRY(count, r.number("Mirage_Layer_Count"));
-    if (count) {
-        if (auto c = check_layer_count(*count, r.at("Mirage_Layer_Count") + "Mirage_Layer_Count =");
-            !c)
-            return c.error();
-        s.layer_count = static_cast<int>(*count);
-    }
+    if (auto st = read_rendering_settings(r, s); !st) return st.error();
     if (auto st = read_turbulence(r, s); !st) return st.error();
     return s;
 }
