@@ -8,7 +8,7 @@
 #include <random>
 #include <thread>
 
-#include "trace/render.h"
+#include "render/render.h"
 #include "trace/scene_accel.h"
 #include "trace_scene/trace_scene.h"
 

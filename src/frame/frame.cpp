@@ -11,7 +11,7 @@
 #include "scene/camera.h"
 #include "scene/ground.h"
 #include "trace/scene_accel.h"
-#include "trace/shape_intersect.h"
+#include "shapes/shape_intersect.h"
 #include "trace_scene/trace_scene.h"
 #include "util/check.h"
 #include "util/format.h"

@@ -1,6 +1,6 @@
 // The shapes of a scene, in their own space as written in the scene file (POV-Ray 3.7's
 // conventions), and the compound objects (CSG, clipped_by, bounded_by) built from them.
-// Plain data: the parser fills it, the tracer (trace/shape_intersect.h) prepares it.
+// Plain data: the parser fills it, the tracer (shapes/shape_intersect.h) prepares it.
 #pragma once
 
 #include <cstdint>

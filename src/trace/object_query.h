@@ -8,7 +8,7 @@
 
 #include "scene/object_queries.h"
 #include "scene/object_tree.h"
-#include "trace/bounds.h"
+#include "shapes/bounds.h"
 #include "util/result.h"
 
 namespace mirage {

@@ -11,9 +11,9 @@
 
 #include "atmosphere/sampler.h"
 #include "scene/scene.h"
-#include "trace/bounds.h"
-#include "trace/csg.h"
-#include "trace/shape_intersect.h"
+#include "shapes/bounds.h"
+#include "shapes/csg.h"
+#include "shapes/shape_intersect.h"
 #include "util/result.h"
 
 namespace mirage {

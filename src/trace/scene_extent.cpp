@@ -1,6 +1,6 @@
 #include "trace/scene_extent.h"
 
-#include "trace/shape_intersect.h"
+#include "shapes/shape_intersect.h"
 
 namespace mirage {
 namespace {}  // namespace

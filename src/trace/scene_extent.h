@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "trace/bounds.h"
+#include "shapes/bounds.h"
 #include "trace/scene_accel.h"
 
 namespace mirage {

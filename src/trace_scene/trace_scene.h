@@ -14,7 +14,7 @@
 #include "atmosphere/phase_screens.h"
 #include "load/atmosphere_settings.h"
 #include "scene/camera.h"
-#include "trace/render.h"
+#include "render/render.h"
 #include "util/result.h"
 #include "util/scene_input.h"
 

@@ -12,7 +12,7 @@
 #include "image/image_io.h"
 #include "scene/parser.h"
 #include "test_temp.h"
-#include "trace/fog.h"
+#include "shading/fog.h"
 #include "trace_scene/trace_scene.h"
 
 namespace mirage {

@@ -22,7 +22,7 @@
 #include "load/library_paths.h"
 #include "scene/parser.h"
 #include "test_temp.h"
-#include "trace/pigment_eval.h"
+#include "patterns/pigment_eval.h"
 
 namespace mirage {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "parity_scenes.h"
-#include "trace/render.h"
+#include "render/render.h"
 
 namespace mirage {
 namespace {

@@ -1,6 +1,6 @@
 // Blobs: the density field against its closed form, hits and normals of one-component blobs
 // against spheres, the parser's defaults and refusals, and POV-Ray's image.
-#include "trace/shapes/blob.h"
+#include "shapes/blob.h"
 
 #include <gtest/gtest.h>
 

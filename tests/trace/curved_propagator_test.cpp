@@ -8,7 +8,7 @@
 #include "recording_propagator.h"
 #include "scene/camera.h"
 #include "scene_builders.h"
-#include "trace/shading.h"
+#include "shading/shading.h"
 
 namespace mirage {
 namespace {

@@ -12,7 +12,7 @@
 #include "scene/parser.h"
 #include "shapes_parity_test.h"
 #include "trace/scene_accel.h"
-#include "trace/shape_intersect.h"
+#include "shapes/shape_intersect.h"
 
 namespace mirage {
 namespace {

@@ -1,6 +1,6 @@
 // Isosurfaces: hits, normals and inside tests against closed forms, the parser's errors and
 // warnings, and POV-Ray's image.
-#include "trace/shapes/isosurface.h"
+#include "shapes/isosurface.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include "parsed_scene.h"
 #include "scene/parser.h"
 #include "shapes_parity_test.h"
-#include "trace/noise.h"
+#include "patterns/noise.h"
 #include "trace/scene_accel.h"
 
 namespace mirage {

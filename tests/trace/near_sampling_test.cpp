@@ -15,7 +15,7 @@
 #include "scene/camera.h"
 #include "scene/parser.h"
 #include "trace/curved_propagator.h"
-#include "trace/render.h"
+#include "render/render.h"
 #include "trace/scene_accel.h"
 
 namespace mirage {

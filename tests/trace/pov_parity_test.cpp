@@ -13,7 +13,7 @@
 #include "povray_runner.h"
 #include "scene/parser.h"
 #include "scene_builders.h"
-#include "trace/render.h"
+#include "render/render.h"
 
 namespace mirage {
 namespace {

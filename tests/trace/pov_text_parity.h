@@ -13,7 +13,7 @@
 #include "image/image_io.h"
 #include "povray_runner.h"
 #include "scene/parser.h"
-#include "trace/render.h"
+#include "render/render.h"
 #include "trace_scene/trace_scene.h"
 
 namespace mirage::testing {

@@ -10,7 +10,7 @@
 #include "image/image_io.h"
 #include "povray_runner.h"
 #include "scene/parser.h"
-#include "trace/render.h"
+#include "render/render.h"
 
 namespace mirage::testing {
 
