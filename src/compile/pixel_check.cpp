@@ -190,51 +190,45 @@ PixelEnds band_against_exact(const LayerStack& rendered, const Scene& scene,
 int end_key(const RayEnd& b) { return b.hit ? b.primitive : -2; }
 
 // The elevation (rad) of a direction.
-double elevation_of(const glm::dvec3& d) { return std::asin(std::clamp(d.y / glm::length(d), -1.0, 1.0)); }
+double elevation_of(const glm::dvec3& d) {
+    return std::asin(std::clamp(d.y / glm::length(d), -1.0, 1.0));
+}
 
 // At an edge, where the exact ray passes close by one surface and meets another, the band rays
 // aimed so far may end on either side of it, each off the exact end.  The elevations between
-// the best of them and the nearest one that ends on another surface cross that edge: bisected
-// down to a millionth of a pixel, every ray followed a candidate, so that the band ray just on
-// the exact ray's side of the edge is found (the least error the layers allow there).
+// the best of them (along `best_dir`, ending on surface `best_key`) and the nearest one that
+// ends on another surface cross that edge: bisected down to a millionth of a pixel, every ray
+// followed a candidate, so that the band ray just on the exact ray's side of the edge is found
+// (the least error the layers allow there).
 template <typename Follow>
-void edge_search(const PixelEnds& best, const std::vector<std::pair<PixelEnds, glm::dvec3>>& tried,
-                 double same, double pixel_rad, const Follow& follow) {
-    const PixelEnds start = best;
-    const glm::dvec3* best_dir = nullptr;
-    for (const auto& [p, c] : tried)
-        if (p.camera_error_rad == start.camera_error_rad && end_key(p.band) == end_key(start.band))
-            best_dir = &c;
-    if (!best_dir) return;
-    const glm::dvec3 from_dir = *best_dir;
-    const double e_best = elevation_of(from_dir);
+void edge_search(int best_key, const glm::dvec3& best_dir,
+                 const std::vector<std::pair<PixelEnds, glm::dvec3>>& tried, double same,
+                 double pixel_rad, const Follow& follow) {
+    const double e_best = elevation_of(best_dir);
     // For each other surface the rays ended on, the nearest elevation that ended there.
-    std::vector<glm::dvec3> others;
+    std::vector<double> others;
     std::vector<int> keys;
     for (const auto& [p, c] : tried) {
         const int k = end_key(p.band);
-        if (k == end_key(start.band)) continue;
+        if (k == best_key) continue;
+        const double e = elevation_of(c);
         const auto it = std::find(keys.begin(), keys.end(), k);
         if (it == keys.end()) {
             keys.push_back(k);
-            others.push_back(c);
+            others.push_back(e);
         } else {
-            glm::dvec3& o = others[static_cast<size_t>(it - keys.begin())];
-            if (std::fabs(elevation_of(c) - e_best) < std::fabs(elevation_of(o) - e_best)) o = c;
+            double& o = others[static_cast<size_t>(it - keys.begin())];
+            if (std::fabs(e - e_best) < std::fabs(o - e_best)) o = e;
         }
     }
-    const double hl = std::hypot(from_dir.x, from_dir.z);
-    for (const glm::dvec3& other : others) {
-        double a = e_best, b = elevation_of(other);
-        const int key_a = end_key(start.band);
+    for (const double other : others) {
+        double a = e_best, b = other;
         for (int step = 0; step < 60 && std::fabs(b - a) > 1e-6 * pixel_rad; ++step) {
             const double m = 0.5 * (a + b);
-            const glm::dvec3 d = mesh_camera_direction(glm::dvec3(
-                std::cos(m) * from_dir.x / hl, std::sin(m), std::cos(m) * from_dir.z / hl));
-            const PixelEnds p = follow(d);
+            const PixelEnds p = follow(mesh_camera_direction(direction_at_elevation(best_dir, m)));
             if (p.cut_off) break;
             if (p.camera_error_rad <= same) return;
-            (end_key(p.band) == key_a ? a : b) = m;
+            (end_key(p.band) == best_key ? a : b) = m;
         }
     }
 }
@@ -308,7 +302,8 @@ PixelEnds pixel_ends(const LayerStack& rendered, const Scene& scene, const Scene
             from = p;
         }
     }
-    if (best.camera_error_rad > same) edge_search(best, tried, same, pixel_rad, follow);
+    if (!best.cut_off && best.camera_error_rad > same)
+        edge_search(end_key(best.band), *chosen, tried, same, pixel_rad, follow);
     best.trace_level = band_trace_level(rendered, scene, objects, s, best.band);
     return best;
 }

@@ -39,8 +39,7 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
                                   std::min(0.5, 2000.0 * pixel));
         if (!e) return std::nullopt;
         (*offsets)[i] = *e - rays.elevation[i];
-        const glm::dvec3 aimed(std::cos(*e) * d.x / hl, std::sin(*e), std::cos(*e) * d.z / hl);
-        return mesh_camera_direction(aimed);
+        return mesh_camera_direction(direction_at_elevation(d, *e));
     };
     // The exact path's height at horizontal distance r (NaN past its ground).
     auto exact_height = [&ctx, &rays](size_t i, double r) {
@@ -75,8 +74,7 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
             if (const auto e = walk->elevation_leaving_at(final_elevation); e && hl > 0.0)
                 for (double sign :
                      rays.elevation[i] < 0.0 ? std::array{-1.0, 1.0} : std::array{1.0, -1.0})
-                    out.push_back(mesh_camera_direction(glm::dvec3(
-                        std::cos(*e) * d.x / hl, sign * std::sin(*e), std::cos(*e) * d.z / hl)));
+                    out.push_back(mesh_camera_direction(direction_at_elevation(d, sign * *e)));
             // Through the exact path's point at the scene's edge.
             const double r = rays.exit_dz[i];
             if (auto c = through(i, d, r, exact_height(i, r))) out.push_back(*c);

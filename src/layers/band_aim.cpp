@@ -176,6 +176,13 @@ std::optional<double> elevation_through(const BandWalk& walk, double r, double y
     return std::nullopt;
 }
 
+glm::dvec3 direction_at_elevation(const glm::dvec3& d, double elevation) {
+    const double hl = std::hypot(d.x, d.z);
+    MIRAGE_CHECK(hl > 0.0);
+    return glm::dvec3(std::cos(elevation) * d.x / hl, std::sin(elevation),
+                      std::cos(elevation) * d.z / hl);
+}
+
 MeshDirection mesh_direction(const glm::dvec3& d) {
     MeshDirection m;
     const double a[3] = {std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)};

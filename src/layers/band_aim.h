@@ -74,6 +74,11 @@ class BandWalk {
 std::optional<double> elevation_through(const BandWalk& walk, double r, double y, double guess,
                                         double step, double tolerance_m, double max_offset);
 
+/// The unit direction at `elevation` (rad, > 0 up) in the vertical plane of `d`, whose
+/// horizontal part must not vanish: the one degree of freedom an aim through horizontal layers
+/// has.
+glm::dvec3 direction_at_elevation(const glm::dvec3& d, double elevation);
+
 /// The float components a mesh camera's face carries for `direction`: the largest (index
 /// `pivot`) is +-1, the others rounded to float.
 struct MeshDirection {

@@ -371,12 +371,10 @@ box { <-40, 0, 30>, <40, 6, 31> pigment { color rgb <0.8, 0.7, 0.2> } }
         own.candidates(i, d, end, out);
         if (chosen.camera_error_px[i] <= 0.1f) return;
         const glm::dvec3 c = chosen.band_direction[i];
-        const double e = std::asin(c.y), hl = std::hypot(c.x, c.z);
-        for (int k = -60; k <= 60; ++k) {
-            const double f = e + k * 0.05 * rays.pixel_rad[i];
+        const double e = std::asin(c.y);
+        for (int k = -60; k <= 60; ++k)
             out.push_back(mesh_camera_direction(
-                glm::dvec3(std::cos(f) * c.x / hl, std::sin(f), std::cos(f) * c.z / hl)));
-        }
+                direction_at_elevation(c, e + k * 0.05 * rays.pixel_rad[i])));
     };
     const PixelCheck fanned = check_pixels(rendered, ctx->profile, ctx->scene, *ctx->accel,
                                            objects, rays.direction, rays.pixel_rad, cut, fan);
