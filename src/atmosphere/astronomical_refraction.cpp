@@ -31,12 +31,16 @@ double geometric(double h) { return kGeopotentialRadius * h / (kGeopotentialRadi
 }  // namespace
 
 Result<StandardAir> StandardAir::make(const StandardAirSettings& s) {
-    if (!(s.ground_temperature_k >= 220.0 && s.ground_temperature_k <= 330.0))
+    if (!(s.ground_temperature_k >= kMinGroundTemperatureK &&
+          s.ground_temperature_k <= kMaxGroundTemperatureK))
         return make_error("ground temperature " + shortest(s.ground_temperature_k) +
-                          " K must be from 220 to 330 K");
-    if (!(s.ground_pressure_pa >= 50000.0 && s.ground_pressure_pa <= 110000.0))
+                          " K must be from " + shortest(kMinGroundTemperatureK) + " to " +
+                          shortest(kMaxGroundTemperatureK) + " K");
+    if (!(s.ground_pressure_pa >= kMinGroundPressurePa &&
+          s.ground_pressure_pa <= kMaxGroundPressurePa))
         return make_error("ground pressure " + shortest(s.ground_pressure_pa / 100.0) +
-                          " hPa must be from 500 to 1100 hPa");
+                          " hPa must be from " + shortest(kMinGroundPressurePa / 100.0) + " to " +
+                          shortest(kMaxGroundPressurePa / 100.0) + " hPa");
     if (!(s.wavelength_nm >= 300.0 && s.wavelength_nm <= 1690.0))
         return make_error("wavelength " + shortest(s.wavelength_nm) +
                           " nm must be from 300 to 1690 nm (Ciddor's range)");
@@ -53,12 +57,8 @@ Result<StandardAir> StandardAir::make(const StandardAirSettings& s) {
     for (size_t k = 1; k < a.layers_.size(); ++k) {
         const Layer& below = a.layers_[k - 1];
         Layer& l = a.layers_[k];
-        const double dh = l.bottom - below.bottom;
-        l.temperature = below.temperature + below.lapse * dh;
-        l.pressure = below.lapse == 0.0
-                         ? below.pressure * std::exp(-kHydrostaticScale * dh / below.temperature)
-                         : below.pressure * std::pow(below.temperature / l.temperature,
-                                                     kHydrostaticScale / below.lapse);
+        l.temperature = below.temperature_at(l.bottom);
+        l.pressure = below.pressure_at(l.bottom);
     }
     a.top_m_ = geometric(kStandardTop);
     return a;
@@ -70,23 +70,37 @@ int StandardAir::layer_at(double h) const {
     return k;
 }
 
+double StandardAir::Layer::temperature_at(double h) const {
+    return temperature + lapse * (h - bottom);
+}
+
+double StandardAir::Layer::pressure_at(double h) const {
+    // The hydrostatic equation in a layer of constant lapse (or none).
+    return lapse == 0.0
+               ? pressure * std::exp(-kHydrostaticScale * (h - bottom) / temperature)
+               : pressure * std::pow(temperature / temperature_at(h), kHydrostaticScale / lapse);
+}
+
+const StandardAir::Layer& StandardAir::layer_of(double z, double& h) const {
+    h = geopotential(std::clamp(z, 0.0, top_m_));
+    return layers_[layer_at(h)];
+}
+
 double StandardAir::temperature_k(double z) const {
-    const double h = geopotential(std::clamp(z, 0.0, top_m_));
-    const Layer& l = layers_[layer_at(h)];
-    return l.temperature + l.lapse * (h - l.bottom);
+    double h = 0.0;
+    return layer_of(z, h).temperature_at(h);
 }
 
 double StandardAir::pressure_pa(double z) const {
-    const double h = geopotential(std::clamp(z, 0.0, top_m_));
-    const Layer& l = layers_[layer_at(h)];
-    const double t = l.temperature + l.lapse * (h - l.bottom);
-    return l.lapse == 0.0 ? l.pressure * std::exp(-kHydrostaticScale * (h - l.bottom) / t)
-                          : l.pressure * std::pow(l.temperature / t, kHydrostaticScale / l.lapse);
+    double h = 0.0;
+    return layer_of(z, h).pressure_at(h);
 }
 
 double StandardAir::refractivity(double z) const {
-    return ciddor_refractivity(settings_.wavelength_nm, temperature_k(z), pressure_pa(z), 0.0,
-                               kCo2Ppm);
+    double h = 0.0;
+    const Layer& l = layer_of(z, h);
+    return ciddor_refractivity(settings_.wavelength_nm, l.temperature_at(h), l.pressure_at(h),
+                               0.0, kCo2Ppm);
 }
 
 double StandardAir::refractivity_slope(double z) const {
@@ -179,6 +193,12 @@ Result<double> refraction_by_path(const StandardAir& air, const Atmosphere& mode
     const double n_top = 1.0 + air.refractivity(air.top_m());
     const double vacuum = std::acos(std::min(1.0, n_top * std::cos(local)));
     return elevation - (vacuum - dz / R);
+}
+
+double pulkovo_refraction(double elevation) {
+    const double h = elevation * 180.0 / M_PI;
+    return (M_PI / 180.0 / 62.8093) / std::tan((h + 4.2206 / (h + 15.1115 / (h + 5.9431))) *
+                                               M_PI / 180.0);
 }
 
 double bennett_refraction(double elevation) {

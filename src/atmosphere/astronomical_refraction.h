@@ -25,6 +25,10 @@
 
 namespace mirage {
 
+/// The ground's air StandardAir::make accepts.
+constexpr double kMinGroundTemperatureK = 220.0, kMaxGroundTemperatureK = 330.0;
+constexpr double kMinGroundPressurePa = 50000.0, kMaxGroundPressurePa = 110000.0;
+
 struct StandardAirSettings {
     double ground_temperature_k = 283.15;  // the tables' 10 degC
     double ground_pressure_pa = 101000.0;  // the tables' 1010 hPa
@@ -53,10 +57,14 @@ class StandardAir {
     // temperature and pressure at the bottom.
     struct Layer {
         double bottom = 0.0, lapse = 0.0, temperature = 0.0, pressure = 0.0;
+        double temperature_at(double geopotential_m) const;
+        double pressure_at(double geopotential_m) const;
     };
     std::vector<Layer> layers_;
     double top_m_ = 0.0;
     int layer_at(double geopotential_m) const;
+    // The layer of height z above the ground, and z's geopotential height in `h`.
+    const Layer& layer_of(double z, double& h) const;
 };
 
 /// The refraction (rad, > 0: seen higher) of a ray leaving an observer at `observer_height_m`
@@ -71,6 +79,14 @@ Result<Atmosphere> standard_air_model(const StandardAir& air, double tolerance_n
 /// The same refraction by the exact path through `model` (standard_air_model of `air`).
 Result<double> refraction_by_path(const StandardAir& air, const Atmosphere& model,
                                   double observer_height_m, double elevation);
+
+/// The Pulkovo Refraction Tables (5th ed., 1985): their standard atmosphere at sea level, dry,
+/// at 590 nm, and their refraction at an apparent elevation (rad in, rad out) by the fit
+/// R = (1 degree / 62.8093) / tan(h + 4.2206 / (h + 15.1115 / (h + 5.9431))), h in degrees,
+/// which stays within 0.29" of the tables from 0 to 90 degrees.
+constexpr double kPulkovoTemperatureK = 288.15, kPulkovoPressurePa = 101325.0;
+constexpr double kPulkovoWavelengthNm = 590.0;
+double pulkovo_refraction(double elevation);
 
 /// Bennett's formula for the refraction of the standard tables (J. Navigation 35, 255 (1982);
 /// Meeus, Astronomical Algorithms, eq. 16.4): R = cot(h + 7.31 / (h + 4.4)) arcminutes for an

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "util/format.h"
-#include "util/process.h"
 #include "report/gnuplot_run.h"
 
 namespace mirage {
@@ -17,25 +16,13 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kArcsec = kDeg / 3600.0;
 
-// The Pulkovo Refraction Tables (5th ed., 1985) at their standard conditions, by the fit
-// R = (1 degree / 62.8093) / tan(h + 4.2206 / (h + 15.1115 / (h + 5.9431))), h the apparent
-// altitude in degrees, within 0.29" of the tables from 0 to 90 degrees.
-double pulkovo(double elevation) {
-    const double h = elevation / kDeg;
-    return (kDeg / 62.8093) / std::tan((h + 4.2206 / (h + 15.1115 / (h + 5.9431))) * kDeg);
-}
-
 bool pulkovo_conditions(const RefractionTableOptions& o, double wavelength_nm) {
-    return o.temperature_c == 15.0 && o.pressure_hpa == 1013.25 && wavelength_nm == 590.0 &&
+    return o.temperature_c + 273.15 == kPulkovoTemperatureK &&
+           100.0 * o.pressure_hpa == kPulkovoPressurePa && wavelength_nm == kPulkovoWavelengthNm &&
            o.observer_height_m == 0.0;
 }
 
-struct Model {
-    StandardAir air;
-    Atmosphere atmosphere;
-};
-
-Result<Model> model_for(const RefractionTableOptions& o, double wavelength_nm) {
+Result<RefractionModel> model_for(const RefractionTableOptions& o, double wavelength_nm) {
     StandardAirSettings s;
     s.ground_temperature_k = o.temperature_c + 273.15;
     s.ground_pressure_pa = 100.0 * o.pressure_hpa;
@@ -44,7 +31,7 @@ Result<Model> model_for(const RefractionTableOptions& o, double wavelength_nm) {
     if (!air) return air.error();
     auto m = standard_air_model(*air);
     if (!m) return m.error();
-    return Model{*air, *m};
+    return RefractionModel{*air, *m};
 }
 
 std::string fixed(double v, int decimals) {
@@ -61,12 +48,17 @@ Result<RefractionTable> refraction_table(const RefractionTableOptions& o) {
     for (double e : o.elevations_deg)
         if (!(e >= 0.0 && e < 90.0))
             return make_error("elevation " + shortest(e) + " degrees must be from 0 to 90");
-    if (!(o.temperature_c >= 220.0 - 273.15 && o.temperature_c <= 330.0 - 273.15))
-        return make_error("temperature " + shortest(o.temperature_c) +
-                          " degC must be from -53.15 to 56.85 degC");
-    if (!(o.pressure_hpa >= 500.0 && o.pressure_hpa <= 1100.0))
-        return make_error("pressure " + shortest(o.pressure_hpa) +
-                          " hPa must be from 500 to 1100 hPa");
+    // StandardAir's ranges, in the units given.
+    if (!(o.temperature_c + 273.15 >= kMinGroundTemperatureK &&
+          o.temperature_c + 273.15 <= kMaxGroundTemperatureK))
+        return make_error("temperature " + shortest(o.temperature_c) + " degC must be from " +
+                          sig(kMinGroundTemperatureK - 273.15, 6) + " to " +
+                          sig(kMaxGroundTemperatureK - 273.15, 6) + " degC");
+    if (!(100.0 * o.pressure_hpa >= kMinGroundPressurePa &&
+          100.0 * o.pressure_hpa <= kMaxGroundPressurePa))
+        return make_error("pressure " + shortest(o.pressure_hpa) + " hPa must be from " +
+                          shortest(kMinGroundPressurePa / 100.0) + " to " +
+                          shortest(kMaxGroundPressurePa / 100.0) + " hPa");
     if (!(o.observer_height_m >= 0.0 && o.observer_height_m <= 10000.0))
         return make_error("observer height " + shortest(o.observer_height_m) +
                           " m must be from 0 to 10000 m");
@@ -82,12 +74,15 @@ Result<RefractionTable> refraction_table(const RefractionTableOptions& o) {
             row.push_back(*r);
         }
         t.refraction_rad.push_back(row);
+        t.models.push_back(std::move(*m));
     }
-    for (double nm : o.wavelengths_nm)
-        if (pulkovo_conditions(o, nm)) {
-            t.tables_name = "Pulkovo tables (15 degC, 1013.25 hPa, 590 nm, sea level)";
-            for (double e : o.elevations_deg) t.tables_rad.push_back(pulkovo(e * kDeg));
-        }
+    const auto tables = std::find_if(o.wavelengths_nm.begin(), o.wavelengths_nm.end(),
+                                     [&o](double nm) { return pulkovo_conditions(o, nm); });
+    if (tables != o.wavelengths_nm.end()) {
+        t.tables_name = "Pulkovo tables (15 degC, 1013.25 hPa, 590 nm, sea level)";
+        t.tables_wavelength = static_cast<size_t>(tables - o.wavelengths_nm.begin());
+        for (double e : o.elevations_deg) t.tables_rad.push_back(pulkovo_refraction(e * kDeg));
+    }
     return t;
 }
 
@@ -115,10 +110,10 @@ std::string refraction_text(const RefractionTable& t) {
         if (t.refraction_rad.size() > 1)
             cell(fixed((t.refraction_rad.front()[j] - t.refraction_rad.back()[j]) / kArcsec, 3));
         if (!t.tables_rad.empty()) {
-            size_t w = 0;
-            while (!pulkovo_conditions(o, o.wavelengths_nm[w])) ++w;
             cell(fixed(t.tables_rad[j] / kArcsec, 2));
-            cell(fixed(100.0 * (t.refraction_rad[w][j] / t.tables_rad[j] - 1.0), 3) + " %");
+            cell(fixed(100.0 * (t.refraction_rad[t.tables_wavelength][j] / t.tables_rad[j] - 1.0),
+                       3) +
+                 " %");
         }
         s << "\n";
     }
@@ -153,8 +148,6 @@ nlohmann::json refraction_json(const RefractionTable& t) {
 Status draw_refraction_plot(const RefractionTable& t, OutputSet& outputs, const std::string& png,
                             const std::string& gnuplot) {
     namespace fs = std::filesystem;
-    if (!find_program(gnuplot))
-        return make_error(gnuplot + " not found on PATH: the refraction plot is drawn by gnuplot");
     const RefractionTableOptions& o = t.options;
     const double top = std::clamp(
         *std::max_element(o.elevations_deg.begin(), o.elevations_deg.end()), 1.0, 10.0);
@@ -164,10 +157,9 @@ Status draw_refraction_plot(const RefractionTable& t, OutputSet& outputs, const 
     const size_t nw = o.wavelengths_nm.size();
     std::vector<std::vector<double>> curve(nw);  // arcseconds, per wavelength and step
     for (size_t w = 0; w < nw; ++w) {
-        auto m = model_for(o, o.wavelengths_nm[w]);
-        if (!m) return m.error();
+        const RefractionModel& m = t.models[w];
         for (int k = 0; k <= steps; ++k) {
-            auto r = refraction_by_path(m->air, m->atmosphere, o.observer_height_m,
+            auto r = refraction_by_path(m.air, m.atmosphere, o.observer_height_m,
                                         top * k / steps * kDeg);
             if (!r) return r.error();
             curve[w].push_back(*r / kArcsec);
@@ -187,7 +179,7 @@ Status draw_refraction_plot(const RefractionTable& t, OutputSet& outputs, const 
         gp << "$tables << EOD\n";
         for (int k = 0; k <= steps; ++k) {
             const double e = top * k / steps;
-            gp << sig(e, 8) << ' ' << sig(pulkovo(e * kDeg) / kArcsec / 60.0, 10) << '\n';
+            gp << sig(e, 8) << ' ' << sig(pulkovo_refraction(e * kDeg) / kArcsec / 60.0, 10) << '\n';
         }
         gp << "EOD\n";
     }

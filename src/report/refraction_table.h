@@ -22,13 +22,22 @@ struct RefractionTableOptions {
     std::vector<double> elevations_deg = {0, 0.25, 0.5, 1, 2, 3, 5, 10, 20, 45};
 };
 
+/// One wavelength's air and its fitted curved-Earth model.
+struct RefractionModel {
+    StandardAir air;
+    Atmosphere atmosphere;
+};
+
 struct RefractionTable {
     RefractionTableOptions options;
+    std::vector<RefractionModel> models;              // per wavelength
     std::vector<std::vector<double>> refraction_rad;  // [wavelength][elevation], by the path
     // The tables for the same air, when there are any: the Pulkovo tables' fit at their own
-    // conditions (15 degC, 1013.25 hPa, 590 nm, sea level), else empty.
+    // conditions (15 degC, 1013.25 hPa, 590 nm, sea level) and the wavelength they are for;
+    // else empty.
     std::vector<double> tables_rad;
     std::string tables_name;
+    size_t tables_wavelength = 0;  // the index of the wavelength the tables are for
 };
 
 /// The options checked (each value named when refused) and every ray followed.

@@ -11,7 +11,6 @@
 #include "report/svg.h"
 #include "util/atomic_file.h"
 #include "util/format.h"
-#include "util/process.h"
 
 namespace mirage {
 
@@ -178,8 +177,6 @@ Status draw_transfer_diagram(const TransferSettings& st, const TransferCurve& cu
                              const std::string& svg_path, const std::string& png_path,
                              const std::string& gnuplot) {
     namespace fs = std::filesystem;
-    if (!find_program(gnuplot))
-        return make_error(gnuplot + " not found on PATH: the transfer diagram is drawn by gnuplot");
     // gnuplot writes the outputs' temporary names; the caller's commit() renames them into
     // place, and an OutputSet destroyed uncommitted (gnuplot failed) removes them.
     auto abs = [](const std::string& p) { return fs::absolute(p).string(); };

@@ -12,18 +12,13 @@ constexpr double kArcsec = kDeg / 3600.0;
 
 // The Pulkovo Refraction Tables (5th ed., 1985) for their standard atmosphere at sea level,
 // +15 degC, 1013.25 hPa, 0.590 um, dry air: the horizontal refraction 1977.971", and at other
-// apparent altitudes h0 (degrees) the fit R = (1 degree / 62.8093) / tan(h0 + 4.2206 / (h0 +
-// 15.1115 / (h0 + 5.9431))), within 0.29" of the tables over [0, 90] degrees.
+// apparent altitudes their fit (pulkovo_refraction), within 0.29" of the tables.
 constexpr double kPulkovoHorizontal = 1977.971 * kArcsec;
-double pulkovo_fit(double elevation) {
-    const double h = elevation / kDeg;
-    return (kDeg / 62.8093) / std::tan((h + 4.2206 / (h + 15.1115 / (h + 5.9431))) * kDeg);
-}
 
 StandardAir pulkovo_air(double wavelength_nm) {
     StandardAirSettings s;
-    s.ground_temperature_k = 288.15;
-    s.ground_pressure_pa = 101325.0;
+    s.ground_temperature_k = kPulkovoTemperatureK;
+    s.ground_pressure_pa = kPulkovoPressurePa;
     s.wavelength_nm = wavelength_nm;
     auto air = StandardAir::make(s);
     EXPECT_TRUE(air.ok()) << air.message();
@@ -87,7 +82,7 @@ TEST(AstronomicalRefraction, MatchesThePulkovoTablesFromTheHorizonToTenDegrees) 
     for (double e : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 7.0, 10.0}) {
         auto r = refraction_by_path(air, *model, 0.0, e * kDeg);
         ASSERT_TRUE(r.ok());
-        EXPECT_NEAR(*r / pulkovo_fit(e * kDeg), 1.0, 2e-3) << e << " degrees";
+        EXPECT_NEAR(*r / pulkovo_refraction(e * kDeg), 1.0, 2e-3) << e << " degrees";
     }
     // Bennett's formula (other tables, 10 degC and 1010 hPa) is not these: the check can tell.
     EXPECT_GT(std::fabs(bennett_refraction(0.0) / kPulkovoHorizontal - 1.0), 0.02);
@@ -104,14 +99,18 @@ TEST(AstronomicalRefraction, BlueIsLiftedMoreThanRedAsCiddorsIndexSays) {
     for (double e : {0.0, 1.0, 3.0, 10.0, 30.0}) {
         const double sep = *refraction_by_path(blue, *mb, 0.0, e * kDeg) -
                            *refraction_by_path(red, *mr, 0.0, e * kDeg);
-        const double law = pulkovo_fit(e * kDeg) * (blue.refractivity(0.0) - red.refractivity(0.0)) /
+        const double law = pulkovo_refraction(e * kDeg) * (blue.refractivity(0.0) - red.refractivity(0.0)) /
                            mid.refractivity(0.0);
         EXPECT_GT(sep, 0.0) << e;
         const double ratio = sep / law;
         EXPECT_GE(ratio, 1.0 - 2e-3) << e;
-        if (last_ratio > 0.0) EXPECT_LT(ratio, last_ratio) << e;  // nearer the law higher up
+        if (last_ratio > 0.0) {
+            EXPECT_LT(ratio, last_ratio) << e;  // nearer the law higher up
+        }
         last_ratio = ratio;
-        if (e >= 10.0) EXPECT_NEAR(ratio, 1.0, 5e-3) << e;
+        if (e >= 10.0) {
+            EXPECT_NEAR(ratio, 1.0, 5e-3) << e;
+        }
     }
 }
 
