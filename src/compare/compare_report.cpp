@@ -315,18 +315,16 @@ std::string summary_markdown(const CompareResult& r) {
         md << "- **" << title << ":** at RMSE " << rmse_text(e.error) << ", " << a_takes << " "
            << describe_time(e.a) << a_threads << " and " << b << " " << describe_time(e.b)
            << b_threads << ": " << describe_ratio(e, b_is) << ".\n";
-        if (render)
-            md << "  - On render time alone (POV-Ray's Trace Time, the tracer's render loop), at "
-                  "RMSE "
-               << rmse_text(render->error) << ": " << describe_time(render->a) << " against "
-               << describe_time(render->b) << ", "
-               << describe_ratio(*render, b_is.substr(0, b_is.rfind(' '))) << ".\n";
-        if (processor)
-            md << "  - On processor time (the whole process, parse included, without the wall "
-                  "clock's idle waits), at RMSE "
-               << rmse_text(processor->error) << ": " << describe_time(processor->a) << " against "
-               << describe_time(processor->b) << ", "
-               << describe_ratio(*processor, b_is.substr(0, b_is.rfind(' '))) << ".\n";
+        const std::string subject = b_is.substr(0, b_is.rfind(' '));
+        for (const auto& [other, basis] :
+             {std::pair{&render, "render time alone (POV-Ray's Trace Time, the tracer's render "
+                                 "loop)"},
+              std::pair{&processor, "processor time (the whole process, parse included, without "
+                                    "the wall clock's idle waits)"}})
+            if (*other)
+                md << "  - On " << basis << ", at RMSE " << rmse_text((*other)->error) << ": "
+                   << describe_time((*other)->a) << " against " << describe_time((*other)->b)
+                   << ", " << describe_ratio(**other, subject) << ".\n";
         return true;
     };
     const std::string on_povray = " on " + povray_threads + " threads";
