@@ -6,13 +6,10 @@
 #pragma once
 
 #include <map>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "atmosphere/phase_screens.h"
-#include "load/atmosphere_settings.h"
 #include "scene/camera.h"
 #include "render/render.h"
 #include "util/result.h"
