@@ -1,4 +1,5 @@
 #include "atmosphere/phase_screens.h"
+#include "atmosphere/turbulence_theory.h"
 
 #include <gtest/gtest.h>
 
@@ -13,47 +14,18 @@
 namespace mirage {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using testing::integrate_kappa;
+using testing::tilt_correlation;
+using testing::tilt_variance_ap;
+using testing::tilt_variance_integral;
+using testing::uniform;
 
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
+constexpr double kPi = std::numbers::pi;
 
 PhaseScreens make_screens(const TurbulenceSettings& s, const ScreenLayout& l) {
     auto f = PhaseScreens::make(s, l);
     EXPECT_TRUE(f.ok()) << f.message();
     return std::move(f).value();
-}
-
-// int_0^inf f(kappa) dkappa on a fine grid in ln(kappa) (trapezoid).
-template <class F>
-double integrate_kappa(F f) {
-    const double lo = std::log(1e-6), hi = std::log(1e7);
-    const int n = 200000;
-    const double h = (hi - lo) / n;
-    double sum = 0.0;
-    for (int i = 0; i <= n; ++i) {
-        const double k = std::exp(lo + i * h);
-        sum += (i == 0 || i == n ? 0.5 : 1.0) * f(k) * k;
-    }
-    return sum * h;
-}
-
-// The plane-wave angle-of-arrival variance per axis at a point receiver (turbulence_test.cpp):
-// 3.28 C_n^2 L l0^(-1/3) [1 - 0.72 (kappa0 l0)^(1/3)] (A&P 2005, ch. 6).
-double tilt_variance_ap(const TurbulenceSettings& s, double length_m) {
-    const double k0l0 = 2.0 * kPi / s.outer_scale_m * s.inner_scale_m;
-    return 3.28 * s.cn2 * length_m * std::pow(s.inner_scale_m, -1.0 / 3.0) *
-           (1.0 - 0.72 * std::cbrt(k0l0));
-}
-
-// The same as an integral, with an aperture of diameter D averaging the tilt (G-tilt):
-// 2 pi^2 L int kappa^3 Phi_n(kappa) (2 J1(kappa D/2) / (kappa D/2))^2 dkappa.
-double tilt_variance_integral(const TurbulenceSettings& s, double length_m, double aperture_m) {
-    const double r = 0.5 * aperture_m;
-    return 2.0 * kPi * kPi * length_m * integrate_kappa([&](double k) {
-               const double x = k * r;
-               const double a = x < 1e-6 ? 1.0 : 2.0 * std::cyl_bessel_j(1.0, x) / x;
-               return k * k * k * index_spectrum(s, k) * a * a;
-           });
 }
 
 // The tilt, both axes across z, of a ray along +z through the whole stack from (x, y, 0).
@@ -347,18 +319,13 @@ TEST(PhaseScreens, TiltsDecorrelateAsTheWindMovesTheAir) {
             }
         }
     }
-    const double b0 = integrate_kappa([&](double k) { return k * k * k * index_spectrum(s, k); });
     for (std::size_t j = 0; j < rhos.size(); ++j) {
         const double rho = rhos[j];
-        const double b = integrate_kappa([&](double k) {
-            const double x = k * rho;
-            return k * k * k * index_spectrum(s, k) *
-                   (x < 1e-6 ? 0.5 : 2.0 * std::cyl_bessel_j(1.0, x) / x);
-        });
+        const double expected = tilt_correlation(s, rho);
         const double measured = c1[j] / std::sqrt(c0[j] * c2[j]);
         std::printf("  rho = %.3f m: tilt correlation %.3f, expected %.3f\n", rho, measured,
-                    b / b0);
-        EXPECT_NEAR(measured, b / b0, 0.08) << "rho = " << rho;
+                    expected);
+        EXPECT_NEAR(measured, expected, 0.08) << "rho = " << rho;
     }
 }
 

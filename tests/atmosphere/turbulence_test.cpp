@@ -1,4 +1,5 @@
 #include "atmosphere/turbulence.h"
+#include "atmosphere/turbulence_theory.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,12 @@
 namespace mirage {
 namespace {
 
+using testing::integrate_kappa;
+using testing::tilt_correlation;
+using testing::tilt_variance_ap;
+using testing::tilt_variance_integral;
+using testing::uniform;
+
 constexpr double kPi = std::numbers::pi;
 
 TurbulentField make_field(const TurbulenceSettings& s) {
@@ -20,27 +27,10 @@ TurbulentField make_field(const TurbulenceSettings& s) {
     return std::move(f).value();
 }
 
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
-
 glm::dvec3 random_direction(std::mt19937_64& rng) {
     const double c = 2.0 * uniform(rng) - 1.0, a = 2.0 * kPi * uniform(rng);
     const double s = std::sqrt(1.0 - c * c);
     return glm::dvec3(s * std::cos(a), s * std::sin(a), c);
-}
-
-// int_0^inf f(kappa) dkappa on a fine grid in ln(kappa) (trapezoid): the integrands below are
-// smooth in ln(kappa) and negligible outside [1e-6, 1e7] per metre.
-template <class F>
-double integrate_kappa(F f) {
-    const double lo = std::log(1e-6), hi = std::log(1e7);
-    const int n = 200000;
-    const double h = (hi - lo) / n;
-    double sum = 0.0;
-    for (int i = 0; i <= n; ++i) {
-        const double k = std::exp(lo + i * h);
-        sum += (i == 0 || i == n ? 0.5 : 1.0) * f(k) * k;
-    }
-    return sum * h;
 }
 
 TEST(Turbulence, KolmogorovConstantIsTatarskiis) {
@@ -186,11 +176,7 @@ TEST(Turbulence, StructureFunctionFollowsKolmogorov) {
 // tilt the deflection() of a ray gives: the gradient's integral along one line, no aperture.
 // (2.91 C_n^2 L D^(-1/3), often quoted, is the other limit: an aperture D >> l0, which averages
 // the small eddies a point receiver feels.)
-double tilt_variance_ap(const TurbulenceSettings& s, double length_m) {
-    const double k0l0 = 2.0 * kPi / s.outer_scale_m * s.inner_scale_m;
-    return 3.28 * s.cn2 * length_m * std::pow(s.inner_scale_m, -1.0 / 3.0) *
-           (1.0 - 0.72 * std::cbrt(k0l0));
-}
+// (tilt_variance_ap, turbulence_theory.h)
 
 // The tilts (both axes across the ray) of rays of length L through realizations of the field,
 // `directions` rays of random horizontal azimuth and random start in each.
@@ -241,9 +227,7 @@ TEST(Turbulence, AngleOfArrivalVarianceMatchesThePlaneWaveFormula) {
         for (double b : batch) spread += (b - variance) * (b - variance) / (batches - 1);
         const double error = std::sqrt(spread / batches) / variance;
         const double ap = tilt_variance_ap(s, length);
-        const double exact = 2.0 * kPi * kPi * length * integrate_kappa([&](double k) {
-                                 return k * k * k * index_spectrum(s, k);
-                             });
+        const double exact = tilt_variance_integral(s, length);
         std::printf(
             "  C_n^2 = %.0e: <alpha^2> = %.4g rad^2, A&P %.4g (ratio %.3f), "
             "2 pi^2 L int k^3 Phi %.4g, statistical error %.1f %%\n",
@@ -314,15 +298,9 @@ TEST(Turbulence, TiltsDecorrelateAsTheWindMovesTheAir) {
             }
         }
     }
-    const double b0 = integrate_kappa([&](double k) { return k * k * k * index_spectrum(s, k); });
     for (std::size_t j = 0; j < rhos.size(); ++j) {
         const double rho = rhos[j];
-        const double b = integrate_kappa([&](double k) {
-            const double x = k * rho;
-            return k * k * k * index_spectrum(s, k) *
-                   (x < 1e-6 ? 0.5 : 2.0 * std::cyl_bessel_j(1.0, x) / x);
-        });
-        const double expected = b / b0;
+        const double expected = tilt_correlation(s, rho);
         const double measured = c1[j] / std::sqrt(c0[j] * c2[j]);
         std::printf("  rho = %.3f m: tilt correlation %.3f, expected %.3f\n", rho, measured,
                     expected);

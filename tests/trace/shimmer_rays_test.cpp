@@ -13,26 +13,18 @@
 #include "atmosphere/phase_screens.h"
 #include "parsed_scene.h"
 #include "trace/curved_propagator.h"
+#include "atmosphere/turbulence_theory.h"
 
 namespace mirage {
 namespace {
 
+using testing::integrate_kappa;
+using testing::tilt_correlation;
+using testing::tilt_variance_ap;
+using testing::tilt_variance_integral;
+using testing::uniform;
+
 constexpr double kPi = std::numbers::pi;
-
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
-
-template <class F>
-double integrate_kappa(F f) {
-    const double lo = std::log(1e-6), hi = std::log(1e7);
-    const int n = 200000;
-    const double h = (hi - lo) / n;
-    double sum = 0.0;
-    for (int i = 0; i <= n; ++i) {
-        const double k = std::exp(lo + i * h);
-        sum += (i == 0 || i == n ? 0.5 : 1.0) * f(k) * k;
-    }
-    return sum * h;
-}
 
 constexpr double kWall = 20.0;  // m: the wall across the line of sight
 const glm::dvec3 kEye(0.0, 1.0, 0.0);
@@ -102,9 +94,7 @@ TEST(ShimmerRays, ImageShiftsHaveTheSphericalWavesVariance) {
     }
     const double variance = sum / n;
     const double length = kWall - kEye.z;
-    const double plane = 2.0 * kPi * kPi * length * integrate_kappa([&](double k) {
-                             return k * k * k * index_spectrum(t, k);
-                         });
+    const double plane = tilt_variance_integral(t, length);
     std::printf("  <alpha^2> = %.4g rad^2, spherical wave %.4g (ratio %.3f), plane wave %.4g\n",
                 variance, plane / 3.0, variance / (plane / 3.0), plane);
     EXPECT_NEAR(variance / (plane / 3.0), 1.0, 0.20);
@@ -145,18 +135,13 @@ TEST(ShimmerRays, SuccessiveFramesAreCorrelatedAsTheWindSays) {
             }
         }
     }
-    const double b0 = integrate_kappa([&](double k) { return k * k * k * index_spectrum(t, k); });
     for (std::size_t j = 0; j < rhos.size(); ++j) {
         const double rho = rhos[j];
-        const double b = integrate_kappa([&](double k) {
-            const double x = k * rho;
-            return k * k * k * index_spectrum(t, k) *
-                   (x < 1e-6 ? 0.5 : 2.0 * std::cyl_bessel_j(1.0, x) / x);
-        });
+        const double expected = tilt_correlation(t, rho);
         const double measured = c1[j] / std::sqrt(c0[j] * c2[j]);
         std::printf("  rho = %.3f m: shift correlation %.3f, expected %.3f\n", rho, measured,
-                    b / b0);
-        EXPECT_NEAR(measured, b / b0, 0.08) << "rho = " << rho;
+                    expected);
+        EXPECT_NEAR(measured, expected, 0.08) << "rho = " << rho;
     }
 }
 
