@@ -11,6 +11,7 @@
 #include "util/format.h"
 #include "util/json_text.h"
 #include "util/process.h"
+#include "report/gnuplot_run.h"
 
 namespace mirage {
 
@@ -133,7 +134,9 @@ Result<ReportFiles> write_animation_report(const AnimationSummary& s,
             std::error_code ec;
             fs::remove(log, ec);
             auto run = run_process(
-                {s.gnuplot, "-e", "png_out='" + png_tmp + "'; svg_out='" + svg_tmp + "'", f.script},
+                {s.gnuplot, "-e",
+                 "png_out=" + gnuplot_quoted(png_tmp) + "; svg_out=" + gnuplot_quoted(svg_tmp),
+                 f.script},
                 dir.string(), log);
             if (!run) return run.error();
             if (run->exit_code != 0 || !fs::exists(png_tmp, ec) || !fs::exists(svg_tmp, ec)) {

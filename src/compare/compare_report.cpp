@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "util/format.h"
+#include "report/gnuplot_run.h"
 
 namespace mirage {
 
@@ -54,14 +55,6 @@ std::string describe_ratio(const EqualError& e, const std::string& b_name) {
     return b_name + " " + qualifier + sig(1.0 / r, 3) + " times slower";
 }
 
-std::string quote_gp(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
 
 /// The threads of a model's renders, "2" or "1-2".
 std::string threads_of(const std::vector<CompareRow>& rows, bool bands) {
@@ -194,12 +187,12 @@ std::string gnuplot_script(const CompareResult& result) {
         gp << "# " << model_name(m) << ": seconds, RMSE, setting\n$" << block << " << EOD\n";
         for (const auto& r : result.rows)
             if (r.model == m && r.rmse > 0.0)  // a log axis cannot show an RMSE of 0
-                gp << sig(r.seconds, 6) << ' ' << sig(r.rmse, 6) << ' ' << quote_gp(setting_text(r))
+                gp << sig(r.seconds, 6) << ' ' << sig(r.rmse, 6) << ' ' << gnuplot_quoted(setting_text(r))
                    << '\n';
         gp << "EOD\n\n";
     }
     gp << "set title "
-       << quote_gp(result.name + " at " + std::to_string(result.width) + "x" +
+       << gnuplot_quoted(result.name + " at " + std::to_string(result.width) + "x" +
                    std::to_string(result.height) +
                    ": error against run time (reference: per-ray paths within " +
                    shortest(result.reference_tolerance_px) + " px)")
@@ -237,9 +230,9 @@ std::string gnuplot_script(const CompareResult& result) {
         const auto& [colour, pt] = style.at(present[i]);
         if (i > 0) plot << ", \\\n     ";
         plot << "$" << block << " using 1:2 with linespoints lw 2 pt " << pt << " ps 1.2 lc rgb "
-             << quote_gp(colour) << " title " << quote_gp(titles.at(present[i])) << ", \\\n     $"
+             << gnuplot_quoted(colour) << " title " << gnuplot_quoted(titles.at(present[i])) << ", \\\n     $"
              << block << " using 1:2:3 with labels offset char 0.9,0.6 font \",9\" tc rgb "
-             << quote_gp(colour) << " notitle";
+             << gnuplot_quoted(colour) << " notitle";
     }
     if (present.empty()) plot << "1/0 notitle  # no model has a row to plot";
     gp << "\nif (strstrt(GPVAL_TERMINALS, \"pngcairo\") > 0) {\n"

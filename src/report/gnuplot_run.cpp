@@ -7,6 +7,23 @@
 
 namespace mirage {
 
+std::string gnuplot_quoted(const std::string& s) {
+    std::string out = "\"";
+    for (char ch : s) {
+        if (ch == '\n') {
+            out += "\\n";
+        } else if (ch == '\r') {
+            out += "\\r";
+        } else if (ch == '\t') {
+            out += "\\t";
+        } else {
+            if (ch == '"' || ch == '\\') out += '\\';
+            out += ch;
+        }
+    }
+    return out + "\"";
+}
+
 Status run_gnuplot(const std::string& gnuplot, const std::string& script, const std::string& anchor,
                    const std::vector<std::string>& expected, const std::string& what) {
     namespace fs = std::filesystem;

@@ -9,6 +9,11 @@
 
 namespace mirage {
 
+/// `s` as a double-quoted gnuplot string that gnuplot reads back as `s`: backslashes and double
+/// quotes escaped, and line breaks and tabs written as escapes (a raw line break would end the
+/// command).  For file names in a script as well as titles.
+std::string gnuplot_quoted(const std::string& s);
+
 /// Runs `gnuplot` on `script`, written beside `anchor` (the plot's target path) under a
 /// temporary name and removed afterwards.  The script writes the files `expected` (absolute
 /// paths, usually an OutputSet's temporary names): a failure to start, a non-zero exit or a

@@ -186,8 +186,8 @@ Status draw_refraction_plot(const RefractionTable& t, OutputSet& outputs, const 
     auto staged = outputs.stage(png);
     if (!staged) return staged.error();
     const std::string out = fs::absolute(*staged).string();
-    gp << "set terminal pngcairo size 900," << (nw > 1 ? 900 : 560) << " font ',11'\nset output '"
-       << out << "'\n";
+    gp << "set terminal pngcairo size 900," << (nw > 1 ? 900 : 560) << " font ',11'\nset output "
+       << gnuplot_quoted(out) << "\n";
     if (nw > 1) gp << "set multiplot layout 2,1\n";
     gp << "set title 'Astronomical refraction through the standard atmosphere (" << shortest(o.temperature_c)
        << " degC, " << shortest(o.pressure_hpa) << " hPa)'\n"

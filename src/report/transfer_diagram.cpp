@@ -18,14 +18,6 @@ namespace {
 
 constexpr double kArcmin = M_PI / (180.0 * 60.0);
 
-std::string quoted(const std::string& s) {
-    std::string out = "\"";
-    for (char ch : s) {
-        if (ch == '"' || ch == '\\') out += '\\';
-        out += ch;
-    }
-    return out + "\"";
-}
 
 }  // namespace
 
@@ -130,10 +122,10 @@ std::string transfer_gnuplot_script(const TransferSettings& st, const TransferCu
                               sig(st.eye_height, 6) + " m" +
                               (st.atmosphere.earth_radius() > 0.0 ? " (curved Earth)" : "");
     std::ostringstream plot;
-    plot << "set multiplot layout 1,2 title " << quoted(title) << " noenhanced\n"
+    plot << "set multiplot layout 1,2 title " << gnuplot_quoted(title) << " noenhanced\n"
          << "set size 0.36,0.92\nset origin 0.0,0.0\n"
-         << "set title " << quoted(panel.label) << " noenhanced font \",10\"\n"
-         << "set xlabel " << quoted(temps ? "temperature (degC)" : "(n - 1) x 1e6") << "\n"
+         << "set title " << gnuplot_quoted(panel.label) << " noenhanced font \",10\"\n"
+         << "set xlabel " << gnuplot_quoted(temps ? "temperature (degC)" : "(n - 1) x 1e6") << "\n"
          << "set ylabel \"height (m)\"\nset yrange [0:" << sig(h_top, 8) << "]\nset autoscale x\n"
          << "set xtics " << sig(tick_step, 6) << "\n"
          << "set grid lc rgb \"#dddddd\"\nunset key\n";
@@ -161,12 +153,12 @@ std::string transfer_gnuplot_script(const TransferSettings& st, const TransferCu
         gp << "if (strstrt(GPVAL_TERMINALS, \"pngcairo\") > 0) {\n"
            << "    set terminal pngcairo size 1200,560 font \"DejaVu Sans,11\"\n"
            << "} else {\n    set terminal png size 1200,560\n}\n"
-           << "set output " << quoted(png_out) << "\n"
+           << "set output " << gnuplot_quoted(png_out) << "\n"
            << plot.str() << "set output\n";
     }
     if (!svg_out.empty()) {
         gp << "set terminal svg size 1200,560 dynamic font \"DejaVu Sans,11\"\n"
-           << "set output " << quoted(svg_out) << "\n"
+           << "set output " << gnuplot_quoted(svg_out) << "\n"
            << plot.str() << "set output\n";
     }
     return gp.str();

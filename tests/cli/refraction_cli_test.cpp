@@ -54,6 +54,23 @@ TEST(RefractionCli, SeveralWavelengthsGiveTheColoursSeparationAndAPlot) {
     EXPECT_GT(std::filesystem::file_size(dir + "/r.png"), 10000u);
 }
 
+// A plot named with a line break, quotes and a backslash is written under that very name
+// (gnuplot reads the name back from its script: report/gnuplot_run.h, gnuplot_quoted).
+TEST(RefractionCli, APlotNameWithALineBreakAndQuotesIsKept) {
+    const std::string dir = mirage::testing::test_temp_path("mirage_refraction_names");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    for (const std::string name : {"new\nline.png", "it's \"q\" \\b.png"}) {
+        const std::string path = dir + "/" + name;
+        const auto r = run_tool("refraction --elevations 0 --plot " + testing::quoted(path));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_TRUE(std::filesystem::exists(path)) << name;
+    }
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                            std::filesystem::directory_iterator()),
+              2);
+}
+
 TEST(RefractionCli, RefusesAirAndAnglesOutsideTheirRangesNamingTheValue) {
     const struct {
         const char* args;
