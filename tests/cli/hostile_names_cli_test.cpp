@@ -38,16 +38,9 @@ const std::string kDesert = kSource + "/scenes/desert.pov";
 const std::string kWalk = kSource + "/scenes/walk.pov";
 const std::string kRay = "path --preset paper --eye-height 1.5 --elevation-deg -1";
 
-/// A path quoted for sh, whatever bytes it holds.
-std::string sh_quoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
 /// Runs `mirage <args>` in `dir` through sh, with `env` (assignments) before it.
 testing::ToolRun run_in(const fs::path& dir, const std::string& args, const std::string& env = "") {
-    return run_tool("--version >/dev/null; cd " + sh_quoted(dir.string()) + " && " + env + " " +
+    return run_tool("--version >/dev/null; cd " + testing::quoted(dir.string()) + " && " + env + " " +
                     std::string(MIRAGE_BINARY_DIR) + "/mirage " + args);
 }
 
@@ -105,7 +98,7 @@ TEST(HostileNames, AFileNameRunsNoCommandOverGnuParallel) {
     const std::string name = "w\ntouch PWNED\n{= $_ = `touch PWNED2` =}$(touch PWNED3).pov";
     write_bytes(dir / name, read_bytes(kWalk));
     write_bytes(dir / "hosts.txt", ":\n");
-    auto r = run_in(dir, "animate " + sh_quoted(name) +
+    auto r = run_in(dir, "animate " + testing::quoted(name) +
                              " --model trace --frames 1 -W 16 -H 12 -q -o out --hosts hosts.txt");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_FALSE(fs::exists(dir / "PWNED") || fs::exists(dir / "PWNED2") ||
@@ -121,7 +114,7 @@ TEST(HostileNames, GnuParallelsProblemsAreSaidAndAnEmptyHostListRefused) {
     const auto dir = test_dir("hostile_names", "hosts_said");
     write_bytes(dir / "empty.txt", "# no host\n\n");
     auto r = run_tool("animate " + kWalk + " --model trace --frames 1 -W 16 -H 12 -o " +
-                      quoted(dir / "out") + " --hosts " + quoted(dir / "empty.txt"));
+                      testing::quoted(dir / "out") + " --hosts " + testing::quoted(dir / "empty.txt"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage animate: --hosts " + (dir / "empty.txt").string() +
                          ": names no host (one ssh login a line, ':' for this machine)\n");
@@ -129,7 +122,7 @@ TEST(HostileNames, GnuParallelsProblemsAreSaidAndAnEmptyHostListRefused) {
     // A login GNU parallel does not take: its complaint on stderr, not only in its log.
     write_bytes(dir / "bad.txt", "0/:\n");
     r = run_tool("animate " + kWalk + " --model trace --frames 1 -W 16 -H 12 -o " +
-                 quoted(dir / "out") + " --hosts " + quoted(dir / "bad.txt"));
+                 testing::quoted(dir / "out") + " --hosts " + testing::quoted(dir / "bad.txt"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("mirage animate: --hosts: GNU parallel exited with "), std::string::npos)
         << r.err;
@@ -172,7 +165,7 @@ TEST(HostileNames, TheSlurmScriptHoldsNoFileName) {
     write_bytes(dir / "job.sh", s);
     EXPECT_EQ(
         std::system(
-            ("cd " + sh_quoted(dir.string()) + " && SLURM_ARRAY_TASK_ID=1 sh job.sh").c_str()),
+            ("cd " + testing::quoted(dir.string()) + " && SLURM_ARRAY_TASK_ID=1 sh job.sh").c_str()),
         0);
     EXPECT_FALSE(fs::exists(dir / "PWNED") || fs::exists(dir / "PWNED2"));
     // The names go to sbatch as arguments, '%' doubled in the log pattern.
@@ -198,7 +191,7 @@ TEST(HostileNames, NamesPovRayCannotTakeAreRefusedByCompile) {
     };
     for (const auto& [name, why] : names) {
         write_bytes(dir / name, read_bytes(kDesert));
-        auto r = run_in(dir, "compile " + sh_quoted(name) + " -o outc -W 16 -H 12");
+        auto r = run_in(dir, "compile " + testing::quoted(name) + " -o outc -W 16 -H 12");
         EXPECT_EQ(r.exit_code, 1) << name;
         EXPECT_NE(r.err.find(": the scene is read by POV-Ray, and its path holds " + why),
                   std::string::npos)
@@ -209,12 +202,12 @@ TEST(HostileNames, NamesPovRayCannotTakeAreRefusedByCompile) {
     }
     // --image and -L are in the .ini too.
     auto r =
-        run_in(dir, "compile " + kDesert + " -o outc -W 16 -H 12 --image " + sh_quoted("x\ny.png"));
+        run_in(dir, "compile " + kDesert + " -o outc -W 16 -H 12 --image " + testing::quoted("x\ny.png"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("x\\ny.png: --image is read by POV-Ray, and its path holds a line end"),
               std::string::npos)
         << r.err;
-    r = run_in(dir, "compile " + kDesert + " -o outc -W 16 -H 12 -L " + sh_quoted("i\nnc"));
+    r = run_in(dir, "compile " + kDesert + " -o outc -W 16 -H 12 -L " + testing::quoted("i\nnc"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("i\\nnc: -L is read by POV-Ray"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "outc"));
@@ -263,7 +256,7 @@ TEST(HostileNames, FailedPovRayRendersSayWhyAndFailTheCommand) {
           "#!/bin/sh\necho 'Parse Error: Cannot open input file.'\necho 'Render failed'\n"
           "exit 1\n");
     fs::permissions(dir / "bin" / "povray", fs::perms::owner_all);
-    const std::string env = "PATH=" + sh_quoted((dir / "bin").string()) + ":\"$PATH\"";
+    const std::string env = "PATH=" + testing::quoted((dir / "bin").string()) + ":\"$PATH\"";
     auto r = run_in(dir,
                     "compare " + kDesert +
                         " -W 16 -H 12 -o c --counts 4 --tolerances 2 --trace-tolerances 2 "
@@ -285,28 +278,28 @@ TEST(HostileNames, ADeviceOrAFifoIsWrittenNeverReplaced) {
     if (!make_device(dir / "full", 7) || !make_device(dir / "null", 3))
         GTEST_SKIP() << "device nodes cannot be made here (not root)";
     // A full device: the write fails with its reason, and the device stays.
-    auto r = run_tool(kRay + " --svg " + quoted(dir / "full"));
+    auto r = run_tool(kRay + " --svg " + testing::quoted(dir / "full"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "mirage path: " + (dir / "full").string() +
                          ": cannot write: No space left on device\n");
     EXPECT_TRUE(is_char_device(dir / "full"));
-    r = run_tool(kRay + " --svg " + quoted(dir / "null"));
+    r = run_tool(kRay + " --svg " + testing::quoted(dir / "null"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(is_char_device(dir / "null"));
     // Through a link: the link stays a link to the device.
     fs::create_symlink(dir / "null", dir / "link.svg");
-    r = run_tool(kRay + " --svg " + quoted(dir / "link.svg"));
+    r = run_tool(kRay + " --svg " + testing::quoted(dir / "link.svg"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::is_symlink(dir / "link.svg"));
     EXPECT_TRUE(is_char_device(dir / "null"));
     // The tracer's image and compile's outputs.
-    r = run_tool("trace " + kDesert + " -W 16 -H 12 -q -o " + quoted(dir / "null"));
+    r = run_tool("trace " + kDesert + " -W 16 -H 12 -q -o " + testing::quoted(dir / "null"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    r = run_tool("trace " + kDesert + " -W 16 -H 12 -q -o " + quoted(dir / "full"));
+    r = run_tool("trace " + kDesert + " -W 16 -H 12 -q -o " + testing::quoted(dir / "full"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find(": cannot write: No space left on device"), std::string::npos) << r.err;
-    r = run_tool("compile " + kDesert + " -W 16 -H 12 -q -o " + quoted(dir / "c") +
-                 " --error-map " + quoted(dir / "full"));
+    r = run_tool("compile " + kDesert + " -W 16 -H 12 -q -o " + testing::quoted(dir / "c") +
+                 " --error-map " + testing::quoted(dir / "full"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("the error map is written as OpenEXR"), std::string::npos) << r.err;
     EXPECT_TRUE(is_char_device(dir / "full"));
@@ -318,14 +311,14 @@ TEST(HostileNames, AFifoGetsTheOutputAndStaysAFifo) {
     ASSERT_EQ(::mkfifo((dir / "svg").c_str(), 0644), 0);
     testing::ToolRun r;
     std::string got =
-        read_fifo_while(dir / "svg", [&] { r = run_tool(kRay + " --svg " + quoted(dir / "svg")); });
+        read_fifo_while(dir / "svg", [&] { r = run_tool(kRay + " --svg " + testing::quoted(dir / "svg")); });
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(got.find("<svg"), std::string::npos);
     EXPECT_TRUE(is_fifo_node(dir / "svg"));
     // A link to the FIFO stays a link.
     fs::create_symlink(dir / "svg", dir / "to_fifo.svg");
     got = read_fifo_while(dir / "svg",
-                          [&] { r = run_tool(kRay + " --svg " + quoted(dir / "to_fifo.svg")); });
+                          [&] { r = run_tool(kRay + " --svg " + testing::quoted(dir / "to_fifo.svg")); });
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(got.find("<svg"), std::string::npos);
     EXPECT_TRUE(fs::is_symlink(dir / "to_fifo.svg"));
@@ -333,8 +326,8 @@ TEST(HostileNames, AFifoGetsTheOutputAndStaysAFifo) {
     // compile's error map into a FIFO named .exr.
     ASSERT_EQ(::mkfifo((dir / "map.exr").c_str(), 0644), 0);
     got = read_fifo_while(dir / "map.exr", [&] {
-        r = run_tool("compile " + kDesert + " -W 16 -H 12 -q -o " + quoted(dir / "c") +
-                     " --error-map " + quoted(dir / "map.exr"));
+        r = run_tool("compile " + kDesert + " -W 16 -H 12 -q -o " + testing::quoted(dir / "c") +
+                     " --error-map " + testing::quoted(dir / "map.exr"));
     });
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(got.substr(0, 4), std::string("\x76\x2f\x31\x01", 4));  // OpenEXR's magic
@@ -347,7 +340,7 @@ TEST(HostileNames, AFifoGetsTheOutputAndStaysAFifo) {
     // A link to a file: the file gets the output, the link stays.
     write_bytes(dir / "real.svg", "old");
     fs::create_symlink("real.svg", dir / "to_real.svg");
-    r = run_tool(kRay + " --svg " + quoted(dir / "to_real.svg"));
+    r = run_tool(kRay + " --svg " + testing::quoted(dir / "to_real.svg"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::is_symlink(dir / "to_real.svg"));
     EXPECT_NE(read_bytes(dir / "real.svg").find("<svg"), std::string::npos);
@@ -362,8 +355,8 @@ TEST(HostileNames, NamesThatAreNotUtf8AreWrittenAsJson) {
     ASSERT_NE(scene.find(from), std::string::npos);
     scene.replace(scene.find(from), from.size(), "\"red \xff sphere\"");
     write_bytes(dir / "sc\xff.pov", scene);
-    const std::string cmd = "animate " + sh_quoted("sc\xff.pov") +
-                            " --model trace --frames 2 -W 16 -H 12 -q -o " + sh_quoted("o\xfe");
+    const std::string cmd = "animate " + testing::quoted("sc\xff.pov") +
+                            " --model trace --frames 2 -W 16 -H 12 -q -o " + testing::quoted("o\xfe");
     auto r = run_in(dir, cmd);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const fs::path out = dir / "o\xfe";
@@ -382,14 +375,17 @@ TEST(HostileNames, AReaderThatStopsEarlyEndsTheOutputQuietly) {
     const auto dir = test_dir("hostile_names", "pipe");
     // More rows than a pipe holds, so that the write meets the closed pipe.
     std::string csv = "case_id,profile,eta0,eta1,alpha,y0,i_rad,d1,d2,d3\n";
-    for (int i = 0; i < 3000; ++i)
-        csv += "R" + std::to_string(i) + ",inferior,1.000233,0.4584,2.303,1.0,1.9,1,2,3\n";
+    for (int i = 0; i < 3000; ++i) {
+        csv += 'R';
+        csv += std::to_string(i);
+        csv += ",inferior,1.000233,0.4584,2.303,1.0,1.9,1,2,3\n";
+    }
     write_bytes(dir / "rays.csv", csv);
     const std::string cmd =
-        "bash -c " + sh_quoted(std::string(MIRAGE_BINARY_DIR) + "/mirage path --batch " +
-                               sh_quoted((dir / "rays.csv").string()) +
+        "bash -c " + testing::quoted(std::string(MIRAGE_BINARY_DIR) + "/mirage path --batch " +
+                               testing::quoted((dir / "rays.csv").string()) +
                                " | head -c 10 > /dev/null; echo ${PIPESTATUS[0]}");
-    FILE* p = popen((cmd + " 2>" + sh_quoted((dir / "err").string())).c_str(), "r");
+    FILE* p = popen((cmd + " 2>" + testing::quoted((dir / "err").string())).c_str(), "r");
     char buf[64] = {};
     const std::size_t n = std::fread(buf, 1, sizeof buf - 1, p);
     pclose(p);
@@ -402,7 +398,7 @@ TEST(HostileNames, MessagesEscapeWhatWouldActOnATerminal) {
     write_bytes(dir / "e.pov",
           std::string("#error \"nul ") + std::string(1, '\0') + "clear\x1b[2J\x07 bell\"\n");
     auto r =
-        run_tool("trace " + quoted(dir / "e.pov") + " -W 16 -H 12 -o " + quoted(dir / "e.png"));
+        run_tool("trace " + testing::quoted(dir / "e.pov") + " -W 16 -H 12 -o " + testing::quoted(dir / "e.png"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("#error: nul \\0clear\\x1b[2J\\x07 bell"), std::string::npos) << r.err;
     for (char c : r.err) EXPECT_TRUE(c == '\n' || static_cast<unsigned char>(c) >= 0x20) << r.err;
@@ -411,22 +407,22 @@ TEST(HostileNames, MessagesEscapeWhatWouldActOnATerminal) {
 TEST(HostileNames, RefusalsLeaveNoFolderAndNamelessOutputsAreRefused) {
     const auto dir = test_dir("hostile_names", "leftovers");
     // compile: the error map in a folder that does not exist.
-    auto r = run_tool("compile " + kDesert + " -W 16 -H 12 -q -o " + quoted(dir / "outc") +
-                      " --error-map " + quoted(dir / "missing" / "map.exr"));
+    auto r = run_tool("compile " + kDesert + " -W 16 -H 12 -q -o " + testing::quoted(dir / "outc") +
+                      " --error-map " + testing::quoted(dir / "missing" / "map.exr"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_FALSE(fs::exists(dir / "outc"));
     // compare: a scene with no atmosphere, found after the reference.
     write_bytes(dir / "plain.pov",
           "camera { location <0, 1, -4> look_at <0, 1, 0> }\n"
           "light_source { <2, 4, -3>, rgb 1 }\nsphere { <0, 1, 0>, 1 pigment { rgb x } }\n");
-    r = run_tool("compare " + quoted(dir / "plain.pov") + " -W 16 -H 12 -o " +
-                 quoted(dir / "cmp" / "deep"));
+    r = run_tool("compare " + testing::quoted(dir / "plain.pov") + " -W 16 -H 12 -o " +
+                 testing::quoted(dir / "cmp" / "deep"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("declares no atmosphere"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "cmp"));
     // animate: a clock POV-Ray cannot hold.
     r = run_tool("animate " + kWalk + " --frames 2 +KI-3e38 +KF3e38 --model trace -o " +
-                 quoted(dir / "anim"));
+                 testing::quoted(dir / "anim"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("the clock of frame 1 is not a number"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "anim"));

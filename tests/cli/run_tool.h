@@ -33,8 +33,20 @@ inline void write_bytes(const std::filesystem::path& p, const std::string& text)
     std::ofstream(p, std::ios::binary) << text;
 }
 
-/// A path quoted for the shell command line of run_tool.
-inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+/// A path quoted for the shell command line of run_tool, whatever bytes it holds (a single
+/// quote in it too).
+inline std::string quoted(const std::filesystem::path& p) {
+    std::string q = "'";
+    for (char c : p.string()) {
+        if (c == '\'') {
+            q += "'\\''";
+        } else {
+            q += c;
+        }
+    }
+    q += '\'';
+    return q;
+}
 
 /// Runs `build/mirage <args>` through the shell (args are quoted by the caller).
 inline ToolRun run_tool(const std::string& args, const std::string& stdin_text = "") {

@@ -29,6 +29,7 @@
 #include "image/image_io.h"
 #include "pov/emit_camera.h"
 #include "trace_png.h"
+#include "cli/run_tool.h"
 
 namespace mirage {
 namespace {
@@ -46,7 +47,6 @@ constexpr double kSameColour = 0.1;  // as scene_image_diff_test.cpp
 // excess temperature leave 6.6% on both.  The allowance is scene_image_diff_test.cpp's.
 constexpr double kUnexplainedShare = 0.01;
 
-std::string shell_quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 /// scenes/hot_road.pov copied into `dir` with its sounding; `flat` adds Mirage_Earth_Radius
 /// = 0; `excess_scale` scales every row's temperature above the top row's (30 degC at 10 m).
@@ -99,9 +99,9 @@ Result<Check> check_bands(const std::string& scene, const fs::path& dir, const s
     o.progress = false;
     auto report = compile_scene(o);
     if (!report) return report.error();
-    const std::string command = "cd " + shell_quoted(dir) + " && povray " +
-                                shell_quoted(report->ini_path) + " > " +
-                                shell_quoted(dir / (stem + ".log")) + " 2>&1";
+    const std::string command = "cd " + testing::quoted(dir) + " && povray " +
+                                testing::quoted(report->ini_path) + " > " +
+                                testing::quoted(dir / (stem + ".log")) + " 2>&1";
     if (std::system(command.c_str()) != 0)
         return make_error("povray failed: see " + (dir / (stem + ".log")).string());
     if (report->camera == "corrected")
@@ -200,10 +200,10 @@ Result<CropRenders> render_crop(const std::string& scene, const fs::path& dir, c
     // top.
     const int row0 = render.y + (report->camera == "corrected" ? 1 : 0);
     const std::string command =
-        "cd " + shell_quoted(dir) + " && povray " + shell_quoted(report->ini_path) + " +SR" +
+        "cd " + testing::quoted(dir) + " && povray " + testing::quoted(report->ini_path) + " +SR" +
         std::to_string(row0 + 1) + " +ER" + std::to_string(row0 + render.height) + " +SC" +
         std::to_string(render.x + 1) + " +EC" + std::to_string(render.x + render.width) + " > " +
-        shell_quoted(dir / "bands.log") + " 2>&1";
+        testing::quoted(dir / "bands.log") + " 2>&1";
     if (std::system(command.c_str()) != 0)
         return make_error("povray failed: see " + (dir / "bands.log").string());
     if (report->camera == "corrected")

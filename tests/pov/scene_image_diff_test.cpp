@@ -38,6 +38,7 @@
 #include "load/mirage_scene.h"
 #include "scene/parser.h"
 #include "trace_png.h"
+#include "cli/run_tool.h"
 
 namespace mirage {
 namespace {
@@ -82,12 +83,11 @@ std::string scene_path(const std::string& name) {
     return (fs::path(MIRAGE_SOURCE_DIR) / "scenes" / (name + ".pov")).string();
 }
 
-std::string shell_quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 /// Runs POV-Ray in `dir` with `args`; the log goes to dir/log.
 bool run_povray(const fs::path& dir, const std::string& args, const std::string& log) {
-    const std::string command = "cd " + shell_quoted(dir) + " && povray " + args + " > " +
-                                shell_quoted(dir / log) + " 2>&1";
+    const std::string command = "cd " + testing::quoted(dir) + " && povray " + args + " > " +
+                                testing::quoted(dir / log) + " 2>&1";
     return std::system(command.c_str()) == 0;
 }
 
@@ -116,7 +116,7 @@ Result<BandCheck> check_bands(const std::string& scene, CompileOptions o, const 
     o.image = (dir / (stem + ".png")).string();
     auto report = compile_scene(o);
     if (!report) return report.error();
-    if (!run_povray(dir, shell_quoted(report->ini_path), stem + ".log"))
+    if (!run_povray(dir, testing::quoted(report->ini_path), stem + ".log"))
         return make_error("povray failed: see " + (dir / (stem + ".log")).string());
     if (report->camera == "corrected")
         if (auto s = crop_mesh_camera_render(o.image); !s) return s.error();
@@ -164,8 +164,8 @@ class SceneImageDiff : public ::testing::TestWithParam<std::string> {
 
 TEST_P(SceneImageDiff, AtmosphereOffMatchesPovRay) {
     const std::string args = "-D -A +FN8 +W" + std::to_string(kW) + " +H" + std::to_string(kH) +
-                             " +L" + shell_quoted(fs::path(MIRAGE_SOURCE_DIR) / "pov_includes") +
-                             " +I" + shell_quoted(scene_) + " +Ostraight_povray.png";
+                             " +L" + testing::quoted(fs::path(MIRAGE_SOURCE_DIR) / "pov_includes") +
+                             " +I" + testing::quoted(scene_) + " +Ostraight_povray.png";
     ASSERT_TRUE(run_povray(dir_, args, "straight_povray.log")) << "see " << dir_;
     auto pov = read_image((dir_ / "straight_povray.png").string());
     auto ours = trace_png(scene_, dir_ / "straight_trace.png", kW, kH, kTraceTolerancePx, false);
