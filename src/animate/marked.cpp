@@ -78,22 +78,13 @@ Result<std::vector<MarkedView>> view_marked_spheres(const Scene& scene, int widt
     const double pixel_rad = pixel_angle_rad(scene.camera, width, height);
     // The scene's atmosphere as the tracer has it: the closed forms, or real air's fitted model
     // (fitted for the scene's own path tolerance), in scene units.
-    auto atmosphere = scene_atmosphere(*settings, settings->tolerance_px * pixel_rad);
+    auto atmosphere = scene_atmosphere(
+        *settings, fit_angle_rad(PixelFootprint{0.0, pixel_rad}, settings->tolerance_px, 0.0));
     if (!atmosphere) return atmosphere.error();
     const double R = atmosphere->earth_radius();
     // What the distances depend on besides the heights: the profile's parameters, or every
     // knot and value of the fitted model (the air may change from frame to frame).
-    std::vector<double> air_key;
-    if (const Profile* p = atmosphere->exponential_profile()) {
-        air_key = {p->eta0, p->eta1, p->alpha, static_cast<double>(p->kind)};
-    } else {
-        const QuadraticProfile& q = *atmosphere->quadratic_profile();
-        air_key = {q.n0_sq(), R};
-        for (int j = 0; j <= q.piece_count(); ++j) {
-            air_key.push_back(q.knot(j));
-            air_key.push_back(q.e(j));
-        }
-    }
+    const std::vector<double> air_key = atmosphere->key();
     // Heights above the atmosphere's ground (Mirage_Ground_Height): the scene as parsed is not
     // lowered here, so the eye and the spheres are.  On the curved Earth the heights are the
     // flattened frame's and the distances along the sphere, as the tracer reads the scene.

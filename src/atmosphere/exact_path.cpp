@@ -1,5 +1,6 @@
 #include "atmosphere/exact_path.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -81,6 +82,35 @@ void Atmosphere::n_range(double ya, double yb, double& lo, double& hi) const {
     q->n_sq_range(ya, std::isinf(yb) ? q->top() : yb, l, h);
     lo = std::sqrt(l);
     hi = std::sqrt(h);
+}
+
+double Atmosphere::constant_above() const {
+    if (const QuadraticProfile* q = quadratic_profile()) return q->top();
+    return kInf;
+}
+
+bool Atmosphere::closed_form() const { return exponential_profile() != nullptr; }
+
+bool Atmosphere::operator==(const Atmosphere& other) const {
+    const Profile* a = exponential_profile();
+    const Profile* b = other.exponential_profile();
+    if (a && b) {
+        return a->kind == b->kind && a->eta0 == b->eta0 && a->eta1 == b->eta1 &&
+               a->alpha == b->alpha;
+    }
+    return !a && !b && quadratic_profile() == other.quadratic_profile();
+}
+
+std::vector<double> Atmosphere::key() const {
+    if (const Profile* p = exponential_profile())
+        return {static_cast<double>(p->kind), p->eta0, p->eta1, p->alpha};
+    const QuadraticProfile& q = *quadratic_profile();
+    std::vector<double> key = {-1.0, q.n0_sq(), q.earth_radius()};
+    for (int j = 0; j <= q.piece_count(); ++j) {
+        key.push_back(q.knot(j));
+        key.push_back(q.e(j));
+    }
+    return key;
 }
 
 Result<ExactPath> ExactPath::make(const Atmosphere& atmosphere, double y0, double i_rad) {
@@ -236,6 +266,59 @@ std::vector<QuadraticSegment> ExactPath::release_storage() {
 
 void ExactPath::adopt_storage(std::vector<QuadraticSegment>&& storage) {
     if (auto* q = std::get_if<QuadraticPath>(&path_)) q->adopt_storage(std::move(storage));
+}
+
+Result<PathOrigin> PathOrigin::make(const Atmosphere& atmosphere, double y0) {
+    PathOrigin o(atmosphere, y0);
+    if (const Profile* p = atmosphere.exponential_profile()) {
+        auto start = make_exact_ray_origin(*p, y0);
+        if (!start) return start.error();
+        // Monotone in height: n runs from eta0 at the ground through eta_p to eta_inf.
+        const double lo = std::min(p->eta0, start->eta_inf);
+        const double hi = std::max(p->eta0, start->eta_inf);
+        const bool inferior = p->kind == ProfileKind::Inferior;
+        o.n_ = start->eta_p;
+        o.lo_up_ = inferior ? start->eta_p : lo;
+        o.lo_down_ = inferior ? lo : start->eta_p;
+        o.hi_up_ = o.hi_down_ = hi;
+        o.start_ = *start;
+        return o;
+    }
+    const QuadraticProfile* q = atmosphere.quadratic_profile();
+    if (!(y0 >= 0.0 && std::isfinite(y0)))
+        return make_error("a ray's start height must be finite and at least 0");
+    atmosphere.n_range(y0, kInf, o.lo_up_, o.hi_up_);
+    atmosphere.n_range(0.0, y0, o.lo_down_, o.hi_down_);
+    o.n_ = atmosphere.n(y0);
+    o.start_ = quadratic_start(*q, y0);
+    return o;
+}
+
+bool PathOrigin::bends_at_most(double sin_i, bool rising, double limit) const {
+    const double lo = rising ? lo_up_ : lo_down_;
+    const double hi = rising ? hi_up_ : hi_down_;
+    const double beta = n_ * sin_i;
+    const double s_max = beta / lo;
+    if (!(s_max < 1.0)) return false;
+    const double s_min = beta / hi;
+    // asin' = 1 / sqrt(1 - x^2) is at least 1 / sqrt(1 - s_min^2) between the two.
+    if (s_max - s_min > limit * std::sqrt((1.0 - s_min) * (1.0 + s_min))) return false;
+    return std::asin(s_max) - std::asin(s_min) <= limit;
+}
+
+void PathOrigin::path(double cos_i, double sin_i, std::optional<ExactPath>& path) const {
+    if (const auto* start = std::get_if<ExactRayOrigin>(&start_)) {
+        if (!path || !path->exponential()) path.emplace(ExactPath(ExactRay{}));
+        make_exact_ray(*start, cos_i, sin_i, std::get<ExactRay>(path->path_));
+        return;
+    }
+    std::vector<QuadraticSegment> storage;
+    if (path) storage = path->release_storage();
+    auto made = ExactPath::make_direction(atmosphere_, std::get<QuadraticStart>(start_), cos_i,
+                                          sin_i);
+    MIRAGE_CHECK(made.ok());
+    made->adopt_storage(std::move(storage));
+    path.emplace(std::move(*made));
 }
 
 }  // namespace mirage

@@ -10,8 +10,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "atmosphere/exact_ray.h"
 #include "atmosphere/profile.h"
@@ -39,8 +41,22 @@ class Atmosphere {
     bool has_gradient() const;
     /// The Earth radius of the flattened frame; 0 for flat ground.
     double earth_radius() const;
+    /// The height above which n no longer changes: the fitted model's top; +inf for the
+    /// exponential profiles, which approach eta(infinity) without reaching it.
+    double constant_above() const;
     /// The smallest and largest index over the heights [ya, yb] (ya <= yb, yb may be +inf).
     void n_range(double ya, double yb, double& lo, double& hi) const;
+    /// Whether its paths are in closed form: a point at any distance costs the same, so a
+    /// tracer follows them as far as the sampler goes (kMaxSampleDistance), where a path of
+    /// the general engine, computed piece by piece, is followed as far as the scene needs.
+    bool closed_form() const;
+
+    /// The same medium: the same exponential profile, or the same piecewise-quadratic model
+    /// (by identity).
+    bool operator==(const Atmosphere& other) const;
+    /// The medium by value, for a cache that outlives it: the profile's parameters, or every
+    /// knot and value of the model with its Earth radius.  Equal keys, equal media.
+    std::vector<double> key() const;
 
   private:
     std::variant<Profile, std::shared_ptr<const QuadraticProfile>> model_;
@@ -107,9 +123,41 @@ class ExactPath {
     void adopt_storage(std::vector<QuadraticSegment>&& storage);
 
   private:
+    friend class PathOrigin;
     explicit ExactPath(ExactRay ray) : path_(std::move(ray)) {}
     explicit ExactPath(QuadraticPath path) : path_(std::move(path)) {}
     std::variant<ExactRay, QuadraticPath> path_;
+};
+
+/// What every ray from one height of an atmosphere shares, computed once for the many rays a
+/// tracer sends from there (a frame's camera rays from the eye, a reflection's): the
+/// exponential profiles' constants (ExactRayOrigin) or the general engine's start, and the
+/// index's range over the heights a ray reaches without turning.
+class PathOrigin {
+  public:
+    /// From height y0 (finite, >= 0) of the atmosphere, which the origin keeps.
+    static Result<PathOrigin> make(const Atmosphere& atmosphere, double y0);
+
+    const Atmosphere& atmosphere() const { return atmosphere_; }
+    double y0() const { return y0_; }
+
+    /// Whether the ray from here with sin i = sin_i (rising or not) turns by at most `limit`
+    /// (rad) anywhere: from the invariant n(y) sin i(y) = beta over the heights it can reach
+    /// without turning (above the start rising, below it descending); false when it can turn.
+    bool bends_at_most(double sin_i, bool rising, double limit) const;
+
+    /// The ray along the unit direction (cos i, sin i), sin i > 0, into `path`, whose storage
+    /// it reuses (a general path's segments; an exponential ray is written in place).
+    void path(double cos_i, double sin_i, std::optional<ExactPath>& path) const;
+
+  private:
+    PathOrigin(const Atmosphere& atmosphere, double y0) : atmosphere_(atmosphere), y0_(y0) {}
+    Atmosphere atmosphere_;
+    double y0_ = 0.0;
+    double n_ = 1.0;                      // the index at y0
+    double lo_up_ = 1.0, hi_up_ = 1.0;    // bounds of n over the heights a rising ray reaches
+    double lo_down_ = 1.0, hi_down_ = 1.0;  // and a descending one
+    std::variant<ExactRayOrigin, QuadraticStart> start_;
 };
 
 }  // namespace mirage

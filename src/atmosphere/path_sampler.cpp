@@ -508,4 +508,18 @@ void sample_exact_path_near(const ExactPath& path, const SampleSettings& st,
     }
 }
 
+SampledPath sample_path(const ExactPath& path, const SampleSettings& st) {
+    if (const ExactRay* ray = path.exponential()) return sample_path(*ray, st);
+    return sample_exact_path(path, st);
+}
+
+void sample_path_near(const ExactPath& path, const SampleSettings& st,
+                      const PathObstacles* obstacles, SampledPath& out) {
+    if (const ExactRay* ray = path.exponential()) {
+        sample_path_near(*ray, st, obstacles, out);
+    } else {
+        sample_exact_path_near(path, st, obstacles, out);
+    }
+}
+
 }  // namespace mirage

@@ -43,4 +43,12 @@ double allowed_error(const ExactPath& path, const SampleSettings& settings, doub
 void sample_exact_path_near(const ExactPath& path, const SampleSettings& settings,
                             const PathObstacles* obstacles, SampledPath& out);
 
+/// The tracer's sampler for any exact path: the closed-form sampler of sampler.h
+/// (sample_path, sample_path_near) for an exponential profile's ray, whose economy is tuned to
+/// its one turning point, and the general sampler above for every other path.  Both keep the
+/// same tolerance.
+SampledPath sample_path(const ExactPath& path, const SampleSettings& settings);
+void sample_path_near(const ExactPath& path, const SampleSettings& settings,
+                      const PathObstacles* obstacles, SampledPath& out);
+
 }  // namespace mirage

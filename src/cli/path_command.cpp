@@ -178,7 +178,7 @@ void add_perturbed_rays(const PathOptions& o, RayDiagramSettings& st) {
         auto screens = PhaseScreens::make(t, layout);
         if (!screens) fail(screens.message());
         CurvedSettings cs;
-        cs.general = st.atmosphere;
+        cs.atmosphere = st.atmosphere;
         cs.tolerance_rad = st.tolerance_rad;
         cs.tolerance_m = st.tolerance_m;
         cs.max_dz = st.max_distance;

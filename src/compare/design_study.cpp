@@ -18,6 +18,7 @@
 #include "load/atmosphere_settings.h"
 #include "pov/povray_path.h"
 #include "util/atomic_file.h"
+#include "util/check.h"
 #include "util/format.h"
 #include "util/new_directories.h"
 #include "util/output_set.h"
@@ -30,6 +31,15 @@ namespace fs = std::filesystem;
 namespace mirage {
 
 namespace {
+
+// The study's designs are fitted with the exponential profiles' closed forms: run_design_study
+// refuses any other atmosphere.
+const Profile& closed_profile(const CompileContext& ctx) {
+    const Profile* p = ctx.atmosphere.exponential_profile();
+    MIRAGE_CHECK(p != nullptr);
+    return *p;
+}
+
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -68,7 +78,7 @@ Continuum make_continuum(const CompileContext& ctx, int rays_per_row) {
     const double t_lo = std::tan(lo), t_hi = std::tan(hi);
     for (int i = 0; i < n; ++i) {
         const double e = std::atan(t_lo + (t_hi - t_lo) * (i + 0.5) / n);
-        auto ray = make_exact_ray(ctx.profile, ctx.eye_y, M_PI / 2 - e);
+        auto ray = make_exact_ray(closed_profile(ctx), ctx.eye_y, M_PI / 2 - e);
         if (!ray) continue;
         k.elevation.push_back(e);
         k.pixel_rad.push_back(pixel_at(e));
@@ -324,9 +334,9 @@ Status study_graded(Study& st) {
     const CompileContext& ctx = st.ctx;
     StudyResult& res = st.res;
     const double top = std::max(
-        ctx.eye_y * 1.01, height_of_excess(ctx.profile, eta_sq_excess(ctx.profile, kInf) * 0.99));
-    const double range = std::fabs(eta(ctx.profile, top) - ctx.profile.eta0);
-    const double n_eye = eta(ctx.profile, ctx.eye_y);
+        ctx.eye_y * 1.01, height_of_excess(closed_profile(ctx), eta_sq_excess(closed_profile(ctx), kInf) * 0.99));
+    const double range = std::fabs(eta(closed_profile(ctx), top) - closed_profile(ctx).eta0);
+    const double n_eye = eta(closed_profile(ctx), ctx.eye_y);
     for (int levels : st.opt.graded_levels) {
         for (double steps : st.opt.graded_steps) {
             StudyRow row;
@@ -339,7 +349,7 @@ Status study_graded(Study& st) {
             gs.grading = steps * dn / n_eye;
             gs.saturation = n_eye * st.zone_lo;  // levelled off before the nearest object
             gs.softness = 0.15;
-            const IndexRange ir = graded_index_range(ctx.profile, ctx.eye_y, top, gs);
+            const IndexRange ir = graded_index_range(closed_profile(ctx), ctx.eye_y, top, gs);
             std::vector<double> lv;
             // Levels on a grid with the eye's index in the middle of a layer.
             const double c0 = n_eye + 0.5 * dn - dn * std::ceil((n_eye - ir.lo) / dn);
@@ -350,7 +360,7 @@ Status study_graded(Study& st) {
                                     " levels over the graded index range: left out");
                 continue;
             }
-            auto g = graded_stack(ctx.profile, ctx.eye_y, res.elevation_lo, res.elevation_hi,
+            auto g = graded_stack(closed_profile(ctx), ctx.eye_y, res.elevation_lo, res.elevation_hi,
                                   std::min(st.reach, 1.2 * st.zone_hi), top, gs, lv);
             if (!g) {
                 res.notes.push_back(row.design + ": " + g.message());
@@ -497,8 +507,12 @@ Result<StudyResult> run_design_study(const StudyOptions& opt) {
     if (!ctx_r) return ctx_r.error();
     st.ctx = std::move(*ctx_r);
     const CompileContext& ctx = st.ctx;
-    if (!ctx.settings.declared || ctx.profile.kind == ProfileKind::None)
+    if (!ctx.settings.declared || !ctx.atmosphere.has_gradient())
         return make_error(opt.scene + ": the scene declares no atmosphere: nothing to study");
+    if (!ctx.atmosphere.exponential_profile())
+        return make_error(opt.scene + ": the layer designs studied are fitted with the " +
+                          "exponential profiles' closed forms, and this scene's atmosphere is " +
+                          "real air (" + ctx.settings.profile_label + ")");
 
     StudyResult& res = st.res;
     res.scene = opt.scene;

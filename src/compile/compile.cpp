@@ -270,10 +270,11 @@ void record_layer_span(const CompileContext& ctx, const Design& design, CompileR
     rep.lowest = stack.heights.front();
     rep.highest = stack.heights.back();
     const bool fitted = design.mode == "adaptive" || design.mode == "uniform";
-    if (ctx.profile.kind == ProfileKind::Inferior && fitted)
+    const Profile* closed = ctx.atmosphere.exponential_profile();
+    if (closed && closed->kind == ProfileKind::Inferior && fitted)
         rep.left_out.push_back("layers below y = " + sig(rep.lowest, 4) +
                                ": no camera ray turns lower");
-    if (!ctx.air && fitted)
+    if (closed && fitted)
         rep.left_out.push_back("layers above y = " + sig(rep.highest, 4) +
                                ": the index is within 1% of eta(infinity), or no camera ray "
                                "reaches higher");
@@ -304,8 +305,8 @@ PixelCheckSettings pixel_check_settings(const CompileContext& ctx, const CameraR
         ps.layers_below = HorizontalBox{eye.x - r, eye.x + r, eye.z - r, eye.z + r};
     }
     ps.exact_tolerance_rad = 0.05 * finest;
-    ps.general = ctx.air;
-    ps.max_dz = ctx.air_max_dz;
+    ps.atmosphere = ctx.atmosphere;
+    ps.max_dz = ctx.max_dz;
     ps.turbulence = ctx.turbulence;
     ps.turbulence_time_s = ctx.turbulence_time_s;
     ps.unit_m = ctx.settings.unit_m;
@@ -472,7 +473,7 @@ Result<CompileReport> compile_scene(const CompileOptions& opt) {
         ps.progress = opt.progress;
         if (corrected) ps.aim = corrected_camera_aim(ctx, rendered, rays);
         const PixelCheck pc =
-            check_pixels(rendered, ctx.profile, ctx.scene, *ctx.accel, object_query(*ctx.accel),
+            check_pixels(rendered, ctx.scene, *ctx.accel, object_query(*ctx.accel),
                          rays.direction, rays.pixel_rad, cut_off, ps);
         summarize_check(pc, rays, st.tolerance_px, rep);
         // The errors at the scene's edge are angles seen from one eye along the camera's own

@@ -386,8 +386,7 @@ OriginEnds origin_ends(const LayerStack& rendered, const Scene& scene, const Sce
     return p;
 }
 
-PixelCheck check_many_origins(const LayerStack& rendered, const Profile& profile,
-                              const Scene& scene, const SceneAccel& accel,
+PixelCheck check_many_origins(const LayerStack& rendered, const Scene& scene, const SceneAccel& accel,
                               const ObjectQuery& objects, const std::vector<glm::dvec3>& directions,
                               const std::vector<bool>& cut_off, const PixelCheckSettings& s) {
     const int W = s.width, H = s.height;
@@ -395,11 +394,10 @@ PixelCheck check_many_origins(const LayerStack& rendered, const Profile& profile
     const std::vector<glm::dvec3>& origins = *s.origins;
     MIRAGE_CHECK(origins.size() == n);
     CurvedSettings cs;
-    cs.profile = profile;
+    cs.atmosphere = s.atmosphere;
     // The exact paths a twentieth of a pixel from the truth.
     cs.tolerance_rad = 0.05 * s.footprint.angle_rad;
     cs.tolerance_m = 0.05 * s.footprint.distance;
-    if (s.general) cs.general = *s.general;
     cs.max_dz = s.max_dz;
     cs.turbulence = s.turbulence;
     cs.turbulence_time_s = s.turbulence_time_s;
@@ -474,20 +472,19 @@ PixelCheck check_many_origins(const LayerStack& rendered, const Profile& profile
 
 }  // namespace
 
-PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, const Scene& scene,
+PixelCheck check_pixels(const LayerStack& rendered, const Scene& scene,
                         const SceneAccel& accel, const ObjectQuery& objects,
                         const std::vector<glm::dvec3>& directions,
                         const std::vector<double>& pixel_rad, const std::vector<bool>& cut_off,
                         const PixelCheckSettings& s) {
     if (s.origins)
-        return check_many_origins(rendered, profile, scene, accel, objects, directions, cut_off, s);
+        return check_many_origins(rendered, scene, accel, objects, directions, cut_off, s);
     const int W = s.width, H = s.height;
     const size_t n = static_cast<size_t>(W) * H;
     MIRAGE_CHECK(directions.size() == n && pixel_rad.size() == n && cut_off.size() == n);
     CurvedSettings cs;
-    cs.profile = profile;
+    cs.atmosphere = s.atmosphere;
     cs.tolerance_rad = s.exact_tolerance_rad;
-    if (s.general) cs.general = *s.general;
     cs.max_dz = s.max_dz;
     cs.turbulence = s.turbulence;
     cs.turbulence_time_s = s.turbulence_time_s;

@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
+#include "atmosphere/exact_path.h"
 #include "atmosphere/phase_screens.h"
-#include "atmosphere/profile.h"
 #include "layers/band_tracer3d.h"
 #include "layers/stack.h"
 #include "scene/camera.h"
@@ -21,7 +21,6 @@
 
 namespace mirage {
 
-class Atmosphere;  // atmosphere/exact_path.h
 
 /// Where an exact camera ray ends: on a surface (hit) or leaving in `direction`.
 struct ExactEnd {
@@ -57,9 +56,9 @@ struct PixelCheckSettings {
     double exact_tolerance_rad = 1e-5;  // sampling tolerance of the exact paths
     int max_bounces = 4;                // reflections followed, while their weight shows
     bool progress = false;              // a progress bar on stderr (on a terminal)
-    // Real air: the exact rays follow this model as the tracer's do (CurvedSettings::general,
-    // ::max_dz), not `profile`.
-    std::shared_ptr<const Atmosphere> general;
+    // The atmosphere the exact rays follow, as the tracer's do (CurvedSettings::atmosphere,
+    // ::max_dz).
+    Atmosphere atmosphere;
     double max_dz = 0.0;
     // Turbulent air: the exact rays walked through these screens at that time, as the
     // tracer's are (CurvedSettings::turbulence); unit_m metres per scene unit.
@@ -110,7 +109,7 @@ struct PixelCheck {
 /// `objects` stops band rays at the scene's surfaces (as POV-Ray does); `accel` holds the
 /// same surfaces for the exact rays.  Runs on all cores; the result does not depend on how
 /// many.
-PixelCheck check_pixels(const LayerStack& rendered, const Profile& profile, const Scene& scene,
+PixelCheck check_pixels(const LayerStack& rendered, const Scene& scene,
                         const SceneAccel& accel, const ObjectQuery& objects,
                         const std::vector<glm::dvec3>& directions,
                         const std::vector<double>& pixel_rad, const std::vector<bool>& cut_off,

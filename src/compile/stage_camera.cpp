@@ -43,8 +43,7 @@ BandAim corrected_camera_aim(const CompileContext& ctx, const LayerStack& render
     };
     // The exact path's height at horizontal distance r (NaN past its ground).
     auto exact_height = [&ctx, &rays](size_t i, double r) {
-        const BandOutcome o = ctx.air ? exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], r)
-                                      : exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], r);
+        const BandOutcome o = exact_outcome(ctx.atmosphere, ctx.eye_y, rays.elevation[i], r);
         return o.ground ? std::numeric_limits<double>::quiet_NaN() : o.y;
     };
     BandAim aim;

@@ -49,24 +49,22 @@ int trace_levels(const CompileContext& ctx, const LayerStack& stack, const Objec
     return deepest;
 }
 
-// The highest point the camera's exact rays (the exponential profiles) reach inside the
-// scene.
+// The highest point the camera's exact rays reach inside the scene.
 double highest_reached(const CompileContext& ctx, const CameraRays& rays) {
     std::vector<double> top(rays.size(), ctx.eye_y);
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
-        auto ex = make_exact_ray(ctx.profile, ctx.eye_y, M_PI / 2 - rays.elevation[i]);
+        auto ex = ExactPath::make(ctx.atmosphere, ctx.eye_y, M_PI / 2 - rays.elevation[i]);
         if (!ex) return;
-        top[i] = height_at(*ex, std::min(rays.exit_dz[i], ex->hits_ground ? ex->dz_ground : kInf));
+        top[i] = ex->height_at(std::min(rays.exit_dz[i], ex->dz_ground()));
     });
     return *std::max_element(top.begin(), top.end());
 }
 
 // The heights the camera's rays reach inside the scene, for Berger's layers.
-double top_reached(const CompileContext& ctx, const CameraRays& rays) {
+double top_reached(const CompileContext& ctx, const Profile& profile, const CameraRays& rays) {
     const double t = highest_reached(ctx, rays);
-    return std::min(
-        t, std::max(ctx.eye_y * 1.001,
-                    height_of_excess(ctx.profile, eta_sq_excess(ctx.profile, kInf) * 0.99)));
+    return std::min(t, std::max(ctx.eye_y * 1.001,
+                                height_of_excess(profile, eta_sq_excess(profile, kInf) * 0.99)));
 }
 
 // The top of the corrected camera's layers: the highest point a camera ray reaches inside
@@ -74,13 +72,14 @@ double top_reached(const CompileContext& ctx, const CameraRays& rays) {
 // is below (p / 10)^2 for the finest pixel angle p: a ray at elevation e that rises from
 // there turns by at most about sqrt(that) <= p / 10 more, the worst case being a level one
 // (e^2 grows by the excess gained).
-double corrected_camera_top(const CompileContext& ctx, const CameraRays& rays) {
+double corrected_camera_top(const CompileContext& ctx, const Profile& profile,
+                            const CameraRays& rays) {
     const double t = highest_reached(ctx, rays);
     double finest = kInf;
     for (double p : rays.pixel_rad) finest = std::min(finest, p);
-    const double ex_inf = eta_sq_excess(ctx.profile, kInf);
+    const double ex_inf = eta_sq_excess(profile, kInf);
     const double left = std::min(0.5 * std::fabs(ex_inf), 0.01 * finest * finest);
-    const double flat = height_of_excess(ctx.profile, ex_inf - std::copysign(left, ex_inf));
+    const double flat = height_of_excess(profile, ex_inf - std::copysign(left, ex_inf));
     return std::max(ctx.eye_y * 1.001, std::min(t, std::isfinite(flat) ? flat : t));
 }
 
@@ -88,11 +87,11 @@ double corrected_camera_top(const CompileContext& ctx, const CameraRays& rays) {
 double air_top_reached(const CompileContext& ctx, const CameraRays& rays) {
     std::vector<double> top(rays.size(), ctx.eye_y);
     parallel_for(static_cast<long>(rays.size()), [&](long i) {
-        top[i] = exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], rays.exit_dz[i]).y;
+        top[i] = exact_outcome(ctx.atmosphere, ctx.eye_y, rays.elevation[i], rays.exit_dz[i]).y;
     });
     double t = *std::max_element(top.begin(), top.end());
     const Aabb& objects = ctx.accel->finite_bounds();
-    if (air_earth_radius(*ctx.air) > 0.0 && !objects.empty() && objects.finite() &&
+    if (ctx.atmosphere.earth_radius() > 0.0 && !objects.empty() && objects.finite() &&
         objects.hi.y < t) {
         // On the curved Earth the flattened n* keeps growing with height (the Earth's term,
         // 1/R per unit of height), and a band ray that goes on bending above everything
@@ -103,12 +102,12 @@ double air_top_reached(const CompileContext& ctx, const CameraRays& rays) {
         const double objects_top = objects.hi.y;
         std::vector<double> peak(rays.size(), 0.0);
         parallel_for(static_cast<long>(rays.size()), [&](long i) {
-            peak[i] = air_peak_below(*ctx.air, ctx.eye_y, rays.elevation[i], rays.exit_dz[i],
+            peak[i] = air_peak_below(ctx.atmosphere, ctx.eye_y, rays.elevation[i], rays.exit_dz[i],
                                      objects_top);
         });
         t = std::min(t, std::max(objects_top, *std::max_element(peak.begin(), peak.end())));
     }
-    return std::max(std::min(t, air_constant_above(*ctx.air)), ctx.eye_y * 1.001);
+    return std::max(std::min(t, ctx.atmosphere.constant_above()), ctx.eye_y * 1.001);
 }
 
 // POV-Ray needs the camera off a boundary.
@@ -151,7 +150,7 @@ std::optional<std::string> turning_under_the_float_step(const CompileContext& ct
 // the designs fitted to the camera's rays need the exponential closed forms and are refused.
 Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& rays) {
     const MirageSettings& st = ctx.settings;
-    const Atmosphere& air = *ctx.air;
+    const Atmosphere& air = ctx.atmosphere;
     Design d;
     d.stack = air_layers(air, {});
     const bool adaptive_asked =
@@ -163,7 +162,7 @@ Result<Design> design_air_layers(const CompileContext& ctx, const CameraRays& ra
                           "real air (" + st.profile_label +
                           "): leave Mirage_Layers out for layers at equal steps of the index, or "
                           "ask for uniform layers (--layers uniform --count N)");
-    if (!air_has_gradient(air)) {
+    if (!air.has_gradient()) {
         d.mode = "none";
         d.left_out.push_back("every layer: the index does not change with height");
         return d;
@@ -350,9 +349,7 @@ std::vector<double> design_errors(const CompileContext& ctx, const LayerStack& r
             b.sky = !p.ground && p.direction.y > 0.0;
             b.final_slope = p.direction.y / p.direction.x;
         }
-        const BandOutcome e = ctx.air
-                                  ? exact_outcome(*ctx.air, ctx.eye_y, rays.elevation[i], exit)
-                                  : exact_outcome(ctx.profile, ctx.eye_y, rays.elevation[i], exit);
+        const BandOutcome e = exact_outcome(ctx.atmosphere, ctx.eye_y, rays.elevation[i], exit);
         err[i] = outcome_error_rad(ctx.eye_y, e, b) / rays.pixel_rad[i];
     });
     if (max_crossings)
@@ -396,12 +393,16 @@ std::optional<double> layers_reach_below(const CompileContext& ctx, const LayerS
 
 Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) {
     if (ctx.many_origins) return design_many_origins(ctx, rays);
-    if (ctx.air) return design_air_layers(ctx, rays);
+    // The designs fitted with the exponential profiles' closed forms, else those built from
+    // n(y) alone.
+    const Profile* closed = ctx.atmosphere.exponential_profile();
+    if (!closed) return design_air_layers(ctx, rays);
+    const Profile& profile = *closed;
     Design d;
     const MirageSettings& st = ctx.settings;
-    d.stack.profile = ctx.profile;
-    d.stack.excess = {eta_sq_excess(ctx.profile, ctx.eye_y)};
-    if (!st.declared || ctx.profile.kind == ProfileKind::None) {
+    d.stack.profile = profile;
+    d.stack.excess = {eta_sq_excess(profile, ctx.eye_y)};
+    if (!st.declared || profile.kind == ProfileKind::None) {
         d.mode = "none";
         d.left_out.push_back("every layer: the scene declares no atmosphere");
         return d;
@@ -418,9 +419,9 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
         if (st.layer_count < 1)
             return make_error(ctx.scene.file +
                               ": uniform layers need a count: --count N or Mirage_Layer_Count");
-        const double top = top_reached(ctx, rays);
+        const double top = top_reached(ctx, profile, rays);
         d.stack = merge_invisible_boundaries(
-            uniform_layers(ctx.profile, ctx.eye_y, st.layer_count, top), ctx.eye_y);
+            uniform_layers(profile, ctx.eye_y, st.layer_count, top), ctx.eye_y);
         // Berger's layers do not care where the camera is; POV-Ray needs it off a boundary.
         for (double& h : d.stack.heights)
             if (std::fabs(h - ctx.eye_y) < 1e-9 * std::max(1.0, ctx.eye_y))
@@ -443,11 +444,11 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
         // The corrected camera aims every ray through where its exact ray ends: the layers
         // only carry the paths' smooth bending, at equal steps of eta^2.
         d.mode = "index steps";
-        const double top = corrected_camera_top(ctx, rays);
+        const double top = corrected_camera_top(ctx, profile, rays);
         // (The trace levels are those of the aimed rays, measured when they are aimed.)
         const int count = st.layer_count > 0 ? st.layer_count : kCorrectedCameraLayers;
         d.stack = merge_invisible_boundaries(
-            corrected_camera_layers(ctx.profile, ctx.eye_y, count, top), ctx.eye_y);
+            corrected_camera_layers(profile, ctx.eye_y, count, top), ctx.eye_y);
         d.left_out.push_back("layers above y = " + sig(top, 4) +
                              ": no camera ray reaches higher inside the scene, or a ray rising "
                              "from there turns by less than a tenth of a pixel more");
@@ -465,7 +466,7 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
             design.push_back({rays.elevation[i], rays.exit_dz[i], rays.pixel_rad[i], col, row});
         }
     }
-    FitSettings fs;
+    LayerFitSettings fs;
     fs.tolerance_px = st.tolerance_px;
     fs.layers_extent_factor = kLayersExtentFactor;
     // The budget of one pass through the layers: a camera ray may meet a reflective object
@@ -475,7 +476,7 @@ Result<Design> design_layers(const CompileContext& ctx, const CameraRays& rays) 
     // every layer (and gap) must be thicker than that.
     fs.min_thickness = ctx.gaps ? 3.0 * ctx.gap : 1.5e-4 * ctx.steepest_sine;
     for (int attempt = 0; attempt < 12; ++attempt) {
-        FitResult f = fit_layers(ctx.profile, ctx.eye_y, design, fs);
+        FitResult f = fit_layers(profile, ctx.eye_y, design, fs);
         d.max_error_px_fitted = f.quality.max_error_px;
         d.stack = merge_invisible_boundaries(f.stack, ctx.eye_y);
         const int level = deepest_trace_level(ctx, ctx.rendered(d.stack), rays);

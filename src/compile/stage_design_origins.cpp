@@ -105,26 +105,14 @@ Reach ray_reach(const CompileContext& ctx, const glm::dvec3& origin, const glm::
         r.lo = std::min(r.lo, y);
         r.hi = std::max(r.hi, y);
     };
-    if (ctx.air) {
-        auto path = ExactPath::make(*ctx.air, y0, i);
-        if (!path) return r;
-        const double end = std::min(exit, path->dz_ground());
-        for (int k = 0; k < path->turning_point_count(); ++k) {
-            const TurningPoint t = path->turning_point(k);
-            if (!(t.dz < end)) break;
-            if (t.dz > 0.0) take(t.y);
-        }
-        take(std::isfinite(end) ? path->height_at(end) : y0);
-        if (path->dz_ground() <= exit) take(0.0);
-        return r;
-    }
-    auto ray = make_exact_ray(ctx.profile, y0, i);
-    if (!ray) return r;
-    const double end = std::min(exit, ray->hits_ground ? ray->dz_ground : kInf);
-    if (ray->turn_kind != TurnKind::None && ray->dz_turn > 0.0 && ray->dz_turn < end)
-        take(ray->y_turn);
-    if (std::isfinite(end)) take(height_at(*ray, end));
-    if (ray->hits_ground && ray->dz_ground <= exit) take(0.0);
+    auto path = ExactPath::make(ctx.atmosphere, y0, i);
+    if (!path) return r;
+    const double end = std::min(exit, path->dz_ground());
+    TurningPoint t;
+    for (int k = 0; path->turning_point_before(k, end, t); ++k)
+        if (t.dz > 0.0) take(t.y);
+    if (std::isfinite(end)) take(path->height_at(end));
+    if (path->dz_ground() <= exit) take(0.0);
     return r;
 }
 
@@ -141,15 +129,17 @@ std::optional<glm::dvec3> entry_into_atmosphere(const glm::dvec3& origin, const 
 Result<Design> design_many_origins(const CompileContext& ctx, const CameraRays& rays) {
     const MirageSettings& st = ctx.settings;
     Design d;
-    const bool air = static_cast<bool>(ctx.air);
-    if (air) {
-        d.stack = air_layers(*ctx.air, {});
+    const Atmosphere& atm = ctx.atmosphere;
+    // The exponential profiles' bands hold eta^2 excesses over eta0 (layers/stack.h), real
+    // air's over n(0)^2.
+    const Profile* closed = atm.exponential_profile();
+    if (closed) {
+        d.stack.profile = *closed;
+        d.stack.excess = {eta_sq_excess(*closed, ctx.eye_y)};
     } else {
-        d.stack.profile = ctx.profile;
-        d.stack.excess = {eta_sq_excess(ctx.profile, ctx.eye_y)};
+        d.stack = air_layers(atm, {});
     }
-    if (!st.declared || (!air && ctx.profile.kind == ProfileKind::None) ||
-        (air && !air_has_gradient(*ctx.air))) {
+    if (!st.declared || !atm.has_gradient()) {
         d.mode = "none";
         d.left_out.push_back(
             "every layer: the scene declares no atmosphere, or its index does "
@@ -179,12 +169,12 @@ Result<Design> design_many_origins(const CompileContext& ctx, const CameraRays& 
         hi = std::max(hi, r.hi);
     }
     const HeightFunction f =
-        air ? HeightFunction([&](double y) { return ctx.air->n_sq(y) - ctx.air->n_sq(0.0); })
-            : HeightFunction([&](double y) { return eta_sq_excess(ctx.profile, y); });
+        closed ? HeightFunction([&](double y) { return eta_sq_excess(*closed, y); })
+               : HeightFunction([&](double y) { return atm.n_sq(y) - atm.n_sq(0.0); });
     // No higher than where the index no longer changes (real air's model top) or is within
     // 1 % of its value aloft (the exponential profiles).
-    const double cap = air ? air_constant_above(*ctx.air)
-                           : height_of_excess(ctx.profile, 0.99 * eta_sq_excess(ctx.profile, kInf));
+    const double cap = closed ? height_of_excess(*closed, 0.99 * eta_sq_excess(*closed, kInf))
+                              : atm.constant_above();
     hi = std::min(hi, cap);
     lo = std::max(lo, 0.0);
     if (!(hi > lo)) {
@@ -199,7 +189,7 @@ Result<Design> design_many_origins(const CompileContext& ctx, const CameraRays& 
     // The half-space above the last boundary: the index aloft (exponential profiles: every
     // sky direction exact), real air's at its model's top or at the highest point reached.
     const double top_excess =
-        air ? f(std::isfinite(cap) ? cap : hi) : eta_sq_excess(ctx.profile, kInf);
+        closed ? eta_sq_excess(*closed, kInf) : f(std::isfinite(cap) ? cap : hi);
     int count = uniform ? st.layer_count : (st.layer_count > 0 ? st.layer_count : 64);
     for (int attempt = 0; attempt < 12; ++attempt) {
         std::vector<double> h;

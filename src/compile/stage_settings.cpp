@@ -145,13 +145,10 @@ double scene_extent_around_camera(const CompileOptions& opt, CompileContext& ctx
 Status fit_real_air(const CompileOptions& opt, CompileContext& ctx) {
     const glm::dvec3& eye = ctx.camera.location;
     const double extent = ctx.extent;
-    // (With many origins the pixel's angle from each origin, or its width over the
-    // paths' reach.)
     const double reach_dz =
         ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
-    const double px = ctx.many_origins ? ctx.footprint.angle_rad + ctx.footprint.distance / reach_dz
-                                       : pixel_angle_rad(ctx.camera, opt.width, opt.height);
-    auto air = scene_atmosphere(ctx.settings, 0.05 * ctx.settings.tolerance_px * px);
+    auto air = scene_atmosphere(
+        ctx.settings, fit_angle_rad(ctx.footprint, 0.05 * ctx.settings.tolerance_px, reach_dz));
     if (!air) return make_error(opt.scene + ": " + air.message());
     if (air->earth_radius() > 0.0) {
         // On the curved Earth a band ray's final direction is its direction in the
@@ -180,9 +177,8 @@ Status fit_real_air(const CompileOptions& opt, CompileContext& ctx) {
                 " (scene units), or Mirage_Earth_Radius = 0 for flat ground");
         }
     }
-    ctx.air = std::make_shared<const Atmosphere>(std::move(*air));
-    ctx.air_max_dz =
-        ctx.settings.extent ? *ctx.settings.extent : general_path_reach(*ctx.accel, eye);
+    ctx.atmosphere = std::move(*air);
+    ctx.max_dz = reach_dz;
     return Ok{};
 }
 
@@ -196,8 +192,9 @@ bool uses_gaps(const CompileOptions& opt, const CompileContext& ctx) {
     if (opt.layout) return false;
     // Real air: its index changes by a few 1e-4 at most over the heights a scene sees (the
     // flattened profile's n* grows by 1.6e-4 per km on the curved Earth).
-    if (ctx.air) return true;
-    return std::fabs(eta_infinity(ctx.profile) - ctx.profile.eta0) < 1e-3 * ctx.profile.eta0;
+    const Profile* p = ctx.atmosphere.exponential_profile();
+    if (!p) return true;
+    return std::fabs(eta_infinity(*p) - p->eta0) < 1e-3 * p->eta0;
 }
 
 }  // namespace
@@ -296,7 +293,7 @@ Result<CompileContext> compile_settings(const CompileOptions& opt) {
     const double reach = kLayersExtentFactor * extent;
     ctx.layers_box = {eye.x - reach, eye.x + reach, eye.z - reach, eye.z + reach};
 
-    ctx.profile = profile_in_scene_units(ctx.settings);
+    ctx.atmosphere = Atmosphere::exponential(profile_in_scene_units(ctx.settings));
     if (auto s = ctx.settings.air ? fit_real_air(opt, ctx) : Status(Ok{}); !s) return s.error();
     // Turbulent air: the exact rays the corrected camera aims at are walked through it, at the
     // clock the scene was parsed at (a frame of an animation shimmers).

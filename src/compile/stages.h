@@ -54,12 +54,12 @@ struct CompileContext {
     CompileOptions options;
     Scene scene;
     MirageSettings settings;
-    Profile profile;  // in scene units
-    // Real air (a sounding, the temperature forms, the curved Earth): the general engine's
-    // model in scene units (the flattened profile n* on the curved Earth), which the layers
-    // band and the pixel check's exact rays follow; `profile` is then not used.
-    std::shared_ptr<const Atmosphere> air;
-    double air_max_dz = 0.0;  // how far the tracer follows real air's paths (CurvedSettings)
+    // The atmosphere in scene units, which the layers band and the pixel check's exact rays
+    // follow: an exponential profile, or real air (a sounding, the temperature forms, the
+    // curved Earth) as the general engine's model (the flattened profile n* on the curved
+    // Earth).
+    Atmosphere atmosphere;
+    double max_dz = 0.0;  // how far the tracer follows the general engine's paths (CurvedSettings)
     // Turbulent air (Mirage_Turbulence_Cn2): its screens and the time they stand at, which the
     // pixel check's exact rays are walked through (CurvedSettings::turbulence).
     std::shared_ptr<const PhaseScreens> turbulence;

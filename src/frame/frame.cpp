@@ -705,7 +705,8 @@ Result<FrameReading> frame_scene(const FrameOptions& options) {
     f.unit_m = settings.unit_m;
     f.exaggeration = settings.exaggeration;
     f.pixel_rad = pixel_angle_rad(scene.camera, options.width, options.height);
-    const double tolerance_rad = settings.tolerance_px * f.pixel_rad;
+    const double tolerance_rad =
+        fit_angle_rad(PixelFootprint{0.0, f.pixel_rad}, settings.tolerance_px, 0.0);
     auto atmosphere = scene_atmosphere(settings, tolerance_rad);
     if (!atmosphere) return make_error(options.scene + ": " + atmosphere.message());
     const double R = atmosphere->earth_radius();

@@ -29,15 +29,6 @@ double mean_excess(const Atmosphere& air, double n0_sq, double a, double b) {
 
 }  // namespace
 
-bool air_has_gradient(const Atmosphere& air) { return air.has_gradient(); }
-
-double air_earth_radius(const Atmosphere& air) { return air.earth_radius(); }
-
-double air_constant_above(const Atmosphere& air) {
-    const QuadraticProfile* q = air.quadratic_profile();
-    return q ? q->top() : std::numeric_limits<double>::infinity();
-}
-
 LayerStack air_layers(const Atmosphere& air, const std::vector<double>& heights) {
     LayerStack s;
     const double n0_sq = air.n_sq(0.0);

@@ -13,15 +13,6 @@ namespace mirage {
 
 class Atmosphere;  // atmosphere/exact_path.h
 
-/// Whether n changes with height anywhere.
-bool air_has_gradient(const Atmosphere& air);
-
-/// The radius of the Earth the air is flattened for (0: flat ground).
-double air_earth_radius(const Atmosphere& air);
-
-/// The height above which n no longer changes (the fitted model's top; +inf for the
-/// exponential profiles).
-double air_constant_above(const Atmosphere& air);
 
 /// The stack with the given boundaries (strictly ascending, > 0): layer k holds the mean of
 /// n^2 over (heights[k-1], heights[k]) (heights[-1] = 0), the top half-space n^2 at the last

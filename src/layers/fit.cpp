@@ -21,7 +21,7 @@ struct Side {
     double y(double t) const { return y0 - sgn * t; }
 };
 
-// Whether indices are kept on POV-Ray's float grid (FitSettings::pov_float_grid), for the
+// Whether indices are kept on POV-Ray's float grid (LayerFitSettings::pov_float_grid), for the
 // fit running on this thread.
 thread_local bool g_float_grid = true;
 
@@ -672,7 +672,7 @@ void optimize_ground_layer(LayerStack& s, double y0, const std::vector<DesignRay
 namespace {
 
 FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRay>& rays,
-                   const FitSettings& settings, const std::vector<double>* fixed_excess);
+                   const LayerFitSettings& settings, const std::vector<double>* fixed_excess);
 
 }  // namespace
 
@@ -690,7 +690,7 @@ FitQuality measure_fit(const LayerStack& stack, double y0, const std::vector<Des
 }
 
 FitResult fit_layers(const Profile& profile, double y0, const std::vector<DesignRay>& rays,
-                     const FitSettings& settings, const std::vector<double>* fixed_excess) {
+                     const LayerFitSettings& settings, const std::vector<double>* fixed_excess) {
     // The sequential fit aims at the tolerance ray by ray, but the rays it does not steer
     // directly (those that cross layers fitted for others) can end outside it, and the
     // greedy choices depend on the aim.  Variants are tried, the first within the tolerance
@@ -704,7 +704,7 @@ FitResult fit_layers(const Profile& profile, double y0, const std::vector<Design
     auto attempt = [&](double aim_factor, bool& kept_budget) {
         kept_budget = false;
         for (double margin : {0.97, 0.9, 0.8}) {
-            FitSettings aim = settings;
+            LayerFitSettings aim = settings;
             aim.tolerance_px = settings.tolerance_px * aim_factor;
             aim.oneway_margin = margin;
             FitResult f = fit_once(profile, y0, rays, aim, fixed_excess);
@@ -751,7 +751,7 @@ FitResult fit_layers(const Profile& profile, double y0, const std::vector<Design
 namespace {
 
 FitResult fit_once(const Profile& profile, double y0, const std::vector<DesignRay>& rays,
-                   const FitSettings& settings, const std::vector<double>* fixed_excess) {
+                   const LayerFitSettings& settings, const std::vector<double>* fixed_excess) {
     MIRAGE_CHECK(y0 > 0.0);
     g_float_grid = settings.pov_float_grid;
     FitResult result;

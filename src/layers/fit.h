@@ -31,7 +31,7 @@ struct DesignRay {
     int col = 0, row = 0;    // pixel, for reports
 };
 
-struct FitSettings {
+struct LayerFitSettings {
     double tolerance_px = 0.5;    // largest allowed error of a fitted ray, pixels
     int max_crossings = 255;      // trace-level budget of a camera ray
     double flat_fraction = 1e-2;  // one-way layers stop where eta^2 is within this of its limit
@@ -67,7 +67,7 @@ struct FitResult {
 /// `fixed_excess`, when given, imposes the indices of the turning side's layers (outward
 /// from the eye) and fits only their thicknesses.
 FitResult fit_layers(const Profile& profile, double y0, const std::vector<DesignRay>& rays,
-                     const FitSettings& settings,
+                     const LayerFitSettings& settings,
                      const std::vector<double>* fixed_excess = nullptr);
 
 /// The largest error and crossing count of `stack` over `rays`; the layers reach

@@ -9,22 +9,7 @@
 namespace mirage {
 
 BandOutcome exact_outcome(const Profile& profile, double y0, double elevation, double scene_dz) {
-    BandOutcome out;
-    auto ray = make_exact_ray(profile, y0, M_PI / 2 - elevation);
-    MIRAGE_CHECK(ray.ok());
-    if (ray->hits_ground && ray->dz_ground < scene_dz) {
-        out.ground = true;
-        out.dz = ray->dz_ground;
-        out.y = 0.0;
-        return out;
-    }
-    out.dz = scene_dz;
-    out.y = height_at(*ray, scene_dz);
-    out.slope = slope_at(*ray, scene_dz);
-    out.sky = !ray->hits_ground;
-    out.final_slope = out.sky ? asymptotic_slope(*ray) : 0.0;
-    MIRAGE_CHECK(std::isfinite(out.y) && std::isfinite(out.slope));
-    return out;
+    return exact_outcome(Atmosphere::exponential(profile), y0, elevation, scene_dz);
 }
 
 BandOutcome exact_outcome(const Atmosphere& air, double y0, double elevation, double scene_dz) {

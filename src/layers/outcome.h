@@ -13,7 +13,8 @@ class Atmosphere;  // atmosphere/exact_path.h
 /// scene_dz, else the height and slope at scene_dz; whether it then goes to the sky (never
 /// meets the ground) and its final (asymptotic) slope.
 BandOutcome exact_outcome(const Profile& profile, double y0, double elevation, double scene_dz);
-/// The same in any atmosphere, by its exact path (atmosphere/exact_path.h); a ray trapped in a
+/// The same in any atmosphere (the one implementation), by its exact path
+/// (atmosphere/exact_path.h); a ray trapped in a
 /// duct never reaches the sky, and its final slope is its slope at scene_dz.  On the curved
 /// Earth the final slope is the slope at scene_dz turned from the local horizontal there to
 /// the eye's (by scene_dz / R), the direction the tracer looks the sky up with.

@@ -586,6 +586,12 @@ double fit_tolerance_for(double tolerance_rad) {
     return std::clamp(eps, kMinFitTolerance, kMaxFitTolerance);
 }
 
+double fit_angle_rad(const PixelFootprint& footprint, double tolerance_px, double reach) {
+    double rad = tolerance_px * footprint.angle_rad;
+    if (footprint.distance > 0.0) rad += tolerance_px * footprint.distance / reach;
+    return rad;
+}
+
 Result<Atmosphere> scene_atmosphere(const MirageSettings& s, double tolerance_rad, int* pieces) {
     if (pieces) *pieces = 0;
     if (!s.air) return Atmosphere::exponential(profile_in_scene_units(s));

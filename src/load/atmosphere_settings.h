@@ -8,6 +8,7 @@
 
 #include "atmosphere/profile.h"
 #include "atmosphere/turbulence.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 #include "util/result.h"
 
@@ -114,6 +115,13 @@ Profile profile_in_scene_units(const MirageSettings& settings);
 /// model stay within tolerance_rad / 2 of the true ones (pi sqrt(eps)), clamped to
 /// [kMinFitTolerance, kMaxFitTolerance].
 double fit_tolerance_for(double tolerance_rad);
+
+/// The one angle every command fits real air's model to (scene_atmosphere) for paths kept
+/// within `tolerance_px` of the camera's pixels: the footprint's angle plus its distance
+/// across the rays seen over the paths' reach (a camera with many origins), times the
+/// tolerance.  The tracer, frame and animate's views ask it at the scene's tolerance; the
+/// compiler at a twentieth of it, where its pixel check's exact rays are.
+double fit_angle_rad(const PixelFootprint& footprint, double tolerance_px, double reach);
 
 /// The scene's atmosphere in scene units, for paths sampled to `tolerance_rad`: the
 /// exponential closed forms (profile_in_scene_units), or real air's fitted model with its

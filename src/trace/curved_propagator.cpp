@@ -32,23 +32,6 @@ std::string degrees(double rad) {
     return out.str();
 }
 
-// The largest turn of a ray's direction anywhere along its path, from the invariant
-// eta(y) sin i(y) = beta over the heights the ray can reach; +inf when it can turn round.
-// An inferior profile's index grows with height, so a rising ray stays above its start;
-// a superior profile's falls with height, so a descending ray stays below it.
-double largest_bend(const Profile& profile, double y0, double sin_i, bool rising) {
-    const bool inferior = profile.kind == ProfileKind::Inferior;
-    const double at_start = eta(profile, y0);
-    double lo = std::min(profile.eta0, eta_infinity(profile));
-    double hi = std::max(profile.eta0, eta_infinity(profile));
-    if (inferior && rising) lo = at_start;
-    if (!inferior && !rising) lo = at_start;
-    const double beta = at_start * sin_i;
-    const double s_max = beta / lo;
-    if (!(s_max < 1.0)) return kInf;
-    return std::asin(s_max) - std::asin(beta / hi);
-}
-
 // A monotone function of the azimuth atan2(x, z) of (x, z), in (-2, 2], without a
 // trigonometric function: the "diamond angle", the seam (+-2) straight along -z.
 double pseudo_angle(double x, double z) {
@@ -211,47 +194,26 @@ const EyeIndex& eye_index(const SceneAccel& accel, const glm::dvec3& eye) {
     return *index;
 }
 
-// The shared constants of rays from height y0, kept per thread for the last two heights asked
-// for: a frame's camera rays all start at the eye, and each reflection asks for another.
-const ExactRayOrigin& ray_origin(const Profile& p, double y0) {
-    struct Slot {
-        ExactRayOrigin origin;
-        bool valid = false;
-    };
-    thread_local Slot slots[2];
+// What rays from height y0 share, kept per thread for the last two heights asked for (each
+// with its atmosphere, so that no other model can take its address): a frame's camera rays
+// all start at the eye, and each reflection asks for another.
+const PathOrigin& path_origin(const Atmosphere& atmosphere, double y0) {
+    thread_local std::optional<PathOrigin> slots[2];
     thread_local int last = 0;
-    auto matches = [&](const Slot& s) {
-        const Profile& c = s.origin.profile;
-        return s.valid && s.origin.y0 == y0 && c.kind == p.kind && c.eta0 == p.eta0 &&
-               c.eta1 == p.eta1 && c.alpha == p.alpha;
+    auto matches = [&](const std::optional<PathOrigin>& s) {
+        return s && s->y0() == y0 && s->atmosphere() == atmosphere;
     };
     for (int k : {last, 1 - last}) {
         if (matches(slots[k])) {
             last = k;
-            return slots[k].origin;
+            return *slots[k];
         }
     }
-    auto o = make_exact_ray_origin(p, y0);
+    auto o = PathOrigin::make(atmosphere, y0);
     MIRAGE_CHECK(o.ok());
     last = 1 - last;  // replace the one used less recently
-    slots[last] = {*o, true};
-    return slots[last].origin;
-}
-
-// largest_bend(...) <= limit, from the origin's constants; the arcsines are needed only where
-// a bound of their difference does not settle it.
-bool bends_at_most(const ExactRayOrigin& o, double sin_i, bool rising, double limit) {
-    const bool inferior = o.profile.kind == ProfileKind::Inferior;
-    double lo = std::min(o.profile.eta0, o.eta_inf);
-    const double hi = std::max(o.profile.eta0, o.eta_inf);
-    if (inferior == rising) lo = o.eta_p;
-    const double beta = o.eta_p * sin_i;
-    const double s_max = beta / lo;
-    if (!(s_max < 1.0)) return false;
-    const double s_min = beta / hi;
-    // asin' = 1 / sqrt(1 - x^2) is at least 1 / sqrt(1 - s_min^2) between the two.
-    if (s_max - s_min > limit * std::sqrt((1.0 - s_min) * (1.0 + s_min))) return false;
-    return std::asin(s_max) - std::asin(s_min) <= limit;
+    slots[last] = std::move(*o);
+    return *slots[last];
 }
 
 // The horizontal reach of the scene's bounded objects from the eye: the farthest corner of
@@ -280,8 +242,10 @@ double scene_reach(const SceneAccel& accel, const glm::dvec3& eye) {
 // With no bounded object to follow paths to, they are followed this far (scene units).
 constexpr double kMinGeneralReach = 1e4;
 
-double general_max_dz(const CurvedSettings& settings, const SceneAccel* accel,
-                      const glm::dvec3& origin) {
+// How far a path from `origin` is followed (CurvedSettings::max_dz).
+double path_max_dz(const CurvedSettings& settings, const SceneAccel* accel,
+                   const glm::dvec3& origin) {
+    if (settings.atmosphere.closed_form()) return kInf;
     if (settings.max_dz > 0.0) return settings.max_dz;
     const glm::dvec3 eye = settings.eye ? *settings.eye : origin;
     const double reach = accel ? scene_reach(*accel, eye) : 0.0;
@@ -296,117 +260,14 @@ double general_path_reach(const SceneAccel& accel, const glm::dvec3& eye) {
 
 namespace {
 
-// What every ray of the general engine from one height shares: the index's range above and
-// below it, its index there and the model's start.  Kept per thread with the model for the last
-// two heights asked for (held, so that no other model can take its address): a frame's camera
-// rays all start at the eye, and each reflection asks for another.
-struct GeneralStart {
-    std::optional<Atmosphere> atm;
-    double y0 = -1.0;
-    double lo_up = 0.0, hi_up = 0.0;      // n over [y0, inf)
-    double lo_down = 0.0, hi_down = 0.0;  // n over [0, y0]
-    double n = 0.0;
-    std::optional<QuadraticStart> start;  // with a piecewise-quadratic model
-};
-
-const GeneralStart& general_start(const Atmosphere& atm, double y0) {
-    thread_local GeneralStart slots[2];
-    thread_local int last = 0;
-    const QuadraticProfile* model = atm.quadratic_profile();
-    auto matches = [&](const GeneralStart& s) {
-        return model && s.atm && s.atm->quadratic_profile() == model && s.y0 == y0;
-    };
-    for (int k : {last, 1 - last}) {
-        if (matches(slots[k])) {
-            last = k;
-            return slots[k];
-        }
-    }
-    last = 1 - last;  // replace the one used less recently
-    GeneralStart& s = slots[last];
-    s.atm = atm;
-    s.y0 = y0;
-    atm.n_range(y0, kInf, s.lo_up, s.hi_up);
-    atm.n_range(0.0, y0, s.lo_down, s.hi_down);
-    s.n = atm.n(y0);
-    s.start.reset();
-    if (model) s.start = quadratic_start(*model, y0);
-    return s;
-}
-
-// Whether a ray of the general engine from the start with sin i = sin_i turns by at most
-// `limit` anywhere: from the invariant n(y) sin i(y) = beta over the heights it can reach
-// without turning (above the start rising, below it descending); false when it can turn.
-bool general_bends_at_most(const GeneralStart& start, double sin_i, bool rising, double limit) {
-    const double lo = rising ? start.lo_up : start.lo_down;
-    const double hi = rising ? start.hi_up : start.hi_down;
-    const double beta = start.n * sin_i;
-    const double s_max = beta / lo;
-    if (!(s_max < 1.0)) return false;
-    const double s_min = beta / hi;
-    // asin' = 1 / sqrt(1 - x^2) is at least 1 / sqrt(1 - s_min^2) between the two.
-    if (s_max - s_min > limit * std::sqrt((1.0 - s_min) * (1.0 + s_min))) return false;
-    return std::asin(s_max) - std::asin(s_min) <= limit;
-}
-
-// The general engine's path of a ray (settings.general) into `cp`; false when it goes
-// straight (as near_surfaces_path says).  `accel` (may be null) is the scene it is sampled
-// for; `reference`: to the tolerance all along (sample_exact_path).
-bool general_path(const CurvedSettings& settings, const SceneAccel* accel, const glm::dvec3& origin,
-                  const glm::dvec3& direction, double travelled, bool reference, CurvedPath& cp) {
-    const Atmosphere& atm = *settings.general;
+// The ray's exact path and its samples into `cp` (its storage reused); false when the ray
+// goes straight: no index gradient, a start below the ground (y < 0, or on it heading down)
+// or far above it, a (nearly) vertical ray, or one that cannot turn by more than half the
+// tolerance.  `accel` (may be null) is the scene the path is sampled for.
+bool exact_path(const CurvedSettings& settings, const SceneAccel* accel, const glm::dvec3& origin,
+                const glm::dvec3& direction, double travelled, CurvedPath& cp) {
+    const Atmosphere& atm = settings.atmosphere;
     if (!atm.has_gradient()) return false;
-    if (origin.y < -ground_slack(origin)) return false;
-    if (origin.y > kMaxHeight) return false;
-    if (origin.y <= 0.0 && direction.y <= 0.0) return false;
-    // A direction's components are near 1 or 0 (no overflow to guard against, as hypot does).
-    const double hl = std::sqrt(direction.x * direction.x + direction.z * direction.z);
-    if (hl < kVerticalSin) return false;
-    const double y0 = std::max(origin.y, 0.0);
-    const double length = std::sqrt(hl * hl + direction.y * direction.y);
-    const double sin_i = hl / length, cos_i = direction.y / length;
-    const GeneralStart& start = general_start(atm, y0);
-    if (general_bends_at_most(start, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad))
-        return false;
-    std::vector<QuadraticSegment> storage;
-    if (cp.general) storage = cp.general->release_storage();
-    auto path = start.start ? ExactPath::make_direction(atm, *start.start, cos_i, sin_i)
-                            : ExactPath::make_direction(atm, y0, cos_i, sin_i);
-    MIRAGE_CHECK(path.ok());
-    path->adopt_storage(std::move(storage));
-    cp.general.emplace(std::move(*path));
-    cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
-    cp.earth_radius = atm.earth_radius();
-    SampleSettings ss;
-    ss.tolerance_rad = settings.tolerance_rad;
-    ss.tolerance_m = settings.tolerance_m;
-    ss.start_distance = travelled;
-    ss.max_dz = general_max_dz(settings, accel, origin);
-    if (reference) {
-        cp.path = sample_exact_path(*cp.general, ss);
-    } else if (accel && !accel->unbounded_elsewhere()) {
-        thread_local std::vector<SceneAccel::Crossing> crossings;
-        const EyeIndex* eye =
-            settings.eye && origin == *settings.eye ? &eye_index(*accel, origin) : nullptr;
-        const SceneObstacles obstacles(*accel, origin, cp.heading, crossings, eye);
-        sample_exact_path_near(*cp.general, ss, &obstacles, cp.path);
-    } else {
-        sample_exact_path_near(*cp.general, ss, nullptr, cp.path);
-    }
-    return true;
-}
-
-// The ray's path for PathSampling::NearSurfaces, into `cp` (its storage reused); false when
-// the ray goes straight.  `accel` (may be null) is the scene the path is sampled for.
-bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
-                        const glm::dvec3& origin, const glm::dvec3& direction, double travelled,
-                        CurvedPath& cp) {
-    if (settings.general)
-        return general_path(settings, accel, origin, direction, travelled, false, cp);
-    cp.general.reset();
-    cp.earth_radius = 0.0;
-    const Profile& p = settings.profile;
-    if (p.kind == ProfileKind::None || p.eta1 == 0.0) return false;
     // Below the ground the atmosphere is not defined: the band model's bottom layer has the
     // ground's index throughout, so such rays go straight there too.
     if (origin.y < -ground_slack(origin)) return false;
@@ -414,6 +275,7 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
     // below a double's precision: straight.
     if (origin.y > kMaxHeight) return false;
     if (origin.y <= 0.0 && direction.y <= 0.0) return false;
+    // A direction's components are near 1 or 0 (no overflow to guard against, as hypot does).
     const double hl = std::sqrt(direction.x * direction.x + direction.z * direction.z);
     if (hl < kVerticalSin) return false;
     double cos_i = direction.y, sin_i = hl;
@@ -423,45 +285,28 @@ bool near_surfaces_path(const CurvedSettings& settings, const SceneAccel* accel,
         cos_i /= n;
         sin_i /= n;
     }
-    const ExactRayOrigin& o = ray_origin(p, std::max(origin.y, 0.0));
-    if (bends_at_most(o, sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad)) return false;
-    make_exact_ray(o, cos_i, sin_i, cp.ray);
+    const PathOrigin& start = path_origin(atm, std::max(origin.y, 0.0));
+    if (start.bends_at_most(sin_i, direction.y > 0.0, 0.5 * settings.tolerance_rad)) return false;
+    start.path(cos_i, sin_i, cp.exact);
     cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
+    cp.earth_radius = atm.earth_radius();
     SampleSettings ss;
     ss.tolerance_rad = settings.tolerance_rad;
     ss.tolerance_m = settings.tolerance_m;
     ss.start_distance = travelled;
-    if (accel && !accel->unbounded_elsewhere()) {
+    ss.max_dz = path_max_dz(settings, accel, origin);
+    if (settings.sampling == PathSampling::Reference) {
+        cp.path = sample_path(*cp.exact, ss);
+    } else if (accel && !accel->unbounded_elsewhere()) {
         thread_local std::vector<SceneAccel::Crossing> crossings;
         const EyeIndex* eye =
             settings.eye && origin == *settings.eye ? &eye_index(*accel, origin) : nullptr;
         const SceneObstacles obstacles(*accel, origin, cp.heading, crossings, eye);
-        sample_path_near(cp.ray, ss, &obstacles, cp.path);
+        sample_path_near(*cp.exact, ss, &obstacles, cp.path);
     } else {
-        sample_path_near(cp.ray, ss, nullptr, cp.path);
+        sample_path_near(*cp.exact, ss, nullptr, cp.path);
     }
     return true;
-}
-
-// The exact ray and its samples as the reference samples them; origin.y >= -ground_slack,
-// and a horizontal component.
-CurvedPath reference_path(const CurvedSettings& settings, const glm::dvec3& origin,
-                          const glm::dvec3& direction, double travelled) {
-    const double hl = std::hypot(direction.x, direction.z);
-    MIRAGE_CHECK(hl > 0.0);
-    const double y0 = std::max(origin.y, 0.0);
-    const double i = std::atan2(hl, direction.y);
-    auto ray = make_exact_ray(settings.profile, y0, i);
-    MIRAGE_CHECK(ray.ok());
-    SampleSettings ss;
-    ss.tolerance_rad = settings.tolerance_rad;
-    ss.tolerance_m = settings.tolerance_m;
-    ss.start_distance = travelled;
-    CurvedPath cp;
-    cp.ray = *ray;
-    cp.path = sample_path(cp.ray, ss);
-    cp.heading = glm::dvec2(direction.x / hl, direction.z / hl);
-    return cp;
 }
 
 // A ray's walk through the turbulent air's screens (CurvedSettings::turbulence), in scene
@@ -516,8 +361,7 @@ struct PathEndDirections {
 PathEndDirections end_directions(const glm::dvec2& heading, const CurvedPath& cp) {
     double slope = cp.path.end_slope;
     if (cp.path.end == PathEnd::Ground) {
-        slope = cp.general ? cp.general->slope_at(cp.general->dz_ground())
-                           : slope_at(cp.ray, cp.ray.dz_ground);
+        slope = cp.exact->slope_at(cp.exact->dz_ground());
     }
     MIRAGE_CHECK(std::isfinite(slope));
     PathEndDirections out;
@@ -588,42 +432,12 @@ PathHit march_straight(const SceneAccel& accel, const RayStart& start,
     return march.result();
 }
 
-// Whether a ray goes straight, for the reference sampling (curved_path).
-bool goes_straight(const CurvedSettings& settings, const glm::dvec3& origin,
-                   const glm::dvec3& direction) {
-    if (settings.profile.kind == ProfileKind::None || settings.profile.eta1 == 0.0) return true;
-    // Below the ground the atmosphere is not defined: the band model's bottom layer has the
-    // ground's index throughout, so such rays go straight there too.
-    if (origin.y < -ground_slack(origin)) return true;
-    // So far above the ground (beyond any scene mirage follows) the index is flat to far
-    // below a double's precision: straight.
-    if (origin.y > kMaxHeight) return true;
-    if (origin.y <= 0.0 && direction.y <= 0.0) return true;
-    const double hl = std::hypot(direction.x, direction.z);
-    if (hl < kVerticalSin) return true;
-    const double bend =
-        largest_bend(settings.profile, std::max(origin.y, 0.0), hl, direction.y > 0.0);
-    return bend <= 0.5 * settings.tolerance_rad;
-}
-
 }  // namespace
 
 std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const glm::dvec3& origin,
                                       const glm::dvec3& direction, double travelled) {
-    if (settings.general) {
-        CurvedPath cp;
-        if (!general_path(settings, nullptr, origin, direction, travelled,
-                          settings.sampling == PathSampling::Reference, cp))
-            return std::nullopt;
-        return cp;
-    }
-    if (settings.sampling == PathSampling::Reference) {
-        if (goes_straight(settings, origin, direction)) return std::nullopt;
-        return reference_path(settings, origin, direction, travelled);
-    }
     CurvedPath cp;
-    if (!near_surfaces_path(settings, nullptr, origin, direction, travelled, cp))
-        return std::nullopt;
+    if (!exact_path(settings, nullptr, origin, direction, travelled, cp)) return std::nullopt;
     return cp;
 }
 
@@ -631,17 +445,7 @@ std::optional<CurvedPath> curved_path(const CurvedSettings& settings, const Scen
                                       const glm::dvec3& origin, const glm::dvec3& direction,
                                       double travelled) {
     CurvedPath cp;
-    if (settings.general) {
-        if (!general_path(settings, &accel, origin, direction, travelled,
-                          settings.sampling == PathSampling::Reference, cp))
-            return std::nullopt;
-        return cp;
-    }
-    if (settings.sampling == PathSampling::Reference) {
-        return curved_path(settings, origin, direction, travelled);
-    }
-    if (!near_surfaces_path(settings, &accel, origin, direction, travelled, cp))
-        return std::nullopt;
+    if (!exact_path(settings, &accel, origin, direction, travelled, cp)) return std::nullopt;
     return cp;
 }
 
@@ -683,8 +487,8 @@ double bounded_reach(const SceneAccel& accel, const glm::dvec3& eye) {
 }
 
 CurvedPropagator::CurvedPropagator(const CurvedSettings& settings) : settings_(settings) {
-    MIRAGE_CHECK((settings.profile.kind == ProfileKind::None && !settings.general) ||
-                 settings.tolerance_rad > 0.0 || settings.tolerance_m > 0.0);
+    MIRAGE_CHECK(!settings.atmosphere.has_gradient() || settings.tolerance_rad > 0.0 ||
+                 settings.tolerance_m > 0.0);
 }
 
 PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& start) const {
@@ -714,20 +518,10 @@ PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& sta
         }
         return march_from(march, rest.origin, cp->heading, *cp, shimmer ? &*shimmer : nullptr);
     }
-    if (settings_.sampling == PathSampling::Reference) {
-        const auto cp =
-            settings_.general
-                ? curved_path(settings_, accel, start.origin, start.direction, start.travelled)
-                : curved_path(settings_, start.origin, start.direction, start.travelled);
-        if (!cp) return march_straight(accel, start, settings_, straight_);
-        return march_curved_path(accel, start.origin, *cp, settings_);
-    }
     // One path per thread, its storage reused from ray to ray.
     thread_local CurvedPath cp;
-    if (!near_surfaces_path(settings_, &accel, start.origin, start.direction, start.travelled,
-                            cp)) {
+    if (!exact_path(settings_, &accel, start.origin, start.direction, start.travelled, cp))
         return march_straight(accel, start, settings_, straight_);
-    }
     return march_curved_path(accel, start.origin, cp, settings_);
 }
 

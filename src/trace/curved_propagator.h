@@ -33,16 +33,17 @@ enum class PathSampling {
 };
 
 struct CurvedSettings {
-    Profile profile;  // heights in scene units, ground at y = 0 (see
-                      // profile_in_scene_units); ProfileKind::None: straight rays
-    // Any other atmosphere (real air, the curved Earth): its piecewise-quadratic model in
-    // scene units, whose exact paths (atmosphere/exact_path.h) rays then follow; `profile` is
-    // not used.  The scene is read as drawn in the model's frame: heights above the ground
-    // (the flattened heights, with an Earth radius) and horizontal distances along it.
-    std::optional<Atmosphere> general = std::nullopt;
-    // With `general`: how far (horizontally, scene units) a path is followed at most; beyond,
-    // it goes on straight.  0: twice the horizontal reach of the scene's bounded objects from
-    // the eye (a ray trapped in a duct turns for ever).
+    // The atmosphere in scene units (heights above the ground at y = 0, see
+    // profile_in_scene_units and scene_atmosphere): an exponential profile's closed forms or
+    // the general engine's model (real air, the curved Earth), whose exact paths
+    // (atmosphere/exact_path.h) rays follow; homogeneous air: straight rays.  On the curved
+    // Earth the scene is read as drawn in the model's frame: heights above the ground (the
+    // flattened heights, with an Earth radius) and horizontal distances along it.
+    Atmosphere atmosphere;
+    // How far (horizontally, scene units) a path of the general engine is followed at most;
+    // beyond, it goes on straight.  0: twice the horizontal reach of the scene's bounded
+    // objects from the eye (a ray trapped in a duct turns for ever).  Paths in closed form
+    // (Atmosphere::closed_form) are followed as far as the sampler goes.
     double max_dz = 0.0;
     // The largest path error, as a height within the ray's vertical plane: tolerance_m plus
     // tolerance_rad times the path length from where the ray's history began (the eye, or
@@ -64,11 +65,10 @@ struct CurvedSettings {
 /// One ray's path in its vertical plane: the exact ray and its sampled polyline, and the
 /// plane's horizontal direction.
 struct CurvedPath {
-    ExactRay ray;                      // the exponential profiles
-    std::optional<ExactPath> general;  // CurvedSettings::general
+    std::optional<ExactPath> exact;
     SampledPath path;
     glm::dvec2 heading{0.0, 1.0};  // unit (x, z) direction of the vertical plane
-    double earth_radius = 0.0;     // of the general engine's flattened frame (0: flat)
+    double earth_radius = 0.0;     // of the atmosphere's flattened frame (0: flat)
 };
 
 /// The sampled path of a ray that starts at `origin` along unit `direction`, `travelled`

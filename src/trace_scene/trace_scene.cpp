@@ -124,13 +124,12 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     }
 
     CurvedSettings curved;
-    curved.profile = profile;
+    curved.atmosphere = Atmosphere::exponential(profile);
     curved.tolerance_rad = report.tolerance_px * report.footprint.angle_rad;
     curved.tolerance_m = report.tolerance_px * report.footprint.distance;
     if (settings.air && opt.atmosphere) {
         // Real air: the general engine's model, fitted finely enough for this tolerance (for
         // a distance across the rays, the angle it makes over the paths' reach).
-        double fit_rad = curved.tolerance_rad;
         double reach = 0.0;
         if (settings.extent) {
             reach = *settings.extent;
@@ -139,10 +138,11 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
             if (!accel) return accel.error();
             reach = general_path_reach(*accel, scene.camera.location);
         }
-        if (curved.tolerance_m > 0.0) fit_rad += curved.tolerance_m / reach;
-        auto atmosphere = scene_atmosphere(settings, fit_rad, &report.model_pieces);
+        auto atmosphere =
+            scene_atmosphere(settings, fit_angle_rad(report.footprint, report.tolerance_px, reach),
+                             &report.model_pieces);
         if (!atmosphere) return make_error(opt.scene + ": " + atmosphere.message());
-        curved.general = std::move(*atmosphere);
+        curved.atmosphere = std::move(*atmosphere);
         // Paths are followed to the declared extent, else to twice the scene's reach: the
         // same for every ray, the rows' of --scanline-paths among them.
         curved.max_dz = reach;

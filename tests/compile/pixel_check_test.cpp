@@ -65,8 +65,10 @@ TEST(PixelCheck, NoLayersAgainstTheExactRays) {
     LayerStack none;
     none.profile = p;
     none.excess = {eta_sq_excess(p, kEye)};
-    const PixelCheck pc = check_pixels(none, p, c.scene, *accel, query(*accel), c.directions,
-                                       c.pixel_rad, std::vector<bool>(kRows, false), settings());
+    PixelCheckSettings ps = settings();
+    ps.atmosphere = Atmosphere::exponential(p);
+    const PixelCheck pc = check_pixels(none, c.scene, *accel, query(*accel), c.directions,
+                                       c.pixel_rad, std::vector<bool>(kRows, false), ps);
     // Where each model's ray meets the wall, as an angle above the level line from the eye.
     std::vector<double> straight(kRows), exact(kRows);
     for (int row = 0; row < kRows; ++row) {
@@ -118,8 +120,8 @@ TEST(PixelCheck, StraightAirLeavesNothingToFind) {
     none.excess = {0.0};
     std::vector<bool> cut(kRows, false);
     cut[3] = true;
-    const PixelCheck pc = check_pixels(none, none_profile, c.scene, *accel, query(*accel),
-                                       c.directions, c.pixel_rad, cut, settings());
+    const PixelCheck pc = check_pixels(none, c.scene, *accel, query(*accel), c.directions,
+                                       c.pixel_rad, cut, settings());
     for (int row = 0; row < kRows; ++row) {
         if (row == 3) {
             EXPECT_TRUE(std::isinf(pc.seen_error_px[row]));

@@ -147,8 +147,8 @@ TEST(DesignLayers, FitsWithinTheTraceLevelCeiling) {
     EXPECT_EQ(d->max_trace_level, deepest_trace_level(*ctx, ctx->rendered(d->stack), rays));
     // Better than no layers at all where the rays bend.
     LayerStack none;
-    none.profile = ctx->profile;
-    none.excess = {eta_sq_excess(ctx->profile, ctx->eye_y)};
+    none.profile = *ctx->atmosphere.exponential_profile();
+    none.excess = {eta_sq_excess(none.profile, ctx->eye_y)};
     const auto with = design_errors(*ctx, ctx->rendered(d->stack), rays);
     const auto without = design_errors(*ctx, none, rays);
     double sum_with = 0.0, sum_without = 0.0;
@@ -184,7 +184,7 @@ TEST(DesignErrors, TheHalfPlaneTraceAgreesWithTheIndependent3dTracer) {
             b.sky = t.sky;
             b.final_slope = t.final_dir.y / std::hypot(t.final_dir.x, t.final_dir.z);
             const BandOutcome e =
-                exact_outcome(ctx->profile, ctx->eye_y, rays.elevation[i], rays.exit_dz[i]);
+                exact_outcome(ctx->atmosphere, ctx->eye_y, rays.elevation[i], rays.exit_dz[i]);
             const double want = outcome_error_rad(ctx->eye_y, e, b) / rays.pixel_rad[i];
             EXPECT_NEAR(err[i], want, 1e-6 * (1.0 + want))
                 << atmosphere << " ray " << i << " elevation " << dir.y;
@@ -225,9 +225,9 @@ TEST(DeepestTraceLevel, CountsBoundaryEventsAndReflections) {
     auto ctx = compile_settings(options_for("levels", kPaper, 8, 6));
     ASSERT_TRUE(ctx.ok()) << ctx.message();
     LayerStack s;
-    s.profile = ctx->profile;
+    s.profile = *ctx->atmosphere.exponential_profile();
     s.heights = {0.5, 1.0};
-    s.excess = {0.0, 0.01, eta_sq_excess(ctx->profile, ctx->eye_y)};
+    s.excess = {0.0, 0.01, eta_sq_excess(s.profile, ctx->eye_y)};
     CameraRays down;
     down.width = down.height = 1;
     down.direction = {glm::normalize(glm::dvec3(0.0, -1.0, 0.2))};
@@ -347,6 +347,7 @@ box { <-40, 0, 30>, <40, 6, 31> pigment { color rgb <0.8, 0.7, 0.2> } }
     ASSERT_TRUE(d.ok()) << d.message();
     const LayerStack rendered = ctx->rendered(d->stack);
     PixelCheckSettings ps;
+    ps.atmosphere = ctx->atmosphere;
     ps.width = rays.grid_width();
     ps.height = rays.grid_height();
     ps.eye = ctx->camera.location;
@@ -357,7 +358,7 @@ box { <-40, 0, 30>, <40, 6, 31> pigment { color rgb <0.8, 0.7, 0.2> } }
     ps.aim = corrected_camera_aim(*ctx, rendered, rays);
     const std::vector<bool> cut(rays.size(), false);
     const ObjectQuery objects = object_query(*ctx->accel);
-    const PixelCheck chosen = check_pixels(rendered, ctx->profile, ctx->scene, *ctx->accel, objects,
+    const PixelCheck chosen = check_pixels(rendered, ctx->scene, *ctx->accel, objects,
                                            rays.direction, rays.pixel_rad, cut, ps);
     // The same check offered the fan too, where the chosen ray ends a tenth of a pixel off.
     std::vector<size_t> off;
@@ -376,7 +377,7 @@ box { <-40, 0, 30>, <40, 6, 31> pigment { color rgb <0.8, 0.7, 0.2> } }
             out.push_back(mesh_camera_direction(
                 direction_at_elevation(c, e + k * 0.05 * rays.pixel_rad[i])));
     };
-    const PixelCheck fanned = check_pixels(rendered, ctx->profile, ctx->scene, *ctx->accel,
+    const PixelCheck fanned = check_pixels(rendered, ctx->scene, *ctx->accel,
                                            objects, rays.direction, rays.pixel_rad, cut, fan);
     for (size_t i : off)
         EXPECT_LE(chosen.camera_error_px[i], fanned.camera_error_px[i] + 0.05f)

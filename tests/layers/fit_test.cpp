@@ -48,7 +48,7 @@ Measured measure(const FitResult& f, const Profile& p, double y0,
 TEST(Fit, DesertColumnMeetsHalfAPixelWithinTheBudget) {
     const Profile p = *preset_profile("paper");
     const auto rays = level_column(46.83, 240, 60.0);
-    FitSettings st;
+    LayerFitSettings st;
     st.tolerance_px = 0.5;
     const FitResult f = fit_layers(p, 1.5, rays, st);
     const Measured m = measure(f, p, 1.5, rays);
@@ -64,7 +64,7 @@ TEST(Fit, DesertColumnMeetsHalfAPixelWithinTheBudget) {
 TEST(Fit, RoadColumnMeetsOnePixelWithinTheBudget) {
     const Profile p = *preset_profile("hot-road");
     const auto rays = level_column(1.0, 480, 500.0);
-    FitSettings st;
+    LayerFitSettings st;
     st.tolerance_px = 1.0;
     st.pov_float_grid = false;
     const FitResult f = fit_layers(p, 1.5, rays, st);
@@ -82,7 +82,7 @@ TEST(Fit, RoadColumnMeetsOnePixelWithinTheBudget) {
 TEST(Fit, RealAirOnPovRaysFloatGridLosesOnlyTheRowsNextToTheHorizon) {
     const Profile p = *preset_profile("hot-road");
     const auto rays = level_column(1.0, 480, 500.0);
-    FitSettings st;
+    LayerFitSettings st;
     st.tolerance_px = 1.0;
     const FitResult f = fit_layers(p, 1.5, rays, st);
     const int k_cam = f.stack.layer_at(1.5);
@@ -108,7 +108,7 @@ TEST(Fit, RealAirOnPovRaysFloatGridLosesOnlyTheRowsNextToTheHorizon) {
 TEST(Fit, ReportsTheErrorItReachedWhenTheToleranceIsOutOfReach) {
     const Profile p = *preset_profile("paper");
     const auto rays = level_column(46.83, 240, 60.0);
-    FitSettings st;
+    LayerFitSettings st;
     st.tolerance_px = 0.001;
     const FitResult f = fit_layers(p, 1.5, rays, st);
     const Measured m = measure(f, p, 1.5, rays);
@@ -120,7 +120,7 @@ TEST(Fit, ReportsTheErrorItReachedWhenTheToleranceIsOutOfReach) {
 TEST(Fit, TighterToleranceNeedsMoreLayersAndMeetsIt) {
     const Profile p = *preset_profile("paper");
     const auto rays = level_column(46.83, 120, 60.0);
-    FitSettings loose, tight;
+    LayerFitSettings loose, tight;
     loose.tolerance_px = 2.0;
     tight.tolerance_px = 0.25;
     const FitResult a = fit_layers(p, 1.5, rays, loose);
@@ -135,7 +135,7 @@ TEST(Fit, TighterToleranceNeedsMoreLayersAndMeetsIt) {
 // reaches the ground (else an index in the gap the camera rays leave around eta0).
 TEST(Fit, EyeTopAndGroundLayersHaveTheExactIndices) {
     const Profile p = *preset_profile("paper");
-    const FitResult f = fit_layers(p, 1.5, level_column(46.83, 60, 60.0), FitSettings{});
+    const FitResult f = fit_layers(p, 1.5, level_column(46.83, 60, 60.0), LayerFitSettings{});
     const auto& s = f.stack;
     ASSERT_GT(s.boundaries(), 2);
     // The eye's layer exactly; the others on POV-Ray's float grid of iors relative to it.

@@ -62,7 +62,7 @@ TEST(BandTrace, InvariantTraceAgreesWithTheVectorTrace) {
         r.pixel_rad = 0.0034;
         rays.push_back(r);
     }
-    FitSettings st;
+    LayerFitSettings st;
     const FitResult f = fit_layers(p, 1.5, rays, st);
     ASSERT_GT(f.stack.boundaries(), 10);
     std::mt19937_64 rng(7);

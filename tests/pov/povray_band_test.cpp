@@ -38,7 +38,7 @@ TEST_P(PovRayBandTest, TracerPredictsPovRaysRays) {
     if (std::system("povray --version >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "povray not installed";
     const Profile p = *preset_profile("hot-road");
-    FitSettings fs;
+    LayerFitSettings fs;
     fs.tolerance_px = 1.0;
     const FitResult f = fit_layers(p, kEye, testing::level_column(1.0, 240, 500.0), fs);
     ASSERT_GT(f.stack.boundaries(), 10);

@@ -220,7 +220,7 @@ TEST(Shading, ZeroRoughnessIsPovRaysExponentZero) {
 
 TEST(Shading, RaysThroughGlassGoStraightInsideAndCurvedOutside) {
     CurvedSettings curved;
-    curved.profile = *preset_profile("paper");
+    curved.atmosphere = Atmosphere::exponential(*preset_profile("paper"));
     curved.tolerance_rad = 1e-4;
     const RecordingPropagator recording(curved);
     Scene s;

@@ -27,7 +27,7 @@ Profile paper() { return *preset_profile("paper"); }
 
 CurvedSettings settings(const Profile& p, double tolerance_rad) {
     CurvedSettings s;
-    s.profile = p;
+    s.atmosphere = Atmosphere::exponential(p);
     s.tolerance_rad = tolerance_rad;
     return s;
 }

@@ -52,7 +52,7 @@ Loaded load(const std::string& path, int width, int height) {
 
 CurvedSettings curved(const Loaded& l, int width, int height, PathSampling sampling) {
     CurvedSettings s;
-    s.profile = l.profile;
+    s.atmosphere = Atmosphere::exponential(l.profile);
     s.tolerance_rad = l.tolerance_px * pixel_angle_rad(l.scene.camera, width, height);
     s.sampling = sampling;
     s.eye = l.scene.camera.location;
@@ -61,7 +61,7 @@ CurvedSettings curved(const Loaded& l, int width, int height, PathSampling sampl
         // `mirage trace` does), with or without the scene at hand.
         auto atmosphere = scene_atmosphere(l.settings, s.tolerance_rad);
         EXPECT_TRUE(atmosphere.ok()) << atmosphere.message();
-        if (atmosphere.ok()) s.general = *atmosphere;
+        if (atmosphere.ok()) s.atmosphere = *atmosphere;
         auto accel = SceneAccel::build(l.scene);
         EXPECT_TRUE(accel.ok()) << accel.message();
         if (accel.ok()) s.max_dz = general_path_reach(*accel, l.scene.camera.location);

@@ -255,7 +255,7 @@ TEST(PixelFootprint, TheSampledPathKeepsADistanceAcrossParallelRays) {
     auto f = pixel_footprint(ortho, kW, kH);
     ASSERT_TRUE(f.ok());
     CurvedSettings cs;
-    cs.profile = *paper;
+    cs.atmosphere = Atmosphere::exponential(*paper);
     cs.tolerance_m = 0.5 * f->distance;
     double worst_share = 0.0;
     int sampled = 0;
@@ -265,10 +265,10 @@ TEST(PixelFootprint, TheSampledPathKeepsADistanceAcrossParallelRays) {
             const auto cp = curved_path(cs, r.origin, r.direction, 0.0);
             ASSERT_TRUE(cp.has_value()) << row;
             ++sampled;
-            const double end = cp->ray.hits_ground ? cp->ray.dz_ground : 200.0;
+            const double end = cp->exact->hits_ground() ? cp->exact->dz_ground() : 200.0;
             for (int k = 0; k <= 4000; ++k) {
                 const double dz = end * k / 4000.0;
-                const double err = std::abs(polyline_height(cp->path, dz) - height_at(cp->ray, dz));
+                const double err = std::abs(polyline_height(cp->path, dz) - cp->exact->height_at(dz));
                 EXPECT_LE(err, cs.tolerance_m * (1.0 + 1e-9)) << "row " << row << " dz " << dz;
                 worst_share = std::max(worst_share, err / cs.tolerance_m);
             }

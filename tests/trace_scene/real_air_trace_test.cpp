@@ -144,7 +144,7 @@ TEST_F(RealAirTrace, RaysTrappedInADuctFollowTheExactPathThroughEveryTurn) {
     auto q = fit_air(spec, fs);
     ASSERT_TRUE(q.ok()) << q.message();
     CurvedSettings cs;
-    cs.general = Atmosphere::quadratic(*q);
+    cs.atmosphere = Atmosphere::quadratic(*q);
     cs.tolerance_rad = 2e-6;
     cs.max_dz = 60000.0;
     const glm::dvec3 eye(0.0, 54.0, 0.0);
@@ -153,8 +153,8 @@ TEST_F(RealAirTrace, RaysTrappedInADuctFollowTheExactPathThroughEveryTurn) {
         const double e = elev * M_PI / 180.0;
         const glm::dvec3 dir(0.0, std::sin(e), std::cos(e));
         const auto cp = curved_path(cs, eye, dir, 0.0);
-        ASSERT_TRUE(cp && cp->general) << elev;
-        const ExactPath& exact = *cp->general;
+        ASSERT_TRUE(cp && cp->exact) << elev;
+        const ExactPath& exact = *cp->exact;
         ASSERT_EQ(exact.fate(), PathFate::Ducted) << elev;
         int turns = 0;
         for (int k = 0; exact.turning_point(k).dz < 60000.0; ++k) ++turns;
@@ -189,7 +189,7 @@ TEST_F(RealAirTrace, RaysTrappedInADuctFollowTheExactPathThroughEveryTurn) {
         start.direction = glm::dvec3(0.0, std::sin(e), std::cos(e));
         const PathHit hit = propagator.propagate(*accel, start);
         ASSERT_TRUE(hit.hit) << elev;
-        auto exact = ExactPath::make(*cs.general, 54.0, M_PI / 2 - e);
+        auto exact = ExactPath::make(cs.atmosphere, 54.0, M_PI / 2 - e);
         ASSERT_TRUE(exact.ok());
         const double y = exact->height_at(40000.0);
         EXPECT_NEAR(hit.surface.point.y, y, cs.tolerance_rad * 40000.0 * 1.01) << elev;
