@@ -108,6 +108,30 @@ void BM_General(benchmark::State& state, Atmosphere (*make)(), Fan fan, bool sam
     if (auto q = atm.quadratic_profile()) state.counters["pieces"] = q->piece_count();
 }
 
+// The tracer's way in (trace/curved_propagator.cpp): one PathOrigin per start height, each
+// ray's path written into the same storage, and sample_path over ExactPath, which samples an
+// exponential ray with sampler.h's closed-form sampler.  On the exponential profiles this is
+// to be as fast as BM_ClosedForm, the closed forms called directly.
+void BM_OneInterface(benchmark::State& state, Atmosphere (*make)(), Fan fan) {
+    const Atmosphere atm = make();
+    SampleSettings st;
+    st.tolerance_rad = state.range(0) * 1e-6;
+    st.max_dz = fan.max_dz;
+    const PathOrigin origin = *PathOrigin::make(atm, fan.y0);
+    std::optional<ExactPath> path;
+    double samples = 0.0;
+    for (auto _ : state) {
+        for (int j = 0; j < kFanRays; ++j) {
+            const double e = elevation(fan, j, kFanRays);
+            origin.path(std::sin(e), std::cos(e), path);
+            auto poly = sample_path(*path, st);
+            samples += poly.points.size();
+            benchmark::DoNotOptimize(poly);
+        }
+    }
+    per_ray_counters(state, samples);
+}
+
 Atmosphere road_exponential() { return Atmosphere::exponential(*preset_profile("hot-road")); }
 Atmosphere road_fitted() { return exponential_fitted("hot-road"); }
 Atmosphere road_fitted_fine() { return exponential_fitted("hot-road", 1e-12); }
@@ -168,5 +192,14 @@ BENCHMARK_CAPTURE(BM_General, desert_fitted_spans_sampled, desert_fitted_spans, 
 BENCHMARK_CAPTURE(BM_General, desert_closed_form_via_interface, desert_exponential, kDesert, true)
     ->Arg(1700)
     ->Arg(340);
+
+BENCHMARK_CAPTURE(BM_OneInterface, road_exponential, road_exponential, kRoad)
+    ->Arg(100)
+    ->Arg(18)
+    ->Arg(3);
+BENCHMARK_CAPTURE(BM_OneInterface, desert_exponential, desert_exponential, kDesert)
+    ->Arg(1700)
+    ->Arg(340);
+BENCHMARK_CAPTURE(BM_OneInterface, road_fitted_spans, road_fitted_spans, kRoad)->Arg(18);
 
 }  // namespace
