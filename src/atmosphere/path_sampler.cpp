@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "atmosphere/chord_bound.h"
 #include "atmosphere/step_search.h"
@@ -27,59 +28,89 @@ double allowed_error(const ExactPath& path, const SampleSettings& st, double dz,
     return st.tolerance_m + st.tolerance_rad * (st.start_distance + std::sqrt(dz * dz + dy * dy));
 }
 
-SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& st) {
-    MIRAGE_CHECK(st.tolerance_m > 0.0 || st.tolerance_rad > 0.0);
-    MIRAGE_CHECK(st.max_dz >= 0.0);
-    SampledPath out;
-    const double y0 = path.y0();
-    out.points.push_back({0.0, y0});
+namespace {
 
-    const double max_dz = std::min(st.max_dz, kMaxSampleDistance);
-    const bool ground = path.hits_ground() && path.dz_ground() <= max_dz;
-    const double dz_end = ground ? path.dz_ground() : max_dz;
-    auto finish = [&](double dz_last) {
-        if (ground && dz_last >= path.dz_ground()) {
-            out.end = PathEnd::Ground;
-        } else if (dz_last >= max_dz) {
-            out.end = PathEnd::Cut;
-            out.end_slope = path.slope_at(dz_last);
-            out.end_slope_dz = dz_last;
-        } else {
-            out.end = PathEnd::Straight;
-            out.end_slope = path.asymptotic_slope();
-            // The slope the path leaves the profile's top with, where it does.
-            const QuadraticPath* q = path.quadratic();
-            out.end_slope_dz = q && std::isfinite(q->dz_straight()) ? q->dz_straight() : dz_last;
+// sample_exact_path's steps over one path: its end, the runs sampled forward, and the first
+// turning point sampled outward and reflected.
+class ExactSampler {
+  public:
+    ExactSampler(const ExactPath& path, const SampleSettings& st)
+        : path_(path),
+          st_(st),
+          max_dz_(std::min(st.max_dz, kMaxSampleDistance)),
+          ground_(path.hits_ground() && path.dz_ground() <= max_dz_),
+          dz_end_(ground_ ? path.dz_ground() : max_dz_) {}
+
+    SampledPath sample() {
+        out_.points.push_back({0.0, path_.y0()});
+        if (path_.straight()) {
+            if (std::isfinite(dz_end_)) point(dz_end_);
+            finish(dz_end_);
+            return std::move(out_);
         }
-    };
-    auto height = [&](double dz) {
-        return (ground && dz >= path.dz_ground()) ? 0.0 : path.height_at(dz);
-    };
-    auto point = [&](double dz) { out.points.push_back({dz, height(dz)}); };
-    auto allowance_at = [&](double dz) { return allowed_error(path, st, dz, height(dz)); };
-
-    if (path.straight()) {
-        if (std::isfinite(dz_end)) point(dz_end);
-        finish(dz_end);
-        return out;
+        const int count = path_.turning_point_count();
+        const bool turns =
+            count != 0 && path_.turning_point(0).dz > 0.0 && path_.turning_point(0).dz < dz_end_;
+        if (!turns) {
+            finish(forward(0.0, dz_end_, true));
+            return std::move(out_);
+        }
+        const bool trapped = count < 0;
+        const bool reached_next = about_first_turn(trapped);
+        if (straight_after_ || !trapped || !reached_next || next_event_ >= dz_end_) {
+            finish(out_.points.back().x);
+            return std::move(out_);
+        }
+        // Trapped: every further run, from one turning point to the next, sampled forward.
+        for (int k = 1;; ++k) {
+            const double a = path_.turning_point(k).dz;
+            if (a >= dz_end_) break;
+            const double b = std::min(path_.turning_point(k + 1).dz, dz_end_);
+            forward(a, b, false);
+            if (b >= dz_end_) break;
+        }
+        finish(out_.points.back().x);
+        return std::move(out_);
     }
-    auto straight_from = [&](double dz) {
-        return path.asymptote_departure(dz) <= allowance_at(dz);
-    };
+
+  private:
+    void finish(double dz_last) {
+        if (ground_ && dz_last >= path_.dz_ground()) {
+            out_.end = PathEnd::Ground;
+        } else if (dz_last >= max_dz_) {
+            out_.end = PathEnd::Cut;
+            out_.end_slope = path_.slope_at(dz_last);
+            out_.end_slope_dz = dz_last;
+        } else {
+            out_.end = PathEnd::Straight;
+            out_.end_slope = path_.asymptotic_slope();
+            // The slope the path leaves the profile's top with, where it does.
+            const QuadraticPath* q = path_.quadratic();
+            out_.end_slope_dz = q && std::isfinite(q->dz_straight()) ? q->dz_straight() : dz_last;
+        }
+    }
+    double height(double dz) const {
+        return (ground_ && dz >= path_.dz_ground()) ? 0.0 : path_.height_at(dz);
+    }
+    void point(double dz) { out_.points.push_back({dz, height(dz)}); }
+    double allowance_at(double dz) const { return allowed_error(path_, st_, dz, height(dz)); }
+    bool straight_from(double dz) const {
+        return path_.asymptote_departure(dz) <= allowance_at(dz);
+    }
 
     // One monotone run [a, b] sampled forward from a (whose point is already out); may end
     // straight when `may_end_straight`.  Returns where it stopped.
-    auto forward = [&](double a, double b, bool may_end_straight) {
+    double forward(double a, double b, bool may_end_straight) {
         double previous =
-            chord_guess(path.curvature_bound(height(a), height(a)), allowance_at(a), st);
+            chord_guess(path_.curvature_bound(height(a), height(a)), allowance_at(a), st_);
         while (a < b && !(may_end_straight && straight_from(a))) {
-            const double y_a = height(a), allow_a = allowed_error(path, st, a, y_a);
+            const double y_a = height(a), allow_a = allowed_error(path_, st_, a, y_a);
             const double step = next_step(
                 a, b,
                 [&](double lo, double hi) {
                     hi = std::min(hi, b);
-                    const double m = path.curvature_bound(y_a, height(hi));
-                    return chord_within(m, lo, hi, allow_a, st);
+                    const double m = path_.curvature_bound(y_a, height(hi));
+                    return chord_within(m, lo, hi, allow_a, st_);
                 },
                 previous);
             previous = step;
@@ -87,99 +118,96 @@ SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& st) {
             point(a);
         }
         return a;
-    };
-
-    const int count = path.turning_point_count();
-    const bool turns =
-        count != 0 && path.turning_point(0).dz > 0.0 && path.turning_point(0).dz < dz_end;
-    if (!turns) {
-        finish(forward(0.0, dz_end, true));
-        return out;
     }
 
-    // The first turning point: sample outward from it (u = |dz - zt|) so that both mirror
-    // images of every step keep the tolerance, then reflect (as sampler.cpp does).
-    out.turns = true;
-    const double zt = path.turning_point(0).dz;
-    out.dz_turn = zt;
-    const bool trapped = count < 0;
-    // The run after the turning point ends at the next one (trapped rays) or the end.
-    const double next_event = trapped ? std::min(path.turning_point(1).dz, dz_end) : dz_end;
-    const double y_turn_path = path.height_at(zt);
-    const double u_before = zt;
-    const double u_after_max = next_event - zt;
-    auto branch_height = [&](double u) {
-        return u <= zt ? path.height_at(zt - u) : height(std::min(zt + u, dz_end));
-    };
-    std::vector<double> us{0.0}, ys{y_turn_path};
-    bool straight_after = false;
-    double u_after_end = u_after_max;
-    double u = 0.0;
-    double previous =
-        chord_guess(path.curvature_bound(y_turn_path, y_turn_path), allowance_at(zt), st);
-    const bool may_end_straight = !trapped;
-    while (true) {
-        const bool need_before = u < u_before;
-        const bool need_after = !straight_after && u < u_after_max;
-        if (!need_before && !need_after) break;
-        const double limit = std::max(need_before ? u_before : 0.0, need_after ? u_after_max : 0.0);
-        const double y_u = branch_height(u);
-        const double allow_after = need_after && u < u_after_max ? allowance_at(zt + u) : 0.0;
-        const double step = next_step(
-            u, limit,
-            [&](double lo, double hi) {
-                const double y_hi = branch_height(hi);
-                const double m = path.curvature_bound(y_u, y_hi);
-                bool ok = true;
-                if (lo < u_before) {
-                    const double p = std::max(0.0, zt - hi);
-                    const double y_p = hi <= zt ? y_hi : height(p);
-                    ok = ok && chord_within(m, p, zt - lo, allowed_error(path, st, p, y_p), st);
-                }
-                if (need_after && lo < u_after_max) {
-                    const double q = std::min(zt + hi, next_event);
-                    ok = ok && chord_within(m, zt + lo, q, allow_after, st);
-                }
-                return ok;
-            },
-            previous);
-        previous = step;
-        u = std::min(limit, u + step);
-        us.push_back(u);
-        ys.push_back(branch_height(u));
-        if (may_end_straight && need_after && u < u_after_max && straight_from(zt + u)) {
-            straight_after = true;
-            u_after_end = u;
+    // The first turning point: sampled outward from it (u = |dz - zt|) so that both mirror
+    // images of every step keep the tolerance, then reflected (as sampler.cpp does), out to
+    // the next turning point (a trapped ray) or the end.  Whether it reached the next one.
+    bool about_first_turn(bool trapped) {
+        out_.turns = true;
+        const double zt = path_.turning_point(0).dz;
+        out_.dz_turn = zt;
+        next_event_ = trapped ? std::min(path_.turning_point(1).dz, dz_end_) : dz_end_;
+        const double next_event = next_event_;
+        const double y_turn_path = path_.height_at(zt);
+        const double u_before = zt;
+        const double u_after_max = next_event - zt;
+        auto branch_height = [&](double u) {
+            return u <= zt ? path_.height_at(zt - u) : height(std::min(zt + u, dz_end_));
+        };
+        std::vector<double> us{0.0}, ys{y_turn_path};
+        double u_after_end = u_after_max;
+        double u = 0.0;
+        double previous =
+            chord_guess(path_.curvature_bound(y_turn_path, y_turn_path), allowance_at(zt), st_);
+        const bool may_end_straight = !trapped;
+        while (true) {
+            const bool need_before = u < u_before;
+            const bool need_after = !straight_after_ && u < u_after_max;
+            if (!need_before && !need_after) break;
+            const double limit =
+                std::max(need_before ? u_before : 0.0, need_after ? u_after_max : 0.0);
+            const double y_u = branch_height(u);
+            const double allow_after = need_after && u < u_after_max ? allowance_at(zt + u) : 0.0;
+            const double step = next_step(
+                u, limit,
+                [&](double lo, double hi) {
+                    const double y_hi = branch_height(hi);
+                    const double m = path_.curvature_bound(y_u, y_hi);
+                    bool ok = true;
+                    if (lo < u_before) {
+                        const double p = std::max(0.0, zt - hi);
+                        const double y_p = hi <= zt ? y_hi : height(p);
+                        ok = ok &&
+                             chord_within(m, p, zt - lo, allowed_error(path_, st_, p, y_p), st_);
+                    }
+                    if (need_after && lo < u_after_max) {
+                        const double q = std::min(zt + hi, next_event);
+                        ok = ok && chord_within(m, zt + lo, q, allow_after, st_);
+                    }
+                    return ok;
+                },
+                previous);
+            previous = step;
+            u = std::min(limit, u + step);
+            us.push_back(u);
+            ys.push_back(branch_height(u));
+            if (may_end_straight && need_after && u < u_after_max && straight_from(zt + u)) {
+                straight_after_ = true;
+                u_after_end = u;
+            }
         }
-    }
-    for (size_t k = us.size(); k-- > 1;) {
-        if (us[k] < u_before) out.points.push_back({zt - us[k], ys[k]});
-    }
-    out.points.push_back({zt, y_turn_path});
-    bool reached_next = false;
-    for (size_t k = 1; k < us.size(); ++k) {
-        if (straight_after && us[k] > u_after_end) break;
-        if (us[k] >= u_after_max) {
-            out.points.push_back({next_event, height(next_event)});
-            reached_next = true;
-            break;
+        for (size_t k = us.size(); k-- > 1;) {
+            if (us[k] < u_before) out_.points.push_back({zt - us[k], ys[k]});
         }
-        out.points.push_back({zt + us[k], ys[k]});
+        out_.points.push_back({zt, y_turn_path});
+        for (size_t k = 1; k < us.size(); ++k) {
+            if (straight_after_ && us[k] > u_after_end) break;
+            if (us[k] >= u_after_max) {
+                out_.points.push_back({next_event, height(next_event)});
+                return true;
+            }
+            out_.points.push_back({zt + us[k], ys[k]});
+        }
+        return false;
     }
-    if (straight_after || !trapped || !reached_next || next_event >= dz_end) {
-        finish(out.points.back().x);
-        return out;
-    }
-    // Trapped: every further run, from one turning point to the next, sampled forward.
-    for (int k = 1;; ++k) {
-        const double a = path.turning_point(k).dz;
-        if (a >= dz_end) break;
-        const double b = std::min(path.turning_point(k + 1).dz, dz_end);
-        forward(a, b, false);
-        if (b >= dz_end) break;
-    }
-    finish(out.points.back().x);
-    return out;
+
+    const ExactPath& path_;
+    const SampleSettings& st_;
+    const double max_dz_;
+    const bool ground_;
+    const double dz_end_;
+    SampledPath out_;
+    double next_event_ = 0.0;     // where the run after the first turning point ends
+    bool straight_after_ = false;  // it ended straight
+};
+
+}  // namespace
+
+SampledPath sample_exact_path(const ExactPath& path, const SampleSettings& st) {
+    MIRAGE_CHECK(st.tolerance_m > 0.0 || st.tolerance_rad > 0.0);
+    MIRAGE_CHECK(st.max_dz >= 0.0);
+    return ExactSampler(path, st).sample();
 }
 
 // ---------------------------------------------------------------------------------------------
