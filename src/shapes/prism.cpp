@@ -233,24 +233,11 @@ class PrismShape final : public ComplexShape {
     glm::dmat3 normal_to_world_{1.0};
 };
 
-}  // namespace
-
-Result<std::shared_ptr<const ComplexShape>> prepare_prism(const Prism& prism, const Primitive& p) {
-    // POV-Ray's Parse_Prism (closing) and Compute_Prism (segments and rectangles).
-    std::vector<glm::dvec2> P = prism.points;
-    int number = static_cast<int>(P.size());
-    const SplineKind kind = prism.spline;
-    const int minimum = kind == SplineKind::Linear      ? 3
-                        : kind == SplineKind::Quadratic ? 5
-                        : kind == SplineKind::Cubic     ? 6
-                                                        : 4;
-    if (number < minimum || (kind == SplineKind::Bezier && (number & 3) != 0)) {
-        return make_error(primitive_place(p) + "prism: too few points for its spline (" +
-                          std::to_string(number) + ")");
-    }
+// Whether POV-Ray's Parse_Prism finds the profile closed; `first` ends as the first point of
+// the last sub-loop (not for Bezier splines).
+bool profile_closed(const std::vector<glm::dvec2>& P, SplineKind kind, glm::dvec2& first) {
+    const int number = static_cast<int>(P.size());
     bool closed = false;
-    bool degenerate = false;
-    glm::dvec2 first(0.0);
     if (kind != SplineKind::Bezier) {
         int i = kind == SplineKind::Linear ? 1 : 2;
         first = kind == SplineKind::Linear ? P[0] : P[1];
@@ -263,105 +250,153 @@ Result<std::shared_ptr<const ComplexShape>> prepare_prism(const Prism& prism, co
                 closed = true;
             }
         }
-    } else {
-        closed = true;
-        int loop_start = 0;
-        for (int i = 4; i < number; i += 4) {
-            if (std::abs(P[i].x - P[i - 1].x) > kPovEpsilon ||
-                std::abs(P[i].y - P[i - 1].y) > kPovEpsilon) {
-                if (std::abs(P[i - 1].x - P[loop_start].x) > kPovEpsilon ||
-                    std::abs(P[i - 1].y - P[loop_start].y) > kPovEpsilon) {
-                    closed = false;
-                    break;
-                }
-                loop_start = i;
-            }
-        }
-        if (std::abs(P[number - 1].x - P[loop_start].x) > kPovEpsilon ||
-            std::abs(P[number - 1].y - P[loop_start].y) > kPovEpsilon) {
-            closed = false;
+        return closed;
+    }
+    int loop_start = 0;
+    for (int i = 4; i < number; i += 4) {
+        if (std::abs(P[i].x - P[i - 1].x) > kPovEpsilon ||
+            std::abs(P[i].y - P[i - 1].y) > kPovEpsilon) {
+            if (std::abs(P[i - 1].x - P[loop_start].x) > kPovEpsilon ||
+                std::abs(P[i - 1].y - P[loop_start].y) > kPovEpsilon)
+                return false;
+            loop_start = i;
         }
     }
-    if (!closed) {
+    return !(std::abs(P[number - 1].x - P[loop_start].x) > kPovEpsilon ||
+             std::abs(P[number - 1].y - P[loop_start].y) > kPovEpsilon);
+}
+
+// Compute_Prism's segment from point i: its coefficients and the corners of its rectangle
+// (x, y), the extremes of a quadratic or cubic segment among them; false when the points run
+// out.
+bool spline_segment(const std::vector<glm::dvec2>& P, SplineKind kind, int i, Segment& e,
+                    double x[4], double y[4]) {
+    const int number = static_cast<int>(P.size());
+    const int i1 = i + 1, i2 = i + 2, i3 = i + 3;
+    switch (kind) {
+        case SplineKind::Linear:
+            if (i1 >= number) return false;
+            e.A = glm::dvec2(0.0);
+            e.B = glm::dvec2(0.0);
+            e.C = -1.0 * P[i] + 1.0 * P[i1];
+            e.D = 1.0 * P[i];
+            x[0] = x[2] = P[i].x;
+            x[1] = x[3] = P[i1].x;
+            y[0] = y[2] = P[i].y;
+            y[1] = y[3] = P[i1].y;
+            return true;
+        case SplineKind::Quadratic:
+            if (i2 >= number) return false;
+            e.A = glm::dvec2(0.0);
+            e.B = 0.5 * P[i] - 1.0 * P[i1] + 0.5 * P[i2];
+            e.C = -0.5 * P[i] + 0.5 * P[i2];
+            e.D = 1.0 * P[i1];
+            break;
+        case SplineKind::Cubic:
+            if (i3 >= number) return false;
+            e.A = -0.5 * P[i] + 1.5 * P[i1] - 1.5 * P[i2] + 0.5 * P[i3];
+            e.B = P[i] - 2.5 * P[i1] + 2.0 * P[i2] - 0.5 * P[i3];
+            e.C = -0.5 * P[i] + 0.5 * P[i2];
+            e.D = P[i1];
+            break;
+        case SplineKind::Bezier:
+            if (i3 >= number) return false;
+            e.A = P[i] - 3.0 * P[i1] + 3.0 * P[i2] - P[i3];
+            e.B = 3.0 * P[i1] - 6.0 * P[i2] + 3.0 * P[i3];
+            e.C = 3.0 * P[i2] - 3.0 * P[i3];
+            e.D = P[i3];
+            for (int k = 0; k < 4; ++k) {
+                x[k] = P[i + k].x;
+                y[k] = P[i + k].y;
+            }
+            return true;
+    }
+    // Quadratic and cubic: from point i1 to i2, and the segment's extremes join its rectangle.
+    x[0] = x[2] = P[i1].x;
+    x[1] = x[3] = P[i2].x;
+    y[0] = y[2] = P[i1].y;
+    y[1] = y[3] = P[i2].y;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double c[3] = {3.0 * e.A[axis], 2.0 * e.B[axis], e.C[axis]};
+        double r[2];
+        int n = solve_polynomial(2, c, r, false, 0.0);
+        double* out = axis == 0 ? x : y;
+        while (n--) {
+            if (r[n] >= 0.0 && r[n] <= 1.0)
+                out[n] = r[n] * (r[n] * (r[n] * e.A[axis] + e.B[axis]) + e.C[axis]) + e.D[axis];
+        }
+    }
+    return true;
+}
+
+// Compute_Prism's step past a segment ending on the sub-loop's first point (and Bezier
+// segments' own points): the index the loop's ++i goes on from, and the next loop's first.
+int step_past_segment(const std::vector<glm::dvec2>& P, SplineKind kind, int i,
+                      glm::dvec2& first) {
+    const int number = static_cast<int>(P.size());
+    const int i1 = i + 1, i2 = i + 2;
+    auto at_first = [&](const glm::dvec2& q) {
+        return std::abs(q.x - first.x) < kPovEpsilon && std::abs(q.y - first.y) < kPovEpsilon;
+    };
+    switch (kind) {
+        case SplineKind::Linear:
+            if (at_first(P[i1])) {
+                ++i;
+                if (i + 1 < number) first = P[i + 1];
+            }
+            break;
+        case SplineKind::Quadratic:
+            if (at_first(P[i2])) {
+                i += 2;
+                if (i + 2 < number) first = P[i + 2];
+            }
+            break;
+        case SplineKind::Cubic:
+            if (at_first(P[i2])) {
+                i += 3;
+                if (i + 2 < number) first = P[i + 2];
+            }
+            break;
+        case SplineKind::Bezier:
+            i += 3;
+            break;
+    }
+    return i;
+}
+
+}  // namespace
+
+Result<std::shared_ptr<const ComplexShape>> prepare_prism(const Prism& prism, const Primitive& p) {
+    // POV-Ray's Parse_Prism (closing) and Compute_Prism (segments and rectangles).
+    std::vector<glm::dvec2> P = prism.points;
+    const SplineKind kind = prism.spline;
+    const int minimum = kind == SplineKind::Linear      ? 3
+                        : kind == SplineKind::Quadratic ? 5
+                        : kind == SplineKind::Cubic     ? 6
+                                                        : 4;
+    const int given = static_cast<int>(P.size());
+    if (given < minimum || (kind == SplineKind::Bezier && (given & 3) != 0)) {
+        return make_error(primitive_place(p) + "prism: too few points for its spline (" +
+                          std::to_string(given) + ")");
+    }
+    bool degenerate = false;
+    glm::dvec2 first(0.0);
+    if (!profile_closed(P, kind, first)) {
         if (kind == SplineKind::Linear) {
             P.push_back(first);  // POV-Ray closes an open linear prism
-            ++number;
         } else {
             degenerate = true;  // and ignores another
         }
     }
+    const int number = static_cast<int>(P.size());
     std::vector<Segment> segments;
     double xmin = kPovBoundHuge, xmax = -kPovBoundHuge, ymin = kPovBoundHuge, ymax = -kPovBoundHuge;
     first = kind == SplineKind::Linear ? P[0] : P[std::min(1, number - 1)];
     for (int i = 0; i < number - 1; ++i) {
-        const int i1 = i + 1, i2 = i + 2, i3 = i + 3;
         Segment e;
         double x[4], y[4];
-        switch (kind) {
-            case SplineKind::Linear:
-                if (i1 >= number) return make_error(primitive_place(p) + "prism: too few points");
-                e.A = glm::dvec2(0.0);
-                e.B = glm::dvec2(0.0);
-                e.C = -1.0 * P[i] + 1.0 * P[i1];
-                e.D = 1.0 * P[i];
-                x[0] = x[2] = P[i].x;
-                x[1] = x[3] = P[i1].x;
-                y[0] = y[2] = P[i].y;
-                y[1] = y[3] = P[i1].y;
-                break;
-            case SplineKind::Quadratic:
-                if (i2 >= number) return make_error(primitive_place(p) + "prism: too few points");
-                e.A = glm::dvec2(0.0);
-                e.B = 0.5 * P[i] - 1.0 * P[i1] + 0.5 * P[i2];
-                e.C = -0.5 * P[i] + 0.5 * P[i2];
-                e.D = 1.0 * P[i1];
-                x[0] = x[2] = P[i1].x;
-                x[1] = x[3] = P[i2].x;
-                y[0] = y[2] = P[i1].y;
-                y[1] = y[3] = P[i2].y;
-                break;
-            case SplineKind::Cubic:
-                if (i3 >= number) return make_error(primitive_place(p) + "prism: too few points");
-                e.A = -0.5 * P[i] + 1.5 * P[i1] - 1.5 * P[i2] + 0.5 * P[i3];
-                e.B = P[i] - 2.5 * P[i1] + 2.0 * P[i2] - 0.5 * P[i3];
-                e.C = -0.5 * P[i] + 0.5 * P[i2];
-                e.D = P[i1];
-                x[0] = x[2] = P[i1].x;
-                x[1] = x[3] = P[i2].x;
-                y[0] = y[2] = P[i1].y;
-                y[1] = y[3] = P[i2].y;
-                break;
-            case SplineKind::Bezier:
-                if (i3 >= number) return make_error(primitive_place(p) + "prism: too few points");
-                e.A = P[i] - 3.0 * P[i1] + 3.0 * P[i2] - P[i3];
-                e.B = 3.0 * P[i1] - 6.0 * P[i2] + 3.0 * P[i3];
-                e.C = 3.0 * P[i2] - 3.0 * P[i3];
-                e.D = P[i3];
-                x[0] = P[i].x;
-                x[1] = P[i1].x;
-                x[2] = P[i2].x;
-                x[3] = P[i3].x;
-                y[0] = P[i].y;
-                y[1] = P[i1].y;
-                y[2] = P[i2].y;
-                y[3] = P[i3].y;
-                break;
-        }
-        if (kind == SplineKind::Quadratic || kind == SplineKind::Cubic) {
-            // The segment's extremes join its rectangle.
-            for (int axis = 0; axis < 2; ++axis) {
-                const double c[3] = {3.0 * e.A[axis], 2.0 * e.B[axis], e.C[axis]};
-                double r[2];
-                int n = solve_polynomial(2, c, r, false, 0.0);
-                double* out = axis == 0 ? x : y;
-                while (n--) {
-                    if (r[n] >= 0.0 && r[n] <= 1.0) {
-                        out[n] =
-                            r[n] * (r[n] * (r[n] * e.A[axis] + e.B[axis]) + e.C[axis]) + e.D[axis];
-                    }
-                }
-            }
-        }
+        if (!spline_segment(P, kind, i, e, x, y))
+            return make_error(primitive_place(p) + "prism: too few points");
         const double sx1 = std::min(std::min(x[0], x[1]), std::min(x[2], x[3]));
         const double sx2 = std::max(std::max(x[0], x[1]), std::max(x[2], x[3]));
         const double sy1 = std::min(std::min(y[0], y[1]), std::min(y[2], y[3]));
@@ -374,32 +409,7 @@ Result<std::shared_ptr<const ComplexShape>> prepare_prism(const Prism& prism, co
         ymin = std::min(ymin, sy1);
         ymax = std::max(ymax, sy2);
         segments.push_back(e);
-        switch (kind) {
-            case SplineKind::Linear:
-                if (std::abs(P[i1].x - first.x) < kPovEpsilon &&
-                    std::abs(P[i1].y - first.y) < kPovEpsilon) {
-                    ++i;
-                    if (i + 1 < number) first = P[i + 1];
-                }
-                break;
-            case SplineKind::Quadratic:
-                if (std::abs(P[i2].x - first.x) < kPovEpsilon &&
-                    std::abs(P[i2].y - first.y) < kPovEpsilon) {
-                    i += 2;
-                    if (i + 2 < number) first = P[i + 2];
-                }
-                break;
-            case SplineKind::Cubic:
-                if (std::abs(P[i2].x - first.x) < kPovEpsilon &&
-                    std::abs(P[i2].y - first.y) < kPovEpsilon) {
-                    i += 3;
-                    if (i + 2 < number) first = P[i + 2];
-                }
-                break;
-            case SplineKind::Bezier:
-                i += 3;
-                break;
-        }
+        i = step_past_segment(P, kind, i, first);
     }
     auto shape = std::make_shared<PrismShape>(prism, p.transform, std::move(segments), xmin, xmax,
                                               ymin, ymax, degenerate);
