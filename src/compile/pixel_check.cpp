@@ -17,6 +17,28 @@ namespace mirage {
 
 namespace {
 
+// What the exact rays of the check follow, as the tracer's do: the atmosphere, how far, and
+// the turbulent air.
+CurvedSettings exact_ray_settings(const PixelCheckSettings& s) {
+    CurvedSettings cs;
+    cs.atmosphere = s.atmosphere;
+    cs.max_dz = s.max_dz;
+    cs.turbulence = s.turbulence;
+    cs.turbulence_time_s = s.turbulence_time_s;
+    cs.unit_m = s.unit_m;
+    return cs;
+}
+
+// The nearest row to `row` (outward from it, up and down alternately) of the H rows for which
+// `ends_there(q)` holds, as a distance in rows; +inf when none.
+template <class EndsThere>
+double nearest_row(int row, int H, EndsThere ends_there) {
+    for (int d = 0; d < H; ++d)
+        for (int q : {row - d, row + d})
+            if (q >= 0 && q < H && ends_there(q)) return d;
+    return std::numeric_limits<double>::infinity();
+}
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Where a ray ends: the surface it meets, or the direction it leaves in.
@@ -393,15 +415,10 @@ PixelCheck check_many_origins(const LayerStack& rendered, const Scene& scene, co
     const size_t n = static_cast<size_t>(W) * H;
     const std::vector<glm::dvec3>& origins = *s.origins;
     MIRAGE_CHECK(origins.size() == n);
-    CurvedSettings cs;
-    cs.atmosphere = s.atmosphere;
+    CurvedSettings cs = exact_ray_settings(s);
     // The exact paths a twentieth of a pixel from the truth.
     cs.tolerance_rad = 0.05 * s.footprint.angle_rad;
     cs.tolerance_m = 0.05 * s.footprint.distance;
-    cs.max_dz = s.max_dz;
-    cs.turbulence = s.turbulence;
-    cs.turbulence_time_s = s.turbulence_time_s;
-    cs.unit_m = s.unit_m;
     const CurvedPropagator exact(cs);
 
     std::vector<OriginEnds> ends(n);
@@ -451,19 +468,12 @@ PixelCheck check_many_origins(const LayerStack& rendered, const Scene& scene, co
                 out.seen_error_px[i] =
                     static_cast<float>(std::max(p.camera_error_px, p.reflection_error_px));
                 out.reflection_error_px[i] = static_cast<float>(p.reflection_error_px);
-                double shift = kInf;
-                for (int d = 0; d < H && !std::isfinite(shift); ++d) {
-                    for (int q : {row - d, row + d}) {
-                        if (q < 0 || q >= H) continue;
+                out.shift_rows[i] = static_cast<float>(
+                    nearest_row(row, H, [&](int q) {
                         const size_t j = static_cast<size_t>(q) * W + col;
-                        if (cut_off[j] || ends[j].cut_off) continue;
-                        if (glm::length(ends[j].exact.point - p.band.point) <= reach[q]) {
-                            shift = d;
-                            break;
-                        }
-                    }
-                }
-                out.shift_rows[i] = static_cast<float>(shift);
+                        return !cut_off[j] && !ends[j].cut_off &&
+                               glm::length(ends[j].exact.point - p.band.point) <= reach[q];
+                    }));
             }
         },
         0, 1);
@@ -482,13 +492,8 @@ PixelCheck check_pixels(const LayerStack& rendered, const Scene& scene,
     const int W = s.width, H = s.height;
     const size_t n = static_cast<size_t>(W) * H;
     MIRAGE_CHECK(directions.size() == n && pixel_rad.size() == n && cut_off.size() == n);
-    CurvedSettings cs;
-    cs.atmosphere = s.atmosphere;
+    CurvedSettings cs = exact_ray_settings(s);
     cs.tolerance_rad = s.exact_tolerance_rad;
-    cs.max_dz = s.max_dz;
-    cs.turbulence = s.turbulence;
-    cs.turbulence_time_s = s.turbulence_time_s;
-    cs.unit_m = s.unit_m;
     cs.eye = s.eye;  // the camera rays' start: they share its index of the scene's boxes
     const CurvedPropagator exact(cs);
 
@@ -557,19 +562,11 @@ PixelCheck check_pixels(const LayerStack& rendered, const Scene& scene,
                 out.camera_error_px[i] = static_cast<float>(p.camera_error_rad / pixel_rad[i]);
                 // The nearest row whose exact ray ends where this band ray does: outward from the
                 // pixel's own row, up and down alternately.
-                double shift = kInf;
-                for (int d = 0; d < H && !std::isfinite(shift); ++d) {
-                    for (int q : {row - d, row + d}) {
-                        if (q < 0 || q >= H) continue;
-                        const size_t j = static_cast<size_t>(q) * W + col;
-                        if (cut_off[j] || ends[j].cut_off) continue;
-                        if (glm::dot(ends[j].exact_seen, p.band_seen) >= reach_cos[q]) {
-                            shift = d;
-                            break;
-                        }
-                    }
-                }
-                out.shift_rows[i] = static_cast<float>(shift);
+                out.shift_rows[i] = static_cast<float>(nearest_row(row, H, [&](int q) {
+                    const size_t j = static_cast<size_t>(q) * W + col;
+                    return !cut_off[j] && !ends[j].cut_off &&
+                           glm::dot(ends[j].exact_seen, p.band_seen) >= reach_cos[q];
+                }));
             }
         },
         0, 1);
