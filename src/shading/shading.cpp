@@ -22,6 +22,29 @@ namespace mirage {
 
 namespace {
 
+// POV-Ray's texture map: the entries about `value` (their positions in single precision, as
+// POV-Ray stores them), `eval`'s colours of the two blended linearly; one entry at or past the
+// ends.
+template <class Map, class Eval>
+glm::dvec3 blend_texture_map(const Map& map, double value, Eval eval) {
+    const std::size_t last = map.size() - 1;
+    std::size_t prev = 0, cur = 0;
+    if (value >= to_single(map[last].position)) {
+        prev = cur = last;
+    } else {
+        while (value > to_single(map[cur].position)) prev = cur++;
+    }
+    if (value == to_single(map[cur].position)) prev = cur;
+    glm::dvec3 colour = eval(*map[cur].texture);
+    if (prev != cur) {
+        const glm::dvec3 below = eval(*map[prev].texture);
+        value = (value - to_single(map[prev].position)) /
+                (to_single(map[cur].position) - to_single(map[prev].position));
+        colour = value * colour + (1.0 - value) * below;
+    }
+    return colour;
+}
+
 constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 constexpr double kHalfPi = 1.57079632679489661923;
 
@@ -294,23 +317,9 @@ glm::dvec3 Shader::texture_colour(const Texture& texture, std::vector<const Patt
     ctx.normal = c.pnormal;
     ctx.point = c.point;
     double value = evaluate_pattern(texture.pattern, tpoint, ctx);
-    const auto& map = texture.map;
-    const std::size_t last = map.size() - 1;
-    std::size_t prev = 0, cur = 0;
-    if (value >= to_single(map[last].position)) {
-        prev = cur = last;
-    } else {
-        while (value > to_single(map[cur].position)) prev = cur++;
-    }
-    if (value == to_single(map[cur].position)) prev = cur;
-    glm::dvec3 colour = texture_colour(*map[cur].texture, warps, tpoint, c);
-    if (prev != cur) {
-        const glm::dvec3 below = texture_colour(*map[prev].texture, warps, tpoint, c);
-        value = (value - to_single(map[prev].position)) /
-                (to_single(map[cur].position) - to_single(map[prev].position));
-        colour = value * colour + (1.0 - value) * below;
-    }
-    return colour;
+    return blend_texture_map(texture.map, value, [&](const Texture& t) {
+        return texture_colour(t, warps, tpoint, c);
+    });
 }
 
 glm::dvec3 Shader::layer_normal(const Texture& layer, const std::vector<const Pattern*>& warps,
@@ -756,25 +765,9 @@ glm::dvec3 Shader::shadow_texture(const Texture& texture, std::vector<const Patt
         warps.push_back(&texture.pattern);
         const glm::dvec3 tpoint = warp_point(texture.pattern, ipoint);
         double value = evaluate_pattern(texture.pattern, tpoint, pattern_context_);
-        const auto& map = texture.map;
-        const std::size_t last = map.size() - 1;
-        std::size_t prev = 0, cur = 0;
-        if (value >= to_single(map[last].position)) {
-            prev = cur = last;
-        } else {
-            while (value > to_single(map[cur].position)) prev = cur++;
-        }
-        if (value == to_single(map[cur].position)) prev = cur;
-        glm::dvec3 f =
-            shadow_texture(*map[cur].texture, warps, tpoint, raw_normal, direction, caustics);
-        if (prev != cur) {
-            const glm::dvec3 below =
-                shadow_texture(*map[prev].texture, warps, tpoint, raw_normal, direction, caustics);
-            value = (value - to_single(map[prev].position)) /
-                    (to_single(map[cur].position) - to_single(map[prev].position));
-            f = value * f + (1.0 - value) * below;
-        }
-        return f;
+        return blend_texture_map(texture.map, value, [&](const Texture& t) {
+            return shadow_texture(t, warps, tpoint, raw_normal, direction, caustics);
+        });
     }
     glm::dvec3 filter(1.0);
     const std::size_t layer_count = 1 + texture.layers_below.size();
