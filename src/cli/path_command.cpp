@@ -13,6 +13,51 @@
 
 namespace mirage {
 
+namespace {
+
+// The options of real air (any of them selects the general engine), and --general.
+void add_real_air_options(CLI::App& sub, PathAirOptions& a) {
+    sub.add_option("--air-temperature-c", a.air_temperature_c,
+                   "real air: temperature at the ground of the base profile, degC (default 15)");
+    sub.add_option("--lapse-k-per-km", a.lapse_k_per_km,
+                   "real air: the base cools by this much per km of height (standard: 6.5)");
+    sub.add_option("--surface-layer", a.surface_layers,
+                   "real air: + DT_K exp(-y / SCALE_M) (hot ground: DT_K > 0), as DT_K,SCALE_M "
+                   "(repeat to add)");
+    sub.add_option("--inversion", a.inversions,
+                   "real air: the temperature rises by DT_K from BOTTOM_M to TOP_M, corners "
+                   "smoothed by a Gaussian of standard deviation SMOOTHING_M (default 0), as "
+                   "BOTTOM_M,TOP_M,DT_K[,SMOOTHING_M] (repeat to add)");
+    sub.add_option("--sounding", a.sounding,
+                   "real air from a CSV: height_m,temperature_c[,pressure_hpa][,relative_humidity] "
+                   "or height_m,n");
+    sub.add_option("--sounding-max-gap", a.sounding_max_gap,
+                   "largest distance between sounding rows, m")
+        ->capture_default_str();
+    sub.add_option("--pressure-hpa", a.pressure_hpa,
+                   "pressure at the ground, hPa (default 1013.25)");
+    sub.add_flag("--isobaric", a.isobaric, "the same pressure at every height (else hydrostatic)");
+    sub.add_option("--humidity-pct", a.humidity_pct, "relative humidity, % (Ciddor)");
+    sub.add_option("--index", a.index, "index of air: gladstone-dale (default) or ciddor");
+    sub.add_option("--gladstone-dale", a.gladstone_dale,
+                   "Gladstone-Dale: n - 1 at 288.15 K and 1013.25 hPa (default 2.93e-4)");
+    sub.add_option("--wavelength-nm", a.wavelength_nm,
+                   "Ciddor: vacuum wavelength, nm (default 550)");
+    sub.add_option("--co2-ppm", a.co2_ppm, "Ciddor: CO2, ppm (default 450)");
+    sub.add_option("--earth-radius", a.earth_radius,
+                   "Earth radius, m (0: flat ground, the default; 6371000 for the Earth)");
+    sub.add_option("--top", a.top,
+                   "height above which the air is homogeneous, m (default 1000 or twice the "
+                   "highest inversion or surface layer's reach; a sounding's last row)");
+    sub.add_option("--fit-tolerance", a.fit_tolerance,
+                   "largest |n_fit - n| of the general engine's piecewise-quadratic model")
+        ->capture_default_str();
+    sub.add_flag("--general", a.general,
+                 "trace a --preset/--profile through the general engine (its n^2 fitted)");
+}
+
+}  // namespace
+
 void setup_path_command(CLI::App& app) {
     auto o = std::make_shared<PathOptions>();
     auto* sub = app.add_subcommand("path",
@@ -57,45 +102,7 @@ void setup_path_command(CLI::App& app) {
     sub->add_option("--batch", o->batch,
                     "evaluate the rays of a CSV (reference columns) and print a CSV")
         ->check(non_empty_name());
-    sub->add_option("--air-temperature-c", o->air.air_temperature_c,
-                    "real air: temperature at the ground of the base profile, degC (default 15)");
-    sub->add_option("--lapse-k-per-km", o->air.lapse_k_per_km,
-                    "real air: the base cools by this much per km of height (standard: 6.5)");
-    sub->add_option("--surface-layer", o->air.surface_layers,
-                    "real air: + DT_K exp(-y / SCALE_M) (hot ground: DT_K > 0), as DT_K,SCALE_M "
-                    "(repeat to add)");
-    sub->add_option("--inversion", o->air.inversions,
-                    "real air: the temperature rises by DT_K from BOTTOM_M to TOP_M, corners "
-                    "smoothed by a Gaussian of standard deviation SMOOTHING_M (default 0), as "
-                    "BOTTOM_M,TOP_M,DT_K[,SMOOTHING_M] (repeat to add)");
-    sub->add_option(
-        "--sounding", o->air.sounding,
-        "real air from a CSV: height_m,temperature_c[,pressure_hpa][,relative_humidity] "
-        "or height_m,n");
-    sub->add_option("--sounding-max-gap", o->air.sounding_max_gap,
-                    "largest distance between sounding rows, m")
-        ->capture_default_str();
-    sub->add_option("--pressure-hpa", o->air.pressure_hpa,
-                    "pressure at the ground, hPa (default 1013.25)");
-    sub->add_flag("--isobaric", o->air.isobaric,
-                  "the same pressure at every height (else hydrostatic)");
-    sub->add_option("--humidity-pct", o->air.humidity_pct, "relative humidity, % (Ciddor)");
-    sub->add_option("--index", o->air.index, "index of air: gladstone-dale (default) or ciddor");
-    sub->add_option("--gladstone-dale", o->air.gladstone_dale,
-                    "Gladstone-Dale: n - 1 at 288.15 K and 1013.25 hPa (default 2.93e-4)");
-    sub->add_option("--wavelength-nm", o->air.wavelength_nm,
-                    "Ciddor: vacuum wavelength, nm (default 550)");
-    sub->add_option("--co2-ppm", o->air.co2_ppm, "Ciddor: CO2, ppm (default 450)");
-    sub->add_option("--earth-radius", o->air.earth_radius,
-                    "Earth radius, m (0: flat ground, the default; 6371000 for the Earth)");
-    sub->add_option("--top", o->air.top,
-                    "height above which the air is homogeneous, m (default 1000 or twice the "
-                    "highest inversion or surface layer's reach; a sounding's last row)");
-    sub->add_option("--fit-tolerance", o->air.fit_tolerance,
-                    "largest |n_fit - n| of the general engine's piecewise-quadratic model")
-        ->capture_default_str();
-    sub->add_flag("--general", o->air.general,
-                  "trace a --preset/--profile through the general engine (its n^2 fitted)");
+    add_real_air_options(*sub, o->air);
     sub->add_flag("--ducts", o->ducts, "print the profile's ducts (with no ray: only them)");
     sub->add_option("--transfer", o->transfer,
                     "transfer curve: apparent against true elevation of points at this distance, m "
