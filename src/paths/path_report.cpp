@@ -1,7 +1,6 @@
 #include "paths/path_report.h"
 
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <optional>
 
@@ -23,12 +22,10 @@ namespace {
 std::string g(double v) { return sig(v, 10); }
 
 // A table row of a text report, in printf's format.
-__attribute__((format(printf, 1, 2))) std::string row(const char* format, ...) {
+template <class... Args>
+std::string row(const char* format, Args... args) {
     char buf[160];
-    va_list args;
-    va_start(args, format);
-    std::vsnprintf(buf, sizeof buf, format, args);
-    va_end(args);
+    std::snprintf(buf, sizeof buf, format, args...);
     return buf;
 }
 
