@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 const std::vector<std::string> kOrder = {
     "util",   "atmosphere", "scene",  "load",    "image",       "layers",  "pov",
     "report", "patterns",   "shapes", "trace",   "shading",     "render",  "compile",
-    "trace_scene", "compare", "animate", "frame", "cli"};
+    "trace_scene", "compare", "animate", "frame", "paths", "cli"};
 
 int rank(const std::string& module) {
     auto it = std::find(kOrder.begin(), kOrder.end(), module);
