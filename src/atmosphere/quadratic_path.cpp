@@ -413,14 +413,18 @@ Result<QuadraticPath> QuadraticPath::make_direction(const QuadraticProfile& prof
     if (ahead.kind == SweepEnd::Vertex) {
         const PieceGeometry g = geometry(profile, ahead.piece);
         const double a_v = 0.5 * (g.b + 2.0 * g.c * (ahead.y - g.ylo)) * r.inv_beta_sq_;
+        // The ray stays at this height for ever.
+        auto stay_level = [&]() {
+            r.fate_ = PathFate::Level;
+            r.slope_straight_ = 0.0;
+            s.y_start = s.y_end = y0;
+            s.end = SweepEnd::Top;
+            r.cur_.done = true;
+        };
         if (a_v == 0.0) {
             if (ahead.y == y0) {
                 // Level at an extremum of n^2: the ray stays at this height.
-                r.fate_ = PathFate::Level;
-                r.slope_straight_ = 0.0;
-                s.y_start = s.y_end = y0;
-                s.end = SweepEnd::Top;
-                r.cur_.done = true;
+                stay_level();
                 return r;
             }
             return make_error("the ray from " + shortest(y0) + " m at i = " + shortest(r.i_rad()) +
@@ -434,11 +438,7 @@ Result<QuadraticPath> QuadraticPath::make_direction(const QuadraticProfile& prof
         if (behind.kind == SweepEnd::Vertex && behind.y == ahead.y) {
             // Level at a maximum of n^2 with a corner (an inversion's sharp bottom): n^2 falls
             // on both sides, so the ray cannot leave this height.
-            r.fate_ = PathFate::Level;
-            r.slope_straight_ = 0.0;
-            s.y_start = s.y_end = y0;
-            s.end = SweepEnd::Top;
-            r.cur_.done = true;
+            stay_level();
             return r;
         }
         r.vertex_ahead_ = true;

@@ -95,6 +95,16 @@ double metallic_fresnel(double cos_angle) {
     return std::min(1.0, std::max(0.0, f));
 }
 
+/// A highlight (phong or specular) of the given intensity: the light's colour, tinted towards
+/// the pigment's by `metallic` (POV-Ray's metallic, weighed by its Fresnel term).
+glm::dvec3 highlight(double intensity, const glm::dvec3& light_colour, const glm::dvec3& pigment,
+                     double metallic, const glm::dvec3& normal, const glm::dvec3& dir) {
+    if (!(metallic > 0.0)) return intensity * light_colour;
+    const double fr = metallic_fresnel(glm::dot(normal, dir));
+    return intensity * light_colour *
+           (glm::dvec3(1.0) + (metallic * (1.0 - fr)) * (pigment - glm::dvec3(1.0)));
+}
+
 /// A deterministic stand-in for POV-Ray's crand random numbers (its thread-order dependent
 /// sequence cannot be reproduced): uniform in [0, 1) from the point.
 double crand_value(const glm::dvec3& p) {
@@ -525,14 +535,7 @@ void Shader::diffuse_light(const Finish& f, const glm::dvec3& normal, const glm:
                     const double intensity = (phong_size < 60 || cos_r > 0.0008)
                                                  ? phong * std::pow(cos_r, phong_size)
                                                  : 0.0;
-                    if (metallic > 0.0) {
-                        const double fr = metallic_fresnel(glm::dot(normal, dir));
-                        out += intensity * light_colour *
-                               (glm::dvec3(1.0) +
-                                (metallic * (1.0 - fr)) * (pigment - glm::dvec3(1.0)));
-                    } else {
-                        out += intensity * light_colour;
-                    }
+                    out += highlight(intensity, light_colour, pigment, metallic, normal, dir);
                 }
             }
             if (specular > 0.0) {
@@ -543,14 +546,7 @@ void Shader::diffuse_light(const Finish& f, const glm::dvec3& normal, const glm:
                     const double cos_h = glm::dot(halfway, normal) / length;
                     if (cos_h > 0.0) {
                         const double intensity = specular * std::pow(cos_h, exponent);
-                        if (metallic > 0.0) {
-                            const double fr = metallic_fresnel(glm::dot(normal, dir));
-                            out += intensity * light_colour *
-                                   (glm::dvec3(1.0) +
-                                    (metallic * (1.0 - fr)) * (pigment - glm::dvec3(1.0)));
-                        } else {
-                            out += intensity * light_colour;
-                        }
+                        out += highlight(intensity, light_colour, pigment, metallic, normal, dir);
                     }
                 }
             }

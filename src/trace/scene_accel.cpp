@@ -201,18 +201,24 @@ int SceneAccel::build_node(std::vector<int>& items, int begin, int end, int dept
 }
 
 template <bool kAnyShadow>
+bool SceneAccel::take_nearer(int k, const glm::dvec3& origin, const glm::dvec3& direction,
+                             double t_min, double t_max, Candidate& best, bool& found) const {
+    Candidate c;
+    const double limit = found ? best.hit.t : t_max;
+    if (intersect_item<kAnyShadow>(items_[k], origin, direction, t_min, limit, c) &&
+        (!found || better(c.hit.t, c.primitive, best.hit.t, best.primitive))) {
+        best = c;
+        found = true;
+    }
+    return found;
+}
+
+template <bool kAnyShadow>
 bool SceneAccel::traverse(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
                           double t_max, Candidate& best) const {
     bool found = false;
     const auto test = [&](int k) {
-        Candidate c;
-        const double limit = found ? best.hit.t : t_max;
-        if (intersect_item<kAnyShadow>(items_[k], origin, direction, t_min, limit, c) &&
-            (!found || better(c.hit.t, c.primitive, best.hit.t, best.primitive))) {
-            best = c;
-            found = true;
-        }
-        return found;
+        return take_nearer<kAnyShadow>(k, origin, direction, t_min, t_max, best, found);
     };
     // Unbounded items first: a near plane tightens the interval for the hierarchy.
     for (const int k : unbounded_items_) {
@@ -267,15 +273,8 @@ std::optional<SurfaceHit> SceneAccel::closest_unbounded_hit(const glm::dvec3& or
                                                             double t_min, double t_max) const {
     Candidate best;
     bool found = false;
-    for (const int k : unbounded_items_) {
-        Candidate c;
-        const double limit = found ? best.hit.t : t_max;
-        if (intersect_item<false>(items_[k], origin, direction, t_min, limit, c) &&
-            (!found || better(c.hit.t, c.primitive, best.hit.t, best.primitive))) {
-            best = c;
-            found = true;
-        }
-    }
+    for (const int k : unbounded_items_)
+        take_nearer<false>(k, origin, direction, t_min, t_max, best, found);
     if (!found) return std::nullopt;
     SurfaceHit hit;
     hit.t = best.hit.t;

@@ -117,6 +117,10 @@ class SceneAccel {
     template <bool kAnyShadow>
     bool intersect_item(const Item& item, const glm::dvec3& origin, const glm::dvec3& direction,
                         double t_min, double t_max, Candidate& hit) const;
+    /// Item k's hit, if nearer than `best` (when `found`) or within t_max: then it is `best`.
+    template <bool kAnyShadow>
+    bool take_nearer(int k, const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
+                     double t_max, Candidate& best, bool& found) const;
 
     int build_node(std::vector<int>& items, int begin, int end, int depth,
                    const std::vector<Aabb>& boxes, const std::vector<glm::dvec3>& centres);
