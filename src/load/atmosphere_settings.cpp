@@ -49,6 +49,7 @@ const char* const kKnown[] = {
     "Mirage_Inversion_Smoothing",
     "Mirage_Index",
     "Mirage_Wavelength",
+    "Mirage_Wavelengths",
     "Mirage_Humidity",
     "Mirage_Top",
     "Mirage_Earth_Radius",
@@ -149,7 +150,8 @@ Result<std::optional<double>> ranged(const Reader& r, const char* name, double l
 bool real_air_forms_declared(const Reader& r) {
     for (const char* name : {"Mirage_Sounding", "Mirage_Sounding_Max_Gap", "Mirage_Lapse",
                              "Mirage_Inversion", "Mirage_Inversion_Smoothing", "Mirage_Index",
-                             "Mirage_Wavelength", "Mirage_Humidity", "Mirage_Top"})
+                             "Mirage_Wavelength", "Mirage_Wavelengths", "Mirage_Humidity",
+                             "Mirage_Top"})
         if (r.has(name)) return true;
     return false;
 }
@@ -350,6 +352,23 @@ Status read_turbulence(const Reader& r, MirageSettings& s) {
     return Ok{};
 }
 
+// Colour: Mirage_Wavelengths = <red, green, blue> (nm), checked with its place; the air then
+// has the green channel's wavelength.
+Status read_colour(const Reader& r, MirageSettings& s) {
+    MIRAGE_TRY(v, r.vector("Mirage_Wavelengths", "<610, 550, 465> (red, green, blue; nm)"));
+    if (!v) return Ok{};
+    const std::string name = r.at("Mirage_Wavelengths") + "Mirage_Wavelengths = <" +
+                             shortest(v->x) + ", " + shortest(v->y) + ", " + shortest(v->z) + ">";
+    if (r.has("Mirage_Wavelength"))
+        return make_error(r.at("Mirage_Wavelength") +
+                          "declare one: Mirage_Wavelength (one wavelength for every channel) or "
+                          "Mirage_Wavelengths (colour: one per channel)");
+    MIRAGE_TRY(nm, check_channel_wavelengths({v->x, v->y, v->z}, name));
+    if (auto st = set_wavelength(s, nm[1], name); !st) return st.error();
+    s.channel_wavelengths_nm = nm;
+    return Ok{};
+}
+
 }  // namespace
 
 std::vector<std::string> atmosphere_setting_names() {
@@ -520,7 +539,58 @@ Result<MirageSettings> read_atmosphere_settings(const Scene& scene) {
     }
     if (auto st = read_rendering_settings(r, s); !st) return st.error();
     if (auto st = read_turbulence(r, s); !st) return st.error();
+    if (auto st = read_colour(r, s); !st) return st.error();
     return s;
+}
+
+Result<ChannelWavelengths> check_channel_wavelengths(const std::vector<double>& nm,
+                                                     const std::string& name) {
+    if (nm.size() != 3)
+        return make_error(name + ": give three wavelengths, the red, green and blue channels' "
+                                 "(nm), e.g. 610,550,465");
+    ChannelWavelengths out{};
+    for (int k = 0; k < 3; ++k) {
+        if (!(nm[k] >= kMinWavelengthNm && nm[k] <= kMaxWavelengthNm))
+            return make_error(name + ": the " + (k == 0 ? "red" : k == 1 ? "green" : "blue") +
+                              " channel's wavelength " + shortest(nm[k]) + " nm must be from " +
+                              shortest(kMinWavelengthNm) + " to " + shortest(kMaxWavelengthNm) +
+                              " nm (Ciddor's range)");
+        out[k] = nm[k];
+    }
+    return out;
+}
+
+Status set_wavelength(MirageSettings& s, double nm, const std::string& name) {
+    if (!(nm >= kMinWavelengthNm && nm <= kMaxWavelengthNm))
+        return make_error(name + ": the wavelength " + shortest(nm) + " nm must be from " +
+                          shortest(kMinWavelengthNm) + " to " + shortest(kMaxWavelengthNm) +
+                          " nm (Ciddor's range)");
+    const char* refusal = nullptr;
+    if (!bends_rays(s)) {
+        refusal = "the scene declares no atmosphere to give a wavelength to";
+    } else if (!s.air || s.air->source == AirSpec::Source::Exponential) {
+        // Khular's eta0, eta1 and alpha are indices at no stated wavelength: scaling them by
+        // Ciddor's dispersion would invent the air they stand for (docs/colour.md).
+        refusal =
+            "an exponential profile (Mirage_Preset, Mirage_Profile, the exponential fit of "
+            "Mirage_..._Temperature) has no wavelength: declare real air (Mirage_Lapse, "
+            "Mirage_Inversion or Mirage_Sounding) with Mirage_Index = \"ciddor\"";
+    } else if (s.air->source == AirSpec::Source::Sounding &&
+               s.air->sounding.kind == Sounding::Kind::Index) {
+        refusal = "a sounding of the index n has no wavelength: give it as temperatures";
+    } else if (s.air->index.formula != IndexFormula::Ciddor) {
+        refusal =
+            "Gladstone-Dale's index has no wavelength: declare Mirage_Index = \"ciddor\"";
+    }
+    if (refusal) return make_error(name + ": " + refusal);
+    AirSpec spec = *s.air;
+    const std::string before = ", Ciddor " + shortest(spec.index.wavelength_nm) + " nm";
+    spec.index.wavelength_nm = nm;
+    if (auto model = make_air_model(spec); !model) return make_error(name + ": " + model.message());
+    s.air = std::make_shared<const AirSpec>(std::move(spec));
+    if (auto at = s.profile_label.find(before); at != std::string::npos)
+        s.profile_label.replace(at, before.size(), ", Ciddor " + shortest(nm) + " nm");
+    return Ok{};
 }
 
 Status exaggerate_atmosphere(MirageSettings& s, double k, const std::string& name) {
