@@ -52,6 +52,7 @@ const char* const kKnown[] = {
     "Mirage_Wavelengths",
     "Mirage_Humidity",
     "Mirage_Top",
+    "Mirage_Upper_Air",
     "Mirage_Earth_Radius",
     // mirage.inc's own and the compiled layers' names
     "Mirage_Inc_Temp",
@@ -151,7 +152,7 @@ bool real_air_forms_declared(const Reader& r) {
     for (const char* name : {"Mirage_Sounding", "Mirage_Sounding_Max_Gap", "Mirage_Lapse",
                              "Mirage_Inversion", "Mirage_Inversion_Smoothing", "Mirage_Index",
                              "Mirage_Wavelength", "Mirage_Wavelengths", "Mirage_Humidity",
-                             "Mirage_Top"})
+                             "Mirage_Top", "Mirage_Upper_Air"})
         if (r.has(name)) return true;
     return false;
 }
@@ -195,6 +196,7 @@ Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     MIRAGE_TRY(wavelength, ranged(r, "Mirage_Wavelength", 300.0, 1690.0, "nm, Ciddor's range"));
     MIRAGE_TRY(humidity, ranged(r, "Mirage_Humidity", 0.0, 100.0, "%"));
     MIRAGE_TRY(top, ranged(r, "Mirage_Top", 1e-3, kMaxFormHeightM, "m"));
+    MIRAGE_TRY(upper, r.text("Mirage_Upper_Air", "standard"));
     std::vector<Inversion> inversions;
     for (int k = 1; k <= kMaxInversions; ++k) {
         const std::string name = inversion_name(k, false);
@@ -286,12 +288,29 @@ Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     if (pressure) spec.ground_pressure_pa = 100.0 * *pressure;
     if (top) spec.top_m = *top;
     spec.earth_radius_m = radius ? *radius : kEarthRadiusM;
+    if (upper) {
+        const std::string at = r.at("Mirage_Upper_Air") + "Mirage_Upper_Air \"" + *upper + "\"";
+        if (*upper != "standard" && *upper != "none")
+            return make_error(at + ": expected \"standard\" (the standard atmosphere above "
+                                   "Mirage_Top, to 47 km) or \"none\" (homogeneous air above)");
+        if (*upper == "standard") {
+            if (spec.earth_radius_m == 0.0)
+                return make_error(at + ": the upper air is the curved Earth's; on flat ground "
+                                       "(Mirage_Earth_Radius = 0) rays never leave the air");
+            if (spec.source == AirSpec::Source::Sounding &&
+                spec.sounding.kind == Sounding::Kind::Index)
+                return make_error(at + ": the upper air continues the air's temperature and "
+                                       "pressure, which a sounding of n does not give");
+            spec.upper_air = true;
+        }
+    }
     label += spec.index.formula == IndexFormula::Ciddor
                  ? ", Ciddor " + shortest(spec.index.wavelength_nm) + " nm"
                  : ", Gladstone-Dale";
     label += spec.earth_radius_m > 0.0
                  ? ", Earth radius " + shortest(spec.earth_radius_m / 1000.0) + " km"
                  : ", flat ground";
+    if (spec.upper_air) label += ", standard upper air to 47 km";
     // The whole air checked once here, with the place of the setting that describes it.
     if (auto model = make_air_model(spec); !model)
         return make_error((top ? r.at("Mirage_Top") : first) + model.message());
