@@ -151,8 +151,8 @@ Result<std::optional<double>> ranged(const Reader& r, const char* name, double l
 bool real_air_forms_declared(const Reader& r) {
     for (const char* name : {"Mirage_Sounding", "Mirage_Sounding_Max_Gap", "Mirage_Lapse",
                              "Mirage_Inversion", "Mirage_Inversion_Smoothing", "Mirage_Index",
-                             "Mirage_Wavelength", "Mirage_Wavelengths", "Mirage_Humidity",
-                             "Mirage_Top", "Mirage_Upper_Air"})
+                             "Mirage_Wavelength", "Mirage_Humidity", "Mirage_Top",
+                             "Mirage_Upper_Air"})
         if (r.has(name)) return true;
     return false;
 }
