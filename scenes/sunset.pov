@@ -17,7 +17,7 @@
 //   build/mirage trace scenes/sunset.pov -W 640 -H 480 --declare Sun_Elevation=-0.84 \
 //       --declare Angle=0.2 -o flash.png          (the last strip through a longer lens)
 // Only the tracer renders this mirage: `mirage compile` refuses it (POV-Ray would see the sky
-// of a curved Earth 220 km wide tens of mrad off), and plain POV-Ray
+// of a curved Earth 220 km wide 34.5 mrad off), and plain POV-Ray
 // (`povray +Lpov_includes scenes/sunset.pov`) renders it without the atmosphere.
 #version 3.7;
 

@@ -143,6 +143,11 @@ void setup_trace_command(CLI::App& app) {
     sub->add_flag("--colour,--color", o->colour,
                   "colour at the default wavelengths 610,550,465 nm (the sRGB primaries')")
         ->excludes(wavelengths);
+    sub->add_flag("--monochrome", o->trace.monochrome,
+                  "one wavelength for the three channels (the green one of the scene's "
+                  "Mirage_Wavelengths)")
+        ->excludes(wavelengths)
+        ->excludes("--colour");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     o->antialias.add(sub, o->trace.antialias);
     sub->footer(povray_switches_note(true));

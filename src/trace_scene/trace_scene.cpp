@@ -166,6 +166,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         if (!opt.atmosphere)
             return make_error(colour_option +
                               ": straight rays (--no-atmosphere) separate no colours");
+        if (opt.monochrome) return make_error(colour_option + ": colour asked for a monochrome render");
         auto nm = check_channel_wavelengths(opt.wavelengths_nm, colour_option);
         if (!nm) return nm.error();
         asked_colour = *nm;
@@ -216,7 +217,8 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     report.tolerance_px = settings.tolerance_px;
     report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
     report.many_origins = !camera_has_one_viewpoint(scene.camera);
-    const std::optional<ChannelWavelengths> colour = settings.channel_wavelengths_nm;
+    const std::optional<ChannelWavelengths> colour =
+        opt.monochrome ? std::nullopt : settings.channel_wavelengths_nm;
     if (!colour || !opt.atmosphere) {
         if (auto s = trace_pass(*loaded, settings, opt, report); !s) return s.error();
     } else {

@@ -39,6 +39,9 @@ struct TraceOptions : SceneInput {
     // (--wavelengths, nm), replacing the scene's Mirage_Wavelengths; empty: the scene's, else
     // one wavelength for the three.
     std::vector<double> wavelengths_nm;
+    // The scene's Mirage_Wavelengths ignored: one render through the air at the green
+    // channel's wavelength (what the band designs of compare and study see).
+    bool monochrome = false;
 };
 
 struct TraceReport {

@@ -138,6 +138,25 @@ TEST_F(ColourTrace, EachChannelIsTheMonochromeRenderAtItsWavelength) {
     }
 }
 
+TEST_F(ColourTrace, AMonochromeRenderOfAColourSceneIsTheGreenChannelsAir) {
+    auto green = trace(horizon_scene(true, "#declare Mirage_Wavelength = 550;\n"));
+    ASSERT_TRUE(green.ok()) << green.message();
+    TraceOptions o;
+    o.scene = horizon_scene(true, "#declare Mirage_Wavelengths = <610, 550, 465>;\n").string();
+    o.width = 3;
+    o.height = 3;
+    o.progress = false;
+    o.monochrome = true;
+    auto mono = trace_scene(o);
+    ASSERT_TRUE(mono.ok()) << mono.message();
+    EXPECT_TRUE(mono->wavelengths_nm.empty());
+    EXPECT_EQ(mono->render.image.pixels, green->render.image.pixels);
+    o.monochrome = false;
+    auto colour = trace_scene(o);
+    ASSERT_TRUE(colour.ok()) << colour.message();
+    EXPECT_NE(colour->render.image.pixels, green->render.image.pixels);
+}
+
 TEST_F(ColourTrace, BadWavelengthsAreRefusedByTheOption) {
     auto few = trace(horizon_scene(true, ""), {610.0, 550.0});
     ASSERT_FALSE(few.ok());
