@@ -50,7 +50,9 @@ camera {
 // fata_morgana.pov: the entry for height Y at 0.5 + Y / 2.2), dim and red low down; over it
 // the sun, a disc of the `spherical` pattern about its direction (the pattern falls from 1 at
 // the centre to 0 at the disc's angular radius; transparent outside), limb-darkened and
-// reddened by the long path through the air (little blue is left).
+// reddened by the long path through the air (little blue is left).  Its limb fades in over a
+// thousandth of its radius (1"), so that the sky's colour stays continuous
+// (tests/scenes/shipped_sky_test.cpp), far finer than the colours' rims.
 #declare Sun_Radius = radians(0.2667);
 #declare Sun_Direction = <0, sin(radians(Sun_Elevation)), cos(radians(Sun_Elevation))>;
 sky_sphere {
@@ -69,7 +71,7 @@ sky_sphere {
         color_map {
             [0.0   color rgbt <0, 0, 0, 1>]
             [0.002 color rgbt <0, 0, 0, 1>]
-            [0.002 color rgb <1.0, 0.50, 0.06>]
+            [0.003 color rgb <1.0, 0.50, 0.06>]
             [0.4   color rgb <1.0, 0.72, 0.10>]
             [1.0   color rgb <1.0, 0.82, 0.14>]
         }
