@@ -35,8 +35,8 @@ Result<Image> combine_channels(const Image& red, const Image& green, const Image
         red.height != blue.height)
         return make_error("the channels' images differ in size: " + std::to_string(red.width) +
                           "x" + std::to_string(red.height) + ", " + std::to_string(green.width) +
-                          "x" + std::to_string(green.height) + ", " +
-                          std::to_string(blue.width) + "x" + std::to_string(blue.height));
+                          "x" + std::to_string(green.height) + ", " + std::to_string(blue.width) +
+                          "x" + std::to_string(blue.height));
     Image out(red.width, red.height);
     const Image* from[3] = {&red, &green, &blue};
     for (std::size_t k = 0; k < out.pixels.size(); ++k) out.pixels[k] = from[k % 3]->pixels[k];
@@ -69,8 +69,8 @@ Result<ColourCompileReport> compile_colour(const CompileOptions& options,
             auto r = render_povray(rs);
             if (!r) return r.error();
             if (r->exit_code != 0)
-                return make_error("POV-Ray failed (exit " + std::to_string(r->exit_code) +
-                                  ") on " + ch.report.ini_path + ":\n" + log_tail(rs.log, 20));
+                return make_error("POV-Ray failed (exit " + std::to_string(r->exit_code) + ") on " +
+                                  ch.report.ini_path + ":\n" + log_tail(rs.log, 20));
             ch.render = *r;
             ch.log = rs.log;
         }
@@ -96,8 +96,8 @@ std::string colour_compile_summary(const ColourCompileReport& r) {
     const char* names[3] = {"red", "green", "blue"};
     for (std::size_t c = 0; c < r.channels.size(); ++c) {
         const ColourChannel& ch = r.channels[c];
-        o << (c < 3 ? names[c] : "") << " " << shortest(ch.wavelength_nm) << " nm: "
-          << ch.report.layers << " layers, max error " << sig(ch.report.max_error_px, 3)
+        o << (c < 3 ? names[c] : "") << " " << shortest(ch.wavelength_nm)
+          << " nm: " << ch.report.layers << " layers, max error " << sig(ch.report.max_error_px, 3)
           << " px, " << ch.report.ini_path;
         if (ch.render)
             o << ", POV-Ray " << sig(ch.render->seconds, 3) << " s"

@@ -23,7 +23,8 @@ constexpr const char* kRealAir =
 
 class ColourSettingsLoad : public ::testing::Test {
   protected:
-    fs::path dir_ = fs::path(::testing::TempDir()) / ("mirage_colour_" + std::to_string(::getpid()));
+    fs::path dir_ =
+        fs::path(::testing::TempDir()) / ("mirage_colour_" + std::to_string(::getpid()));
     void SetUp() override { fs::create_directories(dir_); }
     void TearDown() override { fs::remove_all(dir_); }
 
@@ -65,28 +66,31 @@ TEST_F(ColourSettingsLoad, ReadsTheChannelsAndGivesTheAirTheGreenOne) {
 
 TEST_F(ColourSettingsLoad, AWavelengthOutOfRangeIsRefusedWithItsPlaceAndChannel) {
     EXPECT_EQ(error(std::string(kRealAir) + "#declare Mirage_Wavelengths = <610, 550, 250>;\n"),
-              at(4) + "Mirage_Wavelengths = <610, 550, 250>: the blue channel's wavelength 250 "
-                      "nm must be from 300 to 1690 nm (Ciddor's range)");
+              at(4) +
+                  "Mirage_Wavelengths = <610, 550, 250>: the blue channel's wavelength 250 "
+                  "nm must be from 300 to 1690 nm (Ciddor's range)");
     EXPECT_EQ(error(std::string(kRealAir) + "#declare Mirage_Wavelengths = <2000, 550, 465>;\n"),
-              at(4) + "Mirage_Wavelengths = <2000, 550, 465>: the red channel's wavelength "
-                      "2000 nm must be from 300 to 1690 nm (Ciddor's range)");
+              at(4) +
+                  "Mirage_Wavelengths = <2000, 550, 465>: the red channel's wavelength "
+                  "2000 nm must be from 300 to 1690 nm (Ciddor's range)");
     EXPECT_EQ(error(std::string(kRealAir) + "#declare Mirage_Wavelengths = 550;\n"),
-              at(4) + "Mirage_Wavelengths must be a vector, e.g. <610, 550, 465> (red, green, "
-                      "blue; nm)");
+              at(4) +
+                  "Mirage_Wavelengths must be a vector, e.g. <610, 550, 465> (red, green, "
+                  "blue; nm)");
 }
 
 TEST_F(ColourSettingsLoad, AirWithoutAWavelengthIsRefused) {
     // An exponential profile (the paper's), Gladstone-Dale's index, and both settings at once.
     const std::string paper = error(
         "#declare Mirage_Preset = \"paper\";\n#declare Mirage_Wavelengths = <610, 550, 465>;\n");
-    EXPECT_EQ(paper.rfind(at(2) + "Mirage_Wavelengths = <610, 550, 465>: an exponential profile",
-                          0),
-              0u)
+    EXPECT_EQ(
+        paper.rfind(at(2) + "Mirage_Wavelengths = <610, 550, 465>: an exponential profile", 0), 0u)
         << paper;
-    const std::string gd = error(
-        "#declare Mirage_Lapse = 6.5;\n#declare Mirage_Wavelengths = <610, 550, 465>;\n");
-    EXPECT_EQ(gd, at(2) + "Mirage_Wavelengths = <610, 550, 465>: Gladstone-Dale's index has no "
-                          "wavelength: declare Mirage_Index = \"ciddor\"");
+    const std::string gd =
+        error("#declare Mirage_Lapse = 6.5;\n#declare Mirage_Wavelengths = <610, 550, 465>;\n");
+    EXPECT_EQ(gd, at(2) +
+                      "Mirage_Wavelengths = <610, 550, 465>: Gladstone-Dale's index has no "
+                      "wavelength: declare Mirage_Index = \"ciddor\"");
     const std::string both = error(std::string(kRealAir) +
                                    "#declare Mirage_Wavelength = 590;\n"
                                    "#declare Mirage_Wavelengths = <610, 550, 465>;\n");
@@ -94,14 +98,13 @@ TEST_F(ColourSettingsLoad, AirWithoutAWavelengthIsRefused) {
 }
 
 TEST_F(ColourSettingsLoad, ACommandsWavelengthReplacesTheScenes) {
-    auto r = load(std::string(kRealAir) + "#declare Mirage_Wavelengths = <610, 550, 465>;\n",
-                  465.0);
+    auto r =
+        load(std::string(kRealAir) + "#declare Mirage_Wavelengths = <610, 550, 465>;\n", 465.0);
     ASSERT_TRUE(r.ok()) << r.message();
     EXPECT_EQ(r->settings.air->index.wavelength_nm, 465.0);
     EXPECT_FALSE(r->settings.channel_wavelengths_nm.has_value());  // one channel's design
     const std::string paper = error("#declare Mirage_Preset = \"paper\";\n", 610.0);
-    EXPECT_NE(paper.find("s.pov: the wavelength 610 nm: an exponential profile"),
-              std::string::npos)
+    EXPECT_NE(paper.find("s.pov: the wavelength 610 nm: an exponential profile"), std::string::npos)
         << paper;
 }
 
@@ -113,14 +116,16 @@ TEST_F(ColourSettingsLoad, TheUpperAirIsReadAndRefusedWhereItCannotBe) {
     ASSERT_TRUE(none.ok()) << none.message();
     EXPECT_FALSE(none->settings.air->upper_air);
     EXPECT_EQ(error(std::string(kRealAir) + "#declare Mirage_Upper_Air = \"standrad\";\n"),
-              at(4) + "Mirage_Upper_Air \"standrad\": expected \"standard\" (the standard "
-                      "atmosphere above Mirage_Top, to 47 km) or \"none\" (homogeneous air "
-                      "above)");
+              at(4) +
+                  "Mirage_Upper_Air \"standrad\": expected \"standard\" (the standard "
+                  "atmosphere above Mirage_Top, to 47 km) or \"none\" (homogeneous air "
+                  "above)");
     EXPECT_EQ(error(std::string(kRealAir) +
                     "#declare Mirage_Earth_Radius = 0;\n#declare Mirage_Upper_Air = "
                     "\"standard\";\n"),
-              at(5) + "Mirage_Upper_Air \"standard\": the upper air is the curved Earth's; on "
-                      "flat ground (Mirage_Earth_Radius = 0) rays never leave the air");
+              at(5) +
+                  "Mirage_Upper_Air \"standard\": the upper air is the curved Earth's; on "
+                  "flat ground (Mirage_Earth_Radius = 0) rays never leave the air");
 }
 
 }  // namespace

@@ -23,8 +23,8 @@
 #include "compare/colour_render.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
-#include "util/format.h"
 #include "trace_scene/trace_scene.h"
+#include "util/format.h"
 
 namespace mirage {
 namespace {
@@ -60,8 +60,7 @@ std::string colour_road_in(const fs::path& dir) {
     return (dir / "colour_road.pov").string();
 }
 
-Result<Image> trace_colour(const std::string& scene, const fs::path& png,
-                           std::vector<double> nm) {
+Result<Image> trace_colour(const std::string& scene, const fs::path& png, std::vector<double> nm) {
     TraceOptions o;
     o.scene = scene;
     o.output = png.string();
@@ -110,10 +109,11 @@ TEST(ColourImageDiff, PovRaysChannelsMatchTheColourTracer) {
     ASSERT_TRUE(swapped.ok()) << swapped.message();
     auto wrong = compare_images(*pov, *swapped, kSameColour);
     ASSERT_TRUE(wrong.ok()) << wrong.message();
-    std::printf("colour road: POV-Ray against the tracer: %lld px over %.2f (PSNR %.2f dB); "
-                "against the swapped channels: %lld px (PSNR %.2f dB)\n",
-                static_cast<long long>(same->pixels_over), kSameColour, same->psnr_db,
-                static_cast<long long>(wrong->pixels_over), wrong->psnr_db);
+    std::printf(
+        "colour road: POV-Ray against the tracer: %lld px over %.2f (PSNR %.2f dB); "
+        "against the swapped channels: %lld px (PSNR %.2f dB)\n",
+        static_cast<long long>(same->pixels_over), kSameColour, same->psnr_db,
+        static_cast<long long>(wrong->pixels_over), wrong->psnr_db);
     EXPECT_LE(same->pixels_over, kDifferingShare * kW * kH) << "images in " << dir;
     EXPECT_GE(wrong->pixels_over, 4 * std::max<std::int64_t>(same->pixels_over, 1))
         << "images in " << dir;

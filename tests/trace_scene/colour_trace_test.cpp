@@ -46,8 +46,7 @@ class ColourTrace : public ::testing::Test {
             << "#include \"mirage.inc\"\n"
                "global_settings { assumed_gamma 1.0 }\n"
                "camera { location <0, "
-            << kEyeM
-            << ", 0> look_at <0, " << kEyeM
+            << kEyeM << ", 0> look_at <0, " << kEyeM
             << ", 1000> right x angle 0.01 }\n"
                "sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } scale 2 "
                "translate -y } }\n";
@@ -113,8 +112,8 @@ TEST_F(ColourTrace, TheChannelsSeparateAtTheHorizonAsCiddorsIndexSays) {
     // Blue lifted more than green, green more than red: the separation (about 30") as the
     // table's within 1 %, far finer than the 0.1 % of the whole refraction above.
     const double separation = seen[2] - seen[0], expected = table[2] - table[0];
-    std::printf("blue - red at the horizon: traced %.3f\", integral %.3f\"\n",
-                separation / kArcsec, expected / kArcsec);
+    std::printf("blue - red at the horizon: traced %.3f\", integral %.3f\"\n", separation / kArcsec,
+                expected / kArcsec);
     EXPECT_GT(seen[1], seen[0]);
     EXPECT_GT(seen[2], seen[1]);
     EXPECT_NEAR(separation, expected, 0.01 * expected);
@@ -127,8 +126,8 @@ TEST_F(ColourTrace, EachChannelIsTheMonochromeRenderAtItsWavelength) {
     const double nm[3] = {610.0, 550.0, 465.0};
     for (int c = 0; c < 3; ++c) {
         // A scene at one wavelength: its render's channel c is the colour render's, bit for bit.
-        auto mono = trace(horizon_scene(true, "#declare Mirage_Wavelength = " +
-                                                  std::to_string(nm[c]) + ";\n"));
+        auto mono = trace(
+            horizon_scene(true, "#declare Mirage_Wavelength = " + std::to_string(nm[c]) + ";\n"));
         ASSERT_TRUE(mono.ok()) << mono.message();
         EXPECT_TRUE(mono->wavelengths_nm.empty());
         for (int y = 0; y < 3; ++y)
