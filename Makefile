@@ -8,6 +8,10 @@
 #                        (SCENE=scenes/road.pov W=640 H=480 TOL=0.5 to choose)
 #   make trace           render the scene with the built-in tracer along the curved rays
 #                        (build/render/NAME-trace.png; same SCENE, W, H, TOL)
+#                        Colour (docs/colour.md): a scene that declares Mirage_Wavelengths is
+#                        rendered in colour by both; WAVELENGTHS=610,550,465 asks for it (real
+#                        air only): make render then compiles one design per wavelength into
+#                        build/render/NAME/NAME-<nm>nm/ and combines POV-Ray's channels
 #   make test            build and run every test through CTest
 #   make bench           Google Benchmark for the path kernels
 #   make study           band designs compared on a scene's continuum of camera rays (build/study/NAME/:
@@ -31,6 +35,7 @@ SCENE   ?= scenes/desert.pov
 W       ?= 640
 H       ?= 480
 TOL     ?=
+WAVELENGTHS ?=
 # make compare renders every setting: its own size, smaller, unless W and H are given.
 CW      ?= $(if $(filter command line,$(origin W)),$(W),320)
 CH      ?= $(if $(filter command line,$(origin H)),$(H),240)
@@ -75,12 +80,12 @@ test: build
 
 render: build
 	$(BUILD)/mirage compile $(SCENE) --width $(W) --height $(H) $(if $(TOL),--tolerance $(TOL)) \
-	    -o $(BUILD)/render/$(NAME) --render
+	    $(if $(WAVELENGTHS),--wavelengths $(WAVELENGTHS)) -o $(BUILD)/render/$(NAME) --render
 
 trace: build
 	@mkdir -p $(BUILD)/render
 	$(BUILD)/mirage trace $(SCENE) --width $(W) --height $(H) $(if $(TOL),--tolerance $(TOL)) \
-	    -o $(BUILD)/render/$(NAME)-trace.png
+	    $(if $(WAVELENGTHS),--wavelengths $(WAVELENGTHS)) -o $(BUILD)/render/$(NAME)-trace.png
 
 compare: build
 	$(BUILD)/mirage compare $(SCENE) -W $(CW) -H $(CH) -o $(BUILD)/compare/$(NAME)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "util/check.h"
 #include "util/format.h"
@@ -459,6 +460,99 @@ Result<AirModel> make_air_model(const AirSpec& spec) {
     return model;
 }
 
+std::function<double(double)> upper_air_refractivity(const AirSpec& spec, double top_m,
+                                                     double temperature_top_k,
+                                                     double pressure_top_pa,
+                                                     double refractivity_top) {
+    // The layers above the top: bottom (m), lapse (K per m), temperature and pressure there.
+    struct Layer {
+        double bottom, lapse, temperature, pressure;
+    };
+    constexpr double kTropopauseK = 216.65;
+    std::vector<Layer> layers{{top_m, temperature_top_k > kTropopauseK ? -0.0065 : 0.0,
+                               temperature_top_k, pressure_top_pa}};
+    const double tropopause = top_m + std::max(0.0, temperature_top_k - kTropopauseK) / 0.0065;
+    const std::pair<double, double> bounds[] = {{tropopause, 0.0}, {20000.0, 0.001},
+                                                {32000.0, 0.0028}};
+    auto temperature_at = [](const Layer& l, double h) {
+        return l.temperature + l.lapse * (h - l.bottom);
+    };
+    auto pressure_at = [&temperature_at](const Layer& l, double h) {
+        return l.lapse == 0.0 ? l.pressure * std::exp(-kHydrostaticScale * (h - l.bottom) /
+                                                      l.temperature)
+                              : l.pressure * std::pow(l.temperature / temperature_at(l, h),
+                                                      kHydrostaticScale / l.lapse);
+    };
+    for (const auto& [bottom, lapse] : bounds) {
+        const Layer& below = layers.back();
+        if (bottom <= below.bottom) {
+            if (bottom > top_m || lapse == 0.0) continue;
+            layers.back().lapse = lapse;  // the top lies in this layer already
+            continue;
+        }
+        layers.push_back({bottom, lapse, temperature_at(below, bottom), pressure_at(below, bottom)});
+    }
+    IndexSettings index = spec.index;
+    auto dry = [index](double t, double p) {
+        return refractivity(index, mirage::AirState{t, p, 0.0});
+    };
+    const double scale = refractivity_top / dry(temperature_top_k, pressure_top_pa);
+    return [layers, dry, scale, temperature_at, pressure_at](double h) {
+        std::size_t k = 0;
+        while (k + 1 < layers.size() && h >= layers[k + 1].bottom) ++k;
+        const Layer& l = layers[k];
+        return scale * dry(temperature_at(l, h), pressure_at(l, h));
+    };
+}
+
+namespace {
+
+// The described air continued above its top by the upper air, to kUpperAirTopM.
+Result<ProfileFunction> with_upper_air(const AirModel& model, const AirSpec& spec) {
+    if (!model.temperature_k || !model.pressure_pa)
+        return make_error("the upper air continues the air's temperature and pressure, which "
+                          "an exponential profile or a sounding of n does not give");
+    const double top = model.top;
+    if (!(top < kUpperAirTopM))
+        return make_error("profile top " + shortest(top) + " m must lie below the upper air's " +
+                          shortest(kUpperAirTopM) + " m");
+    const ProfileFunction& f = model.physical;
+    const double m_top = model.refractivity(top);
+    auto m = upper_air_refractivity(spec, top, model.temperature_k(top), model.pressure_pa(top),
+                                    m_top);
+    const double n0_sq = f.n0_sq, k = spec.exaggeration;
+    // Continuous at the top: the excess the described air ends with, and the upper air's from
+    // the same refractivity.
+    const double n_top = 1.0 + m_top;
+    const double offset = f.excess(top) - k * (n_top * n_top - n0_sq);
+    ProfileFunction g = f;
+    auto upper = [m, n0_sq, k, offset](double h) {
+        const double n = 1.0 + m(h);
+        return offset + k * (n * n - n0_sq);
+    };
+    g.excess = [lower = f.excess, upper, top](double h) {
+        return h <= top ? lower(h) : upper(h);
+    };
+    g.excess_slope = [lower = f.excess_slope, upper, top](double h, int side) {
+        if (side > 0 ? h < top : h <= top) return lower(h, side);
+        // The upper air is smooth within its layers, whose bounds are breakpoints: a
+        // one-sided difference of a centimetre on the side asked.
+        constexpr double d = 0.01;
+        return side > 0 ? (upper(h + d) - upper(h)) / d : (upper(h) - upper(h - d)) / d;
+    };
+    g.breakpoints.push_back(top);
+    const double tropopause = top + std::max(0.0, model.temperature_k(top) - 216.65) / 0.0065;
+    for (double b : {tropopause, 20000.0, 32000.0})
+        if (b > top && b < kUpperAirTopM) g.breakpoints.push_back(b);
+    std::sort(g.breakpoints.begin(), g.breakpoints.end());
+    g.breakpoints.erase(std::unique(g.breakpoints.begin(), g.breakpoints.end()),
+                        g.breakpoints.end());
+    g.top = kUpperAirTopM;
+    return g;
+}
+
+}  // namespace
+
 Result<std::shared_ptr<const QuadraticProfile>> fit_air(const AirSpec& spec,
                                                         const FitSettings& settings,
                                                         FitReport* report) {
@@ -482,11 +576,21 @@ Result<std::shared_ptr<const QuadraticProfile>> fit_air(const AirSpec& spec,
         }
         return std::make_shared<const QuadraticProfile>(std::move(*q));
     }
+    const bool upper = spec.upper_air && R > 0.0;
+    ProfileFunction physical = model->physical;
+    if (upper) {
+        auto g = with_upper_air(*model, spec);
+        if (!g) return g.error();
+        physical = std::move(*g);
+    }
+    // Above the upper air (n - 1 about 3e-7) a kilometre of homogeneous air, as
+    // astronomical_refraction.h's model has it; the sky is seen where rays leave it.
     ProfileFunction f =
-        R > 0.0 ? flatten(model->physical, R, spec.earth_extension_m) : model->physical;
+        R > 0.0 ? flatten(physical, R, upper ? 1000.0 : spec.earth_extension_m) : physical;
     FitReport own_report;
     if (!report) report = &own_report;
     auto q = fit_quadratic_profile(f, settings, report);
+    if (q) q->set_sky_at_top(upper);
     if (!q) {
         const Sounding& s = spec.sounding;
         if (spec.source != AirSpec::Source::Sounding || s.line.size() != s.height_m.size() ||

@@ -82,6 +82,11 @@ struct AirSpec {
                                          // above the highest feature)
     double earth_radius_m = 0.0;         // 0: flat ground
     double earth_extension_m = 10000.0;  // with curvature: the model goes this far above the top
+    // With curvature: the air above `top_m` continues as the standard atmosphere to
+    // kUpperAirTopM (upper_air_refractivity), and the model says that the sky is seen where a
+    // ray leaves it (QuadraticProfile::sky_at_top), so that a sun at the horizon is refracted
+    // all the way (Mirage_Upper_Air, docs/colour.md).  Needs the air's temperature and pressure.
+    bool upper_air = false;
     // Not air: n^2 - n0^2 multiplied by this over the whole profile, before the Earth's
     // flattening (Mirage_Exaggeration, docs/framing.md).  1: the air as described.
     double exaggeration = 1.0;
@@ -113,6 +118,21 @@ double height_above_sphere(double flattened_height, double earth_radius);
 /// The profile in the flattened frame: n*^2 = n^2 (1 + h/R)^2 over y in [0, y(top + extension)],
 /// homogeneous n above the physical top.
 ProfileFunction flatten(const ProfileFunction& physical, double earth_radius, double extension_m);
+
+/// The top of the upper air (AirSpec::upper_air), m above the ground: the US Standard
+/// Atmosphere's 47 km, where n - 1 has fallen to about 3e-7; vacuum above, reached by one
+/// refraction at the top's sphere (sky_exit.h).
+constexpr double kUpperAirTopM = 47000.0;
+
+/// n - 1 above the described air's top (m, `top_m`), from its temperature, pressure and
+/// refractivity there: the temperature falls at 6.5 K/km to the standard tropopause's 216.65 K,
+/// stays there to 20 km, rises 1 K/km to 32 km and 2.8 K/km above (the US Standard Atmosphere's
+/// layers, at geometric heights), the pressure hydrostatic in each layer; the index by the
+/// spec's formula for dry air, scaled to meet `refractivity_top` at the top.
+std::function<double(double)> upper_air_refractivity(const AirSpec& spec, double top_m,
+                                                     double temperature_top_k,
+                                                     double pressure_top_pa,
+                                                     double refractivity_top);
 
 /// The fitted model of the spec (through the flattening when it has an Earth radius).  An index
 /// sounding on flat ground is its own quadratic model (its spline of n^2), fitted exactly.

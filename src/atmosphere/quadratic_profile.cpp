@@ -132,6 +132,7 @@ Result<QuadraticProfile> QuadraticProfile::rescaled(double unit) const {
     auto p = make(std::move(knots), std::move(slopes), std::move(curvatures), n0_sq_,
                   earth_radius_ / unit);
     if (!p) return p.error();
+    p->sky_at_top_ = sky_at_top_;
     if (!spans_.empty()) {
         p->spans_ = spans_;
         for (CoarseSpan& sp : p->spans_) {

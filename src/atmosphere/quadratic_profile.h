@@ -60,6 +60,11 @@ class QuadraticProfile {
     double top() const { return y_.back(); }
     double n0_sq() const { return n0_sq_; }
     double earth_radius() const { return earth_radius_; }  // 0: flat
+    /// Whether the sky is seen where a ray leaves the model's top (the whole atmosphere
+    /// described, to vacuum above: AirSpec::upper_air), rather than where a tracer stops
+    /// following it.
+    bool sky_at_top() const { return sky_at_top_; }
+    void set_sky_at_top(bool at_top) { sky_at_top_ = at_top; }
     /// Piece j's coefficients: n^2 - n0^2 = e + b u + c u^2 on [knot(j), knot(j+1)].
     double e(int j) const { return e_[j]; }
     double b(int j) const { return b_[j]; }
@@ -140,6 +145,7 @@ class QuadraticProfile {
     std::vector<double> y_, e_, b_, c_, inc_, end_slope_, root_abs_c_;
     double n0_sq_ = 1.0;
     double earth_radius_ = 0.0;
+    bool sky_at_top_ = false;
     bool homogeneous_ = true;
     std::vector<CoarseSpan> spans_;
     std::vector<int> span_up_, span_down_;

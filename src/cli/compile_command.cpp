@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "compare/colour_render.h"
 #include "compare/povray_render.h"
 #include "compile/compile.h"
 #include "util/format.h"
@@ -29,7 +30,33 @@ struct CompileCliOptions {
     bool render = false;
     bool strict = false;
     int check_samples = 0;
+    std::vector<double> wavelengths;  // --wavelengths
+    bool colour = false;              // --colour
 };
+
+// Colour: a design per wavelength, each rendered with --render and the channels combined.
+void compile_in_colour(const CompileCliOptions& o, const CompileOptions& c,
+                       const ChannelWavelengths& nm) {
+    auto report = compile_colour(c, nm, o.render);
+    if (!report) {
+        std::cerr << "mirage compile: " << escape_terminal(report.message()) << "\n";
+        throw CommandFailed{1};
+    }
+    bool within = true;
+    if (o.json) std::cout << "[\n";
+    for (std::size_t k = 0; k < report->channels.size(); ++k) {
+        const CompileReport& r = report->channels[k].report;
+        within = within && r.within_tolerance;
+        if (o.json) {
+            std::cout << (k ? ",\n" : "") << report_json(r);
+        } else if (!o.quiet) {
+            std::cout << report_text(r);
+        }
+    }
+    if (o.json) std::cout << "]\n";
+    if (!o.quiet && !o.json) std::cout << colour_compile_summary(*report);
+    if (o.strict && !within) throw CommandFailed{3};
+}
 
 }  // namespace
 
@@ -90,6 +117,16 @@ void setup_compile_command(CLI::App& app) {
                                   "compile the still at this clock (POV-Ray's +K; the .ini "
                                   "renders it with Clock=), one frame of an animation");
     add_declare_option(*sub, o->declares, "; the .ini declares it too");
+    auto* wavelengths =
+        sub->add_option("--wavelengths", o->wavelengths,
+                        "colour: one design per wavelength for the red, green and blue channels, "
+                        "nm (e.g. 610,550,465; replaces Mirage_Wavelengths; real air only), in "
+                        "OUT/SCENE-<nm>nm/; with --render the channels combined in the image")
+            ->delimiter(',')
+            ->type_name("R,G,B");
+    sub->add_flag("--colour,--color", o->colour,
+                  "colour at the default wavelengths 610,550,465 nm (the sRGB primaries')")
+        ->excludes(wavelengths);
     sub->add_flag("--json", o->json, "print the report as JSON");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     sub->footer(povray_switches_note(false));
@@ -111,6 +148,18 @@ void setup_compile_command(CLI::App& app) {
         c.samples_per_side = *samples ? o->check_samples
                              : (c.camera == CameraModel::Corrected && !c.antialias) ? 1
                                                                                     : 3;
+        std::vector<double> asked = o->wavelengths;
+        if (o->colour)
+            asked.assign(kDefaultChannelWavelengthsNm.begin(), kDefaultChannelWavelengthsNm.end());
+        std::string option = o->colour ? "--colour" : "--wavelengths ";
+        for (std::size_t k = 0; k < o->wavelengths.size(); ++k)
+            option += (k ? "," : "") + shortest(o->wavelengths[k]);
+        auto colour = compile_colour_wavelengths(c, asked, option);
+        if (!colour) {
+            std::cerr << "mirage compile: " << escape_terminal(colour.message()) << "\n";
+            throw CommandFailed{1};
+        }
+        if (*colour) return compile_in_colour(*o, c, **colour);
         auto report = compile_scene(c);
         if (!report) {
             std::cerr << "mirage compile: " << escape_terminal(report.message()) << "\n";

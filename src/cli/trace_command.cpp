@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "load/atmosphere_settings.h"
 #include "trace_scene/side_by_side.h"
 #include "trace_scene/trace_scene.h"
 #include "util/format.h"
@@ -97,6 +98,7 @@ struct TraceCliOptions {
     std::vector<std::string> declares;
     bool no_atmosphere = false;
     bool quiet = false;
+    bool colour = false;
     AntialiasCli antialias;
 };
 
@@ -132,6 +134,20 @@ void setup_trace_command(CLI::App& app) {
                                   "render the still at this clock (POV-Ray's +K), one frame of "
                                   "an animation");
     add_declare_option(*sub, o->declares);
+    auto* wavelengths =
+        sub->add_option("--wavelengths", o->trace.wavelengths_nm,
+                        "colour: trace the red, green and blue channels at these wavelengths, nm "
+                        "(e.g. 610,550,465; replaces Mirage_Wavelengths; real air only)")
+            ->delimiter(',')
+            ->type_name("R,G,B");
+    sub->add_flag("--colour,--color", o->colour,
+                  "colour at the default wavelengths 610,550,465 nm (the sRGB primaries')")
+        ->excludes(wavelengths);
+    sub->add_flag("--monochrome", o->trace.monochrome,
+                  "one wavelength for the three channels (the green one of the scene's "
+                  "Mirage_Wavelengths)")
+        ->excludes(wavelengths)
+        ->excludes("--colour");
     sub->add_flag("-q,--quiet", o->quiet, "print nothing but errors");
     o->antialias.add(sub, o->trace.antialias);
     sub->footer(povray_switches_note(true));
@@ -142,6 +158,9 @@ void setup_trace_command(CLI::App& app) {
         t.declares = declared_numbers(o->declares);
         t.atmosphere = !o->no_atmosphere;
         t.progress = !o->quiet;
+        if (o->colour)
+            t.wavelengths_nm.assign(kDefaultChannelWavelengthsNm.begin(),
+                                    kDefaultChannelWavelengthsNm.end());
         if (o->antialias.apply(t, o->quiet)) return;
         auto report = trace_scene(t);
         if (!report) {

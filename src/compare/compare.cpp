@@ -295,6 +295,7 @@ Status run_tracer(Sweep& sw, CompareModel model, double tolerance) {
     t.threads = sw.opt.threads;
     t.scanline_paths = model == CompareModel::Scanline;
     t.progress = false;
+    t.monochrome = true;  // as the band designs: the green channel's air
     const double cpu0 = process_cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     auto rep = trace_scene(t);
@@ -556,6 +557,7 @@ Status run_reference(Sweep& sw) {
     t.tolerance_px = opt.reference_tolerance_px;
     t.threads = opt.threads;
     t.progress = false;
+    t.monochrome = true;  // as the band designs: the green channel's air
     auto ref = trace_scene(t);
     if (!ref) return ref.error();
     if (ref->mode == PathMode::Straight)

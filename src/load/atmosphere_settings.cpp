@@ -49,8 +49,10 @@ const char* const kKnown[] = {
     "Mirage_Inversion_Smoothing",
     "Mirage_Index",
     "Mirage_Wavelength",
+    "Mirage_Wavelengths",
     "Mirage_Humidity",
     "Mirage_Top",
+    "Mirage_Upper_Air",
     "Mirage_Earth_Radius",
     // mirage.inc's own and the compiled layers' names
     "Mirage_Inc_Temp",
@@ -149,7 +151,8 @@ Result<std::optional<double>> ranged(const Reader& r, const char* name, double l
 bool real_air_forms_declared(const Reader& r) {
     for (const char* name : {"Mirage_Sounding", "Mirage_Sounding_Max_Gap", "Mirage_Lapse",
                              "Mirage_Inversion", "Mirage_Inversion_Smoothing", "Mirage_Index",
-                             "Mirage_Wavelength", "Mirage_Humidity", "Mirage_Top"})
+                             "Mirage_Wavelength", "Mirage_Humidity", "Mirage_Top",
+                             "Mirage_Upper_Air"})
         if (r.has(name)) return true;
     return false;
 }
@@ -193,6 +196,7 @@ Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     MIRAGE_TRY(wavelength, ranged(r, "Mirage_Wavelength", 300.0, 1690.0, "nm, Ciddor's range"));
     MIRAGE_TRY(humidity, ranged(r, "Mirage_Humidity", 0.0, 100.0, "%"));
     MIRAGE_TRY(top, ranged(r, "Mirage_Top", 1e-3, kMaxFormHeightM, "m"));
+    MIRAGE_TRY(upper, r.text("Mirage_Upper_Air", "standard"));
     std::vector<Inversion> inversions;
     for (int k = 1; k <= kMaxInversions; ++k) {
         const std::string name = inversion_name(k, false);
@@ -284,12 +288,29 @@ Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     if (pressure) spec.ground_pressure_pa = 100.0 * *pressure;
     if (top) spec.top_m = *top;
     spec.earth_radius_m = radius ? *radius : kEarthRadiusM;
+    if (upper) {
+        const std::string at = r.at("Mirage_Upper_Air") + "Mirage_Upper_Air \"" + *upper + "\"";
+        if (*upper != "standard" && *upper != "none")
+            return make_error(at + ": expected \"standard\" (the standard atmosphere above "
+                                   "Mirage_Top, to 47 km) or \"none\" (homogeneous air above)");
+        if (*upper == "standard") {
+            if (spec.earth_radius_m == 0.0)
+                return make_error(at + ": the upper air is the curved Earth's; on flat ground "
+                                       "(Mirage_Earth_Radius = 0) rays never leave the air");
+            if (spec.source == AirSpec::Source::Sounding &&
+                spec.sounding.kind == Sounding::Kind::Index)
+                return make_error(at + ": the upper air continues the air's temperature and "
+                                       "pressure, which a sounding of n does not give");
+            spec.upper_air = true;
+        }
+    }
     label += spec.index.formula == IndexFormula::Ciddor
                  ? ", Ciddor " + shortest(spec.index.wavelength_nm) + " nm"
                  : ", Gladstone-Dale";
     label += spec.earth_radius_m > 0.0
                  ? ", Earth radius " + shortest(spec.earth_radius_m / 1000.0) + " km"
                  : ", flat ground";
+    if (spec.upper_air) label += ", standard upper air to 47 km";
     // The whole air checked once here, with the place of the setting that describes it.
     if (auto model = make_air_model(spec); !model)
         return make_error((top ? r.at("Mirage_Top") : first) + model.message());
@@ -347,6 +368,23 @@ Status read_turbulence(const Reader& r, MirageSettings& s) {
         return make_error(r.at("Mirage_Turbulence_Cn2") + "Mirage_Turbulence_Cn2: " + st.message());
     s.turbulence_aperture_m = aperture ? *aperture : 0.0;
     if (t.cn2 > 0.0) s.turbulence = t;
+    return Ok{};
+}
+
+// Colour: Mirage_Wavelengths = <red, green, blue> (nm), checked with its place; the air then
+// has the green channel's wavelength.
+Status read_colour(const Reader& r, MirageSettings& s) {
+    MIRAGE_TRY(v, r.vector("Mirage_Wavelengths", "<610, 550, 465> (red, green, blue; nm)"));
+    if (!v) return Ok{};
+    const std::string name = r.at("Mirage_Wavelengths") + "Mirage_Wavelengths = <" +
+                             shortest(v->x) + ", " + shortest(v->y) + ", " + shortest(v->z) + ">";
+    if (r.has("Mirage_Wavelength"))
+        return make_error(r.at("Mirage_Wavelength") +
+                          "declare one: Mirage_Wavelength (one wavelength for every channel) or "
+                          "Mirage_Wavelengths (colour: one per channel)");
+    MIRAGE_TRY(nm, check_channel_wavelengths({v->x, v->y, v->z}, name));
+    if (auto st = set_wavelength(s, nm[1], name); !st) return st.error();
+    s.channel_wavelengths_nm = nm;
     return Ok{};
 }
 
@@ -520,7 +558,58 @@ Result<MirageSettings> read_atmosphere_settings(const Scene& scene) {
     }
     if (auto st = read_rendering_settings(r, s); !st) return st.error();
     if (auto st = read_turbulence(r, s); !st) return st.error();
+    if (auto st = read_colour(r, s); !st) return st.error();
     return s;
+}
+
+Result<ChannelWavelengths> check_channel_wavelengths(const std::vector<double>& nm,
+                                                     const std::string& name) {
+    if (nm.size() != 3)
+        return make_error(name + ": give three wavelengths, the red, green and blue channels' "
+                                 "(nm), e.g. 610,550,465");
+    ChannelWavelengths out{};
+    for (int k = 0; k < 3; ++k) {
+        if (!(nm[k] >= kMinWavelengthNm && nm[k] <= kMaxWavelengthNm))
+            return make_error(name + ": the " + (k == 0 ? "red" : k == 1 ? "green" : "blue") +
+                              " channel's wavelength " + shortest(nm[k]) + " nm must be from " +
+                              shortest(kMinWavelengthNm) + " to " + shortest(kMaxWavelengthNm) +
+                              " nm (Ciddor's range)");
+        out[k] = nm[k];
+    }
+    return out;
+}
+
+Status set_wavelength(MirageSettings& s, double nm, const std::string& name) {
+    if (!(nm >= kMinWavelengthNm && nm <= kMaxWavelengthNm))
+        return make_error(name + ": the wavelength " + shortest(nm) + " nm must be from " +
+                          shortest(kMinWavelengthNm) + " to " + shortest(kMaxWavelengthNm) +
+                          " nm (Ciddor's range)");
+    const char* refusal = nullptr;
+    if (!bends_rays(s)) {
+        refusal = "the scene declares no atmosphere to give a wavelength to";
+    } else if (!s.air || s.air->source == AirSpec::Source::Exponential) {
+        // Khular's eta0, eta1 and alpha are indices at no stated wavelength: scaling them by
+        // Ciddor's dispersion would invent the air they stand for (docs/colour.md).
+        refusal =
+            "an exponential profile (Mirage_Preset, Mirage_Profile, the exponential fit of "
+            "Mirage_..._Temperature) has no wavelength: declare real air (Mirage_Lapse, "
+            "Mirage_Inversion or Mirage_Sounding) with Mirage_Index = \"ciddor\"";
+    } else if (s.air->source == AirSpec::Source::Sounding &&
+               s.air->sounding.kind == Sounding::Kind::Index) {
+        refusal = "a sounding of the index n has no wavelength: give it as temperatures";
+    } else if (s.air->index.formula != IndexFormula::Ciddor) {
+        refusal =
+            "Gladstone-Dale's index has no wavelength: declare Mirage_Index = \"ciddor\"";
+    }
+    if (refusal) return make_error(name + ": " + refusal);
+    AirSpec spec = *s.air;
+    const std::string before = ", Ciddor " + shortest(spec.index.wavelength_nm) + " nm";
+    spec.index.wavelength_nm = nm;
+    if (auto model = make_air_model(spec); !model) return make_error(name + ": " + model.message());
+    s.air = std::make_shared<const AirSpec>(std::move(spec));
+    if (auto at = s.profile_label.find(before); at != std::string::npos)
+        s.profile_label.replace(at, before.size(), ", Ciddor " + shortest(nm) + " nm");
+    return Ok{};
 }
 
 Status exaggerate_atmosphere(MirageSettings& s, double k, const std::string& name) {

@@ -1,6 +1,7 @@
 // The atmosphere a scene declares with Mirage_... values (see pov_includes/mirage.inc).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -42,6 +43,11 @@ constexpr double kMaxEarthRadiusM = 1e9;     // to this
 constexpr double kMaxLapseKPerKm = 100.0;    // |Mirage_Lapse|
 // kMaxFormHeightM, kMaxFormDeltaK, kMaxSmoothingM, kMinScaleHeightM: atmosphere/general_profile.h
 constexpr int kMaxInversions = 8;  // Mirage_Inversion, Mirage_Inversion_2, ...
+// Colour (docs/colour.md): Ciddor's range of wavelengths, nm, and the channels' default, the
+// dominant wavelengths of the sRGB primaries (red 611 nm, green 549 nm, blue 464 nm), rounded.
+constexpr double kMinWavelengthNm = 300.0, kMaxWavelengthNm = 1690.0;
+using ChannelWavelengths = std::array<double, 3>;  // red, green, blue; nm
+constexpr ChannelWavelengths kDefaultChannelWavelengthsNm = {610.0, 550.0, 465.0};
 // The fitted model's |n_fit - n| bound: chosen from the path tolerance so that ray directions
 // stay within half of it (pi sqrt(eps) <= tolerance / 2), within these limits.
 // Mirage_Exaggeration (not air): from a thousandth of the air's index gradient to ten thousand
@@ -75,6 +81,10 @@ struct MirageSettings {
     // m/s; unset when the scene declares none or C_n^2 = 0.
     std::optional<TurbulenceSettings> turbulence;
     double turbulence_aperture_m = 0.0;  // Mirage_Turbulence_Aperture: the camera's, m
+    // Colour (Mirage_Wavelengths = <R, G, B>, nm): the wavelengths the tracer and the compiled
+    // designs render the red, green and blue channels at; unset: one wavelength for all three
+    // (monochrome light).  `air` then has the green channel's wavelength.
+    std::optional<ChannelWavelengths> channel_wavelengths_nm;
 };
 
 // Turbulence's defaults in a scene: an inner scale of 5 mm and an outer one of 1 m (the air a
@@ -99,6 +109,17 @@ std::vector<std::string> atmosphere_setting_names();
 /// nothing.  An error, prefixed with `name` (the setting with its place), for k out of
 /// [kMinExaggeration, kMaxExaggeration], no gradient, or a profile the factor makes invalid.
 Status exaggerate_atmosphere(MirageSettings& settings, double k, const std::string& name);
+
+/// Checks the wavelengths of a colour render's channels: three (red, green, blue), each from
+/// kMinWavelengthNm to kMaxWavelengthNm; `name` says where they were given, with its place
+/// ("--wavelengths 610,550", "scene.pov:3:1: Mirage_Wavelengths =").
+Result<ChannelWavelengths> check_channel_wavelengths(const std::vector<double>& nm,
+                                                     const std::string& name);
+
+/// Sets the air's wavelength (one channel of a colour render): real air through Ciddor's
+/// index only.  The exponential profiles, Gladstone-Dale's index and a sounding of n have no
+/// wavelength: refused with `name` (the setting or option, with its place) and the reason.
+Status set_wavelength(MirageSettings& settings, double wavelength_nm, const std::string& name);
 
 /// Checks a tolerance in pixels against its range; `name` says where it was given, with its
 /// place: "--tolerance", "scene.pov:3:10: Mirage_Tolerance =".  The one message of every

@@ -109,6 +109,15 @@ Result<MirageSettings> settle_mirage_scene(const Scene& scene, const SceneLoadOp
     if (options.tolerance_px) settings->tolerance_px = *options.tolerance_px;
     if (options.layers) settings->layers = *options.layers;
     if (options.layer_count) settings->layer_count = *options.layer_count;
+    if (options.wavelength_nm) {
+        // One channel of a colour render: the air at that wavelength, one colour throughout.
+        if (auto s = set_wavelength(*settings, *options.wavelength_nm,
+                                    options.scene + ": the wavelength " +
+                                        shortest(*options.wavelength_nm) + " nm");
+            !s)
+            return s.error();
+        settings->channel_wavelengths_nm.reset();
+    }
     // The camera: within reach, its rays defined, its pixels no finer than paths can follow.
     const Camera& camera = scene.camera;
     const std::string at = place_prefix(camera.loc, scene.file);

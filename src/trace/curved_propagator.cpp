@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "atmosphere/sky_exit.h"
 #include "scene/camera.h"
 #include "util/check.h"
 
@@ -370,7 +371,10 @@ PathEndDirections end_directions(const glm::dvec2& heading, const CurvedPath& cp
         // The slope is the path's in the flattened frame, against the local horizontal at
         // end_slope_dz; the sky is seen from the start, whose horizontal is tilted from that
         // by end_slope_dz / R.
-        const double e = std::atan(slope) - cp.path.end_slope_dz / cp.earth_radius;
+        double e = std::atan(slope) - cp.path.end_slope_dz / cp.earth_radius;
+        // A model of the whole atmosphere: the sky where the ray leaves its top (sky_exit.h).
+        if (cp.general)
+            if (auto exit = sky_exit(*cp.general)) e = exit->elevation - exit->dz / cp.earth_radius;
         out.sky = glm::dvec3(std::cos(e) * heading.x, std::sin(e), std::cos(e) * heading.y);
     }
     return out;

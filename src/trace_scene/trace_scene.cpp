@@ -48,53 +48,13 @@ std::string path_mode_name(PathMode mode) {
     return "";
 }
 
-Result<TraceReport> trace_scene(const TraceOptions& opt) {
-    if (opt.threads < 0) {
-        return make_error("--threads " + std::to_string(opt.threads) +
-                          ": must be 0 (all cores) or more");
-    }
-    if (!opt.output.empty())
-        if (auto s = check_image_name(opt.output); !s) return s.error();
+namespace {
 
-    SceneLoadOptions lo = scene_load_options(opt);
-    lo.strict = true;  // the tracer renders every object: none may be left out silently
-    lo.object_queries = tracer_object_queries();
-    lo.tolerance_px = opt.tolerance_px;
-    lo.clock = opt.clock;
-    lo.declares = opt.declares;
-    // The mirage traced must be one POV-Ray shows too; straight rays need no mirage.inc.
-    lo.mirage_inc = opt.atmosphere ? MirageIncCheck::IfDeclared : MirageIncCheck::None;
-    auto loaded = load_mirage_scene(lo);
-    if (!loaded) return loaded.error();
-    const MirageSettings& settings = loaded->settings;
-    if (opt.atmosphere && settings.declared) {
-        // A camera under the atmosphere's ground is refused as compile refuses it (its rays
-        // would start under the ground and see the ground's underside).
-        auto lowest = [&]() -> std::optional<double> {
-            auto accel = SceneAccel::build(loaded->scene);
-            if (!accel || accel->finite_bounds().empty()) return std::nullopt;
-            return accel->finite_bounds().lo.y;
-        };
-        if (auto s = check_camera_above_ground(loaded->scene, settings.ground_height, lowest); !s)
-            return s.error();
-        // Heights above the atmosphere's ground (scene/ground.h); straight rays need no ground.
-        lower_scene(loaded->scene, settings.ground_height);
-    }
-    const Scene& scene = loaded->scene;
-    // The image may replace no file the scene was read from; refused before the render.
-    OutputSet outputs(scene.files);
-    if (!opt.output.empty()) {
-        if (auto s = outputs.check(opt.output); !s) return s.error();
-    }
-
-    TraceReport report;
-    report.scene = opt.scene;
-    report.files = scene.files;
-    report.width = opt.width;
-    report.height = opt.height;
-    report.tolerance_px = settings.tolerance_px;
-    report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
-    report.many_origins = !camera_has_one_viewpoint(scene.camera);
+// One render of the loaded scene (lowered to its ground) through the atmosphere of
+// `settings`: the propagator chosen and the image in report.render.
+Status trace_pass(const MirageScene& loaded, const MirageSettings& settings,
+                  const TraceOptions& opt, TraceReport& report) {
+    const Scene& scene = loaded.scene;
     const Profile profile = profile_in_scene_units(settings);
     const bool bends = bends_rays(settings);
     if (opt.atmosphere && bends) {
@@ -156,7 +116,7 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
         auto screens = scene_screens(scene, settings);
         if (!screens) return screens.error();
         curved.turbulence = std::move(*screens);
-        curved.turbulence_time_s = turbulence_time_s(loaded->parse_options);
+        curved.turbulence_time_s = turbulence_time_s(loaded.parse_options);
         curved.unit_m = settings.unit_m;
         report.atmosphere += ", turbulence C_n^2 " + shortest(settings.turbulence->cn2) +
                              " m^-2/3 at " + shortest(curved.turbulence_time_s) + " s";
@@ -185,6 +145,110 @@ Result<TraceReport> trace_scene(const TraceOptions& opt) {
     auto rendered = render(scene, rs, *propagator);
     if (!rendered) return rendered.error();
     report.render = std::move(*rendered);
+    return Ok{};
+}
+
+}  // namespace
+
+Result<TraceReport> trace_scene(const TraceOptions& opt) {
+    if (opt.threads < 0) {
+        return make_error("--threads " + std::to_string(opt.threads) +
+                          ": must be 0 (all cores) or more");
+    }
+    if (!opt.output.empty())
+        if (auto s = check_image_name(opt.output); !s) return s.error();
+    std::optional<ChannelWavelengths> asked_colour;
+    std::string colour_option;
+    if (!opt.wavelengths_nm.empty()) {
+        colour_option = "--wavelengths ";
+        for (std::size_t k = 0; k < opt.wavelengths_nm.size(); ++k)
+            colour_option += (k ? "," : "") + shortest(opt.wavelengths_nm[k]);
+        if (!opt.atmosphere)
+            return make_error(colour_option +
+                              ": straight rays (--no-atmosphere) separate no colours");
+        if (opt.monochrome) return make_error(colour_option + ": colour asked for a monochrome render");
+        auto nm = check_channel_wavelengths(opt.wavelengths_nm, colour_option);
+        if (!nm) return nm.error();
+        asked_colour = *nm;
+    }
+
+    SceneLoadOptions lo = scene_load_options(opt);
+    lo.strict = true;  // the tracer renders every object: none may be left out silently
+    lo.object_queries = tracer_object_queries();
+    lo.tolerance_px = opt.tolerance_px;
+    lo.clock = opt.clock;
+    lo.declares = opt.declares;
+    // The mirage traced must be one POV-Ray shows too; straight rays need no mirage.inc.
+    lo.mirage_inc = opt.atmosphere ? MirageIncCheck::IfDeclared : MirageIncCheck::None;
+    auto loaded = load_mirage_scene(lo);
+    if (!loaded) return loaded.error();
+    MirageSettings settings = loaded->settings;
+    if (asked_colour) {
+        // The air must have a wavelength; the green channel's stands for it elsewhere.
+        if (auto s = set_wavelength(settings, (*asked_colour)[1], colour_option); !s)
+            return make_error(opt.scene + ": " + s.message());
+        settings.channel_wavelengths_nm = asked_colour;
+    }
+    if (opt.atmosphere && settings.declared) {
+        // A camera under the atmosphere's ground is refused as compile refuses it (its rays
+        // would start under the ground and see the ground's underside).
+        auto lowest = [&]() -> std::optional<double> {
+            auto accel = SceneAccel::build(loaded->scene);
+            if (!accel || accel->finite_bounds().empty()) return std::nullopt;
+            return accel->finite_bounds().lo.y;
+        };
+        if (auto s = check_camera_above_ground(loaded->scene, settings.ground_height, lowest); !s)
+            return s.error();
+        // Heights above the atmosphere's ground (scene/ground.h); straight rays need no ground.
+        lower_scene(loaded->scene, settings.ground_height);
+    }
+    const Scene& scene = loaded->scene;
+    // The image may replace no file the scene was read from; refused before the render.
+    OutputSet outputs(scene.files);
+    if (!opt.output.empty()) {
+        if (auto s = outputs.check(opt.output); !s) return s.error();
+    }
+
+    TraceReport report;
+    report.scene = opt.scene;
+    report.files = scene.files;
+    report.width = opt.width;
+    report.height = opt.height;
+    report.tolerance_px = settings.tolerance_px;
+    report.pixel_rad = pixel_angle_rad(scene.camera, opt.width, opt.height);
+    report.many_origins = !camera_has_one_viewpoint(scene.camera);
+    const std::optional<ChannelWavelengths> colour =
+        opt.monochrome ? std::nullopt : settings.channel_wavelengths_nm;
+    if (!colour || !opt.atmosphere) {
+        if (auto s = trace_pass(*loaded, settings, opt, report); !s) return s.error();
+    } else {
+        // Colour: each channel traced through the air at its wavelength, and taken from
+        // that render (docs/colour.md).
+        Image combined(opt.width, opt.height);
+        RenderStats total;
+        std::string label;
+        for (int c = 0; c < 3; ++c) {
+            MirageSettings channel = settings;
+            const std::string name = "the " + std::string(c == 0 ? "red" : c == 1 ? "green" : "blue") +
+                                     " channel's wavelength";
+            if (auto s = set_wavelength(channel, (*colour)[c], name); !s) return s.error();
+            if (auto s = trace_pass(*loaded, channel, opt, report); !s) return s.error();
+            const std::vector<float>& px = report.render.image.pixels;
+            for (std::size_t k = static_cast<std::size_t>(c); k < px.size(); k += 3)
+                combined.pixels[k] = px[k];
+            total.counters.add(report.render.stats.counters);
+            total.threads = report.render.stats.threads;
+            total.seconds += report.render.stats.seconds;
+            total.cpu_seconds += report.render.stats.cpu_seconds;
+            total.antialiased = report.render.stats.antialiased;
+            report.wavelengths_nm.push_back((*colour)[c]);
+        }
+        report.render.image = std::move(combined);
+        report.render.stats = total;
+        report.atmosphere = settings.profile_label + ", colour: red " + shortest((*colour)[0]) +
+                            " nm, green " + shortest((*colour)[1]) + " nm, blue " +
+                            shortest((*colour)[2]) + " nm";
+    }
     apply_output_gamma(report.render.image, scene.global);
     if (!opt.output.empty()) {
         if (auto s = write_image(report.render.image, opt.output, &outputs); !s) return s.error();

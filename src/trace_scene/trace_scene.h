@@ -35,6 +35,13 @@ struct TraceOptions : SceneInput {
     std::optional<double> clock;             // --clock (POV-Ray's +K): a still at this clock
     std::map<std::string, double> declares;  // --declare (POV-Ray's Declare=)
     AntialiasSettings antialias;             // POV-Ray's +A, +AM, +R, +J; off by default
+    // Colour (docs/colour.md): the red, green and blue channels traced at these wavelengths
+    // (--wavelengths, nm), replacing the scene's Mirage_Wavelengths; empty: the scene's, else
+    // one wavelength for the three.
+    std::vector<double> wavelengths_nm;
+    // The scene's Mirage_Wavelengths ignored: one render through the air at the green
+    // channel's wavelength (what the band designs of compare and study see).
+    bool monochrome = false;
 };
 
 struct TraceReport {
@@ -47,7 +54,11 @@ struct TraceReport {
     PixelFootprint footprint;   // one pixel along a camera ray (scene/camera.h)
     bool many_origins = false;  // the camera's rays start at different points
     int model_pieces = 0;       // real air: the fitted model's pieces (0: closed forms)
-    RenderResult render;        // the image (linear) and the render's statistics
+    RenderResult render;        // the image (linear) and the render's statistics (a colour
+                                // render's summed over its channels)
+    // Colour: the channels' wavelengths, nm (red, green, blue), each channel traced through its
+    // own atmosphere; empty: monochrome.
+    std::vector<double> wavelengths_nm;
     std::string output;         // the file written, if any
     // The files the scene was read from.
     std::vector<std::string> files;
