@@ -373,8 +373,7 @@ PathEndDirections end_directions(const glm::dvec2& heading, const CurvedPath& cp
         // by end_slope_dz / R.
         double e = std::atan(slope) - cp.path.end_slope_dz / cp.earth_radius;
         // A model of the whole atmosphere: the sky where the ray leaves its top (sky_exit.h).
-        if (cp.general)
-            if (auto exit = sky_exit(*cp.general)) e = exit->elevation - exit->dz / cp.earth_radius;
+        if (auto exit = sky_exit(*cp.exact)) e = exit->elevation - exit->dz / cp.earth_radius;
         out.sky = glm::dvec3(std::cos(e) * heading.x, std::sin(e), std::cos(e) * heading.y);
     }
     return out;
