@@ -26,7 +26,9 @@ Result<std::optional<ChannelWavelengths>> compile_colour_wavelengths(
     lo.clock = options.clock;
     lo.declares = options.declares;
     auto loaded = load_mirage_scene(lo);
-    if (!loaded) return loaded.error();
+    // A scene that does not load is compiled as one design, whose own checks (the names POV-Ray
+    // reads among them) come first and say what is wrong.
+    if (!loaded) return std::optional<ChannelWavelengths>();
     return loaded->settings.channel_wavelengths_nm;
 }
 

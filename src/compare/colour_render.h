@@ -17,8 +17,8 @@
 namespace mirage {
 
 /// The channels' wavelengths a compile renders at: `asked` (--wavelengths, named by `option`
-/// in a message), else the scene's Mirage_Wavelengths; nothing for a monochrome scene.  An
-/// error names the option or the scene's place.
+/// in a message), else the scene's Mirage_Wavelengths; nothing for a monochrome scene or one
+/// that does not load (its compile then says why).  An error names the option.
 Result<std::optional<ChannelWavelengths>> compile_colour_wavelengths(
     const CompileOptions& options, const std::vector<double>& asked, const std::string& option);
 
