@@ -162,6 +162,68 @@ std::string inversion_name(int k, bool smoothing) {
     return k == 1 ? name : name + "_" + std::to_string(k);
 }
 
+// The inversions Mirage_Inversion, Mirage_Inversion_2, ... (numbered without gaps), each
+// with its smoothing; `first` becomes the place of the first when it still names the Earth's
+// radius.
+Result<std::vector<Inversion>> read_inversions(const Reader& r, std::string& first) {
+    std::vector<Inversion> inversions;
+    for (int k = 1; k <= kMaxInversions; ++k) {
+        const std::string name = inversion_name(k, false);
+        const std::string smooth_name = inversion_name(k, true);
+        MIRAGE_TRY(v, r.vector(name.c_str(), "<50, 60, 2> (bottom m, top m, rise K)"));
+        MIRAGE_TRY(smooth,
+                   ranged(r, smooth_name.c_str(), 0.0, kMaxSmoothingM, "m, standard deviation"));
+        if (!v) {
+            if (smooth)
+                return make_error(r.at(smooth_name.c_str()) + smooth_name + " without " + name);
+            for (int j = k + 1; j <= kMaxInversions; ++j) {
+                const std::string later = inversion_name(j, false);
+                if (r.has(later.c_str()))
+                    return make_error(r.at(later.c_str()) + later + " without " + name +
+                                      " (number them without gaps)");
+            }
+            break;
+        }
+        const std::string at = r.at(name.c_str()) + name + " = <" + shortest(v->x) + ", " +
+                               shortest(v->y) + ", " + shortest(v->z) + ">: ";
+        if (!(v->x >= 0.0 && v->y > v->x && v->y <= kMaxFormHeightM))
+            return make_error(at +
+                              "its bottom must be at least 0 and its top above the bottom "
+                              "and at most " +
+                              shortest(kMaxFormHeightM) + " m");
+        if (!(std::abs(v->z) <= kMaxFormDeltaK))
+            return make_error(at + "its temperature rise must be from " +
+                              shortest(-kMaxFormDeltaK) + " to " + shortest(kMaxFormDeltaK) + " K");
+        inversions.push_back({v->x, v->y, v->z, smooth ? *smooth : 0.0});
+        if (first == r.at("Mirage_Earth_Radius")) first = r.at(name.c_str());
+    }
+    return inversions;
+}
+
+// Mirage_Upper_Air: "standard" continues the air above Mirage_Top as the standard atmosphere to
+// 47 km (the curved Earth's, for air that gives temperature and pressure), "none" keeps it
+// homogeneous.
+Status read_upper_air(const Reader& r, AirSpec& spec) {
+    MIRAGE_TRY(upper, r.text("Mirage_Upper_Air", "standard"));
+    if (upper) {
+        const std::string at = r.at("Mirage_Upper_Air") + "Mirage_Upper_Air \"" + *upper + "\"";
+        if (*upper != "standard" && *upper != "none")
+            return make_error(at + ": expected \"standard\" (the standard atmosphere above "
+                                   "Mirage_Top, to 47 km) or \"none\" (homogeneous air above)");
+        if (*upper == "standard") {
+            if (spec.earth_radius_m == 0.0)
+                return make_error(at + ": the upper air is the curved Earth's; on flat ground "
+                                       "(Mirage_Earth_Radius = 0) rays never leave the air");
+            if (spec.source == AirSpec::Source::Sounding &&
+                spec.sounding.kind == Sounding::Kind::Index)
+                return make_error(at + ": the upper air continues the air's temperature and "
+                                       "pressure, which a sounding of n does not give");
+            spec.upper_air = true;
+        }
+    }
+    return Ok{};
+}
+
 // Real air: the spec of the general engine, from a sounding or the temperature forms, or an
 // exponential profile declared already (s.profile) on the curved Earth.
 Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
@@ -196,38 +258,7 @@ Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     MIRAGE_TRY(wavelength, ranged(r, "Mirage_Wavelength", 300.0, 1690.0, "nm, Ciddor's range"));
     MIRAGE_TRY(humidity, ranged(r, "Mirage_Humidity", 0.0, 100.0, "%"));
     MIRAGE_TRY(top, ranged(r, "Mirage_Top", 1e-3, kMaxFormHeightM, "m"));
-    MIRAGE_TRY(upper, r.text("Mirage_Upper_Air", "standard"));
-    std::vector<Inversion> inversions;
-    for (int k = 1; k <= kMaxInversions; ++k) {
-        const std::string name = inversion_name(k, false);
-        const std::string smooth_name = inversion_name(k, true);
-        MIRAGE_TRY(v, r.vector(name.c_str(), "<50, 60, 2> (bottom m, top m, rise K)"));
-        MIRAGE_TRY(smooth,
-                   ranged(r, smooth_name.c_str(), 0.0, kMaxSmoothingM, "m, standard deviation"));
-        if (!v) {
-            if (smooth)
-                return make_error(r.at(smooth_name.c_str()) + smooth_name + " without " + name);
-            for (int j = k + 1; j <= kMaxInversions; ++j) {
-                const std::string later = inversion_name(j, false);
-                if (r.has(later.c_str()))
-                    return make_error(r.at(later.c_str()) + later + " without " + name +
-                                      " (number them without gaps)");
-            }
-            break;
-        }
-        const std::string at = r.at(name.c_str()) + name + " = <" + shortest(v->x) + ", " +
-                               shortest(v->y) + ", " + shortest(v->z) + ">: ";
-        if (!(v->x >= 0.0 && v->y > v->x && v->y <= kMaxFormHeightM))
-            return make_error(at +
-                              "its bottom must be at least 0 and its top above the bottom "
-                              "and at most " +
-                              shortest(kMaxFormHeightM) + " m");
-        if (!(std::abs(v->z) <= kMaxFormDeltaK))
-            return make_error(at + "its temperature rise must be from " +
-                              shortest(-kMaxFormDeltaK) + " to " + shortest(kMaxFormDeltaK) + " K");
-        inversions.push_back({v->x, v->y, v->z, smooth ? *smooth : 0.0});
-        if (first == r.at("Mirage_Earth_Radius")) first = r.at(name.c_str());
-    }
+    MIRAGE_TRY(inversions, read_inversions(r, first));
     if (sounding) {
         if (lapse || !inversions.empty() || t_air || t_ground || height)
             return make_error(r.at("Mirage_Sounding") +
@@ -288,22 +319,7 @@ Status read_real_air(const Reader& r, const Scene& scene, MirageSettings& s) {
     if (pressure) spec.ground_pressure_pa = 100.0 * *pressure;
     if (top) spec.top_m = *top;
     spec.earth_radius_m = radius ? *radius : kEarthRadiusM;
-    if (upper) {
-        const std::string at = r.at("Mirage_Upper_Air") + "Mirage_Upper_Air \"" + *upper + "\"";
-        if (*upper != "standard" && *upper != "none")
-            return make_error(at + ": expected \"standard\" (the standard atmosphere above "
-                                   "Mirage_Top, to 47 km) or \"none\" (homogeneous air above)");
-        if (*upper == "standard") {
-            if (spec.earth_radius_m == 0.0)
-                return make_error(at + ": the upper air is the curved Earth's; on flat ground "
-                                       "(Mirage_Earth_Radius = 0) rays never leave the air");
-            if (spec.source == AirSpec::Source::Sounding &&
-                spec.sounding.kind == Sounding::Kind::Index)
-                return make_error(at + ": the upper air continues the air's temperature and "
-                                       "pressure, which a sounding of n does not give");
-            spec.upper_air = true;
-        }
-    }
+    if (auto st = read_upper_air(r, spec); !st) return st.error();
     label += spec.index.formula == IndexFormula::Ciddor
                  ? ", Ciddor " + shortest(spec.index.wavelength_nm) + " nm"
                  : ", Gladstone-Dale";

@@ -255,17 +255,22 @@ bool SceneAccel::traverse(const glm::dvec3& origin, const glm::dvec3& direction,
     return found;
 }
 
-std::optional<SurfaceHit> SceneAccel::closest_hit(const glm::dvec3& origin,
-                                                  const glm::dvec3& direction, double t_min,
-                                                  double t_max) const {
-    Candidate best;
-    if (!traverse<false>(origin, direction, t_min, t_max, best)) return std::nullopt;
+SurfaceHit SceneAccel::surface_hit(const Candidate& best, const glm::dvec3& origin,
+                                   const glm::dvec3& direction) const {
     SurfaceHit hit;
     hit.t = best.hit.t;
     hit.primitive = best.primitive;
     hit.point = origin + best.hit.t * direction;
     hit.normal = shape_normal(shapes_[best.primitive], hit.point, best.hit);
     return hit;
+}
+
+std::optional<SurfaceHit> SceneAccel::closest_hit(const glm::dvec3& origin,
+                                                  const glm::dvec3& direction, double t_min,
+                                                  double t_max) const {
+    Candidate best;
+    if (!traverse<false>(origin, direction, t_min, t_max, best)) return std::nullopt;
+    return surface_hit(best, origin, direction);
 }
 
 std::optional<SurfaceHit> SceneAccel::closest_unbounded_hit(const glm::dvec3& origin,
@@ -276,12 +281,7 @@ std::optional<SurfaceHit> SceneAccel::closest_unbounded_hit(const glm::dvec3& or
     for (const int k : unbounded_items_)
         take_nearer<false>(k, origin, direction, t_min, t_max, best, found);
     if (!found) return std::nullopt;
-    SurfaceHit hit;
-    hit.t = best.hit.t;
-    hit.primitive = best.primitive;
-    hit.point = origin + best.hit.t * direction;
-    hit.normal = shape_normal(shapes_[best.primitive], hit.point, best.hit);
-    return hit;
+    return surface_hit(best, origin, direction);
 }
 
 namespace {

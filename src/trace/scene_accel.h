@@ -117,6 +117,9 @@ class SceneAccel {
     template <bool kAnyShadow>
     bool intersect_item(const Item& item, const glm::dvec3& origin, const glm::dvec3& direction,
                         double t_min, double t_max, Candidate& hit) const;
+    /// The surface hit a candidate stands for, with its point and normal.
+    SurfaceHit surface_hit(const Candidate& best, const glm::dvec3& origin,
+                           const glm::dvec3& direction) const;
     /// Item k's hit, if nearer than `best` (when `found`) or within t_max: then it is `best`.
     template <bool kAnyShadow>
     bool take_nearer(int k, const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
