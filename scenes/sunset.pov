@@ -34,9 +34,16 @@
 
 global_settings { assumed_gamma 1.0 }
 
-#ifndef (Sun_Elevation) #declare Sun_Elevation = -0.7; #end  // true, degrees
-#ifndef (Angle) #declare Angle = 0.8; #end                   // the lens: horizontal field, degrees
-#ifndef (View) #declare View = 0; #end                       // the camera's elevation, degrees
+// The still: the sun's centre 0.7 degrees below the true horizon, through a 0.8 degree lens.
+// Animated (`mirage animate`, clock from 0 to 1), the sun sets from -0.55 to -0.885 degrees,
+// slowing towards the end (the clock eased out: the last quarter of the frames covers the
+// last 0.02 degrees, the last sliver and its green rim) through a 0.6 degree lens, so that
+// the 5" rim is 1.5 pixels at 640x480 rather than 1.
+#ifndef (Sun_Elevation)                                      // true, degrees
+    #declare Sun_Elevation = (clock_on ? -0.5 - 0.385 * (1 - pow(1 - clock, 1.5)) : -0.7);
+#end
+#ifndef (Angle) #declare Angle = (clock_on ? 0.6 : 0.8); #end   // the lens: horizontal field, degrees
+#ifndef (View) #declare View = (clock_on ? 0.08 : 0); #end      // the camera's elevation, degrees
 #declare Eye = 15;                                           // m above the sea
 
 camera {
@@ -46,25 +53,42 @@ camera {
     angle    Angle
 }
 
-// The sky by the direction's height y (`scale 2.2 translate -1.1 * y`, as in
-// fata_morgana.pov: the entry for height Y at 0.5 + Y / 2.2), dim and red low down; over it
-// the sun, a disc of the `spherical` pattern about its direction (the pattern falls from 1 at
-// the centre to 0 at the disc's angular radius; transparent outside), limb-darkened and
-// reddened by the long path through the air (little blue is left).  Its limb fades in over a
-// thousandth of its radius (1"), so that the sky's colour stays continuous
-// (tests/scenes/shipped_sky_test.cpp), far finer than the colours' rims.
+// The dusk sky by the direction's height y (`scale 2.2 translate -1.1 * y`, as in
+// fata_morgana.pov: the entry for height Y at 0.5 + Y / 2.2): deep blue overhead, violet a few
+// degrees up, orange along the horizon; below it (seen only by rays the waves send down) the
+// dark of the sea.  Over it an aureole, the glow of light scattered forward about the sun
+// (falling from its centre to 2.5 degrees away), and the sun, a disc of the `spherical`
+// pattern about its direction (the pattern falls from 1 at the centre to 0 at the disc's
+// angular radius; transparent outside), limb-darkened and reddened by the long path through
+// the air (little blue is left).  Its limb fades in over a thousandth of its radius (1"), so
+// that the sky's colour stays continuous (tests/scenes/shipped_sky_test.cpp), far finer than
+// the colours' rims.
 #declare Sun_Radius = radians(0.2667);
 #declare Sun_Direction = <0, sin(radians(Sun_Elevation)), cos(radians(Sun_Elevation))>;
 sky_sphere {
     pigment {
         gradient y
         color_map {
-            [0.5 - 0.02 / 2.2 color rgb <0.16, 0.05, 0.025>]
-            [0.5              color rgb <0.12, 0.045, 0.025>]
-            [0.5 + 0.02 / 2.2 color rgb <0.06, 0.035, 0.04>]
-            [0.5 + 1 / 2.2    color rgb <0.03, 0.04, 0.10>]
+            [0.5 - 0.06 / 2.2  color rgb <0.006, 0.008, 0.018>]
+            [0.5 - 0.03 / 2.2  color rgb <0.08, 0.016, 0.016>]
+            [0.5 - 0.012 / 2.2 color rgb <0.30, 0.045, 0.012>]
+            [0.5 - 0.004 / 2.2 color rgb <0.20, 0.035, 0.025>]
+            [0.5 + 0.004 / 2.2 color rgb <0.11, 0.025, 0.040>]
+            [0.5 + 0.04 / 2.2  color rgb <0.05, 0.025, 0.070>]
+            [0.5 + 0.3 / 2.2   color rgb <0.015, 0.020, 0.080>]
+            [0.5 + 1 / 2.2     color rgb <0.008, 0.012, 0.050>]
         }
         scale 2.2 translate -1.1 * y
+    }
+    pigment {
+        spherical
+        color_map {
+            [0.0 color rgbt <0.9, 0.25, 0.03, 1>]
+            [0.6 color rgbt <0.9, 0.28, 0.04, 0.85>]
+            [1.0 color rgbt <1.0, 0.40, 0.06, 0.65>]
+        }
+        scale radians(1.2)
+        translate Sun_Direction
     }
     pigment {
         spherical
@@ -80,5 +104,16 @@ sky_sphere {
     }
 }
 
-// The calm sea, dark.
-plane { y, 0 pigment { color rgb <0.015, 0.02, 0.035> } finish { ambient 1 diffuse 0 } }
+// The calm sea: dark water under a low swell 150 m across (long beside the 40 m of sea a pixel
+// row spans along the line of sight 5 km out, so that the three channels' rays, which meet
+// the sea a few metres apart, find the same slope), mirroring the sky and the sun by its
+// Fresnel reflection.  The swell's slopes send the reflected rays degrees up, to the dusk
+// sky's violet, or down to the sea's dark, and only the few level enough to the sun: the sun's
+// glitter path.
+plane {
+    y, 0
+    pigment { color rgb <0.004, 0.006, 0.010> }
+    normal { bumps 12 scale 150 }
+    finish { ambient 1 diffuse 0 reflection { 0, 1 fresnel on } conserve_energy }
+    interior { ior 1.33 }
+}
