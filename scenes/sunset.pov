@@ -104,16 +104,30 @@ sky_sphere {
     }
 }
 
-// The calm sea: dark water under a low swell 150 m across (long beside the 40 m of sea a pixel
-// row spans along the line of sight 5 km out, so that the three channels' rays, which meet
-// the sea a few metres apart, find the same slope), mirroring the sky and the sun by its
-// Fresnel reflection.  The swell's slopes send the reflected rays degrees up, to the dusk
-// sky's violet, or down to the sea's dark, and only the few level enough to the sun: the sun's
-// glitter path.
+// The calm sea: dark water that mirrors the sky and the sun dimly far out.  Near the eye (to
+// 6 km, blended into the far sea over the next 3 km) it shows its own dark colour: a swell there
+// (tried: POV-Ray's `bumps`, 150 m across, with a Fresnel reflection) reflects only the dark
+// sky degrees up and rendered as this colour, uniform, at the cost of a reflected ray a pixel.
+// Farther out, where the rays meet the sea within hundredths of a degree and the duct's paths
+// run on for tens of kilometres, it is a flat, dim mirror (15 %): the sun's and the sky's
+// reflections below them.  A swell's glitter there is chaos (a path moved by a thousandth of
+// a pixel meets the sea metres away, on another slope, so that every channel and every
+// sampling of the same ray finds the sun or the sky at random: coloured streaks, and the check
+// of the tracer's two samplings, tests/trace/near_sampling_test.cpp, fails), while a flat
+// mirror's image moves with the paths as the rest of the picture does.
+#declare Near_Sea = texture {
+    pigment { color rgb <0.0044, 0.0065, 0.0123> }
+    finish { ambient 1 diffuse 0 }
+}
+#declare Far_Sea = texture {
+    pigment { color rgb <0.012, 0.016, 0.028> }
+    finish { ambient 1 diffuse 0 reflection 0.15 }
+}
 plane {
     y, 0
-    pigment { color rgb <0.004, 0.006, 0.010> }
-    normal { bumps 12 scale 150 }
-    finish { ambient 1 diffuse 0 reflection { 0, 1 fresnel on } conserve_energy }
-    interior { ior 1.33 }
+    texture {
+        cylindrical  // 1 at the eye's vertical, falling to 0 at 20 km from it
+        texture_map { [1 - 9000 / 20000 Far_Sea] [1 - 6000 / 20000 Near_Sea] }
+        scale 20000
+    }
 }
