@@ -16,6 +16,8 @@
 //   build/mirage trace scenes/sunset.pov -W 640 -H 480 --declare Sun_Elevation=-0.6 -o higher.png
 //   build/mirage trace scenes/sunset.pov -W 640 -H 480 --declare Sun_Elevation=-0.84 \
 //       --declare Angle=0.2 -o flash.png          (the last strip through a longer lens)
+//   build/mirage animate scenes/sunset.pov --model trace --frames 120 --fps 24 -W 640 -H 480 \
+//       -o build/animate/sunset                    (the sun setting: docs/sunset.mp4)
 // Only the tracer renders this mirage: `mirage compile` refuses it (POV-Ray would see the sky
 // of a curved Earth 220 km wide 34.5 mrad off), and plain POV-Ray
 // (`povray +Lpov_includes scenes/sunset.pov`) renders it without the atmosphere.
