@@ -37,10 +37,11 @@
 global_settings { assumed_gamma 1.0 }
 
 // The still: the sun's centre 0.7 degrees below the true horizon, through a 0.8 degree lens.
-// Animated (`mirage animate`, clock from 0 to 1), the sun sets from -0.55 to -0.885 degrees,
-// slowing towards the end (the clock eased out: the last quarter of the frames covers the
-// last 0.02 degrees, the last sliver and its green rim) through a 0.6 degree lens, so that
-// the 5" rim is 1.5 pixels at 640x480 rather than 1.
+// Animated (`mirage animate`, clock from 0 to 1), the sun sets from -0.5 to -0.885 degrees,
+// slowing towards the end (the clock eased out: the last fifth of the frames covers the last
+// 0.034 degrees, the last sliver and its green rim) through a 0.6 degree lens looking 0.08
+// degrees up, so that the 5" rim is 1.5 pixels at 640x480 rather than 1 (a video's 4:2:0
+// colour, at half the resolution, loses most of a one-pixel rim).  A declared value wins.
 #ifndef (Sun_Elevation)                                      // true, degrees
     #declare Sun_Elevation = (clock_on ? -0.5 - 0.385 * (1 - pow(1 - clock, 1.5)) : -0.7);
 #end
@@ -57,9 +58,9 @@ camera {
 
 // The dusk sky by the direction's height y (`scale 2.2 translate -1.1 * y`, as in
 // fata_morgana.pov: the entry for height Y at 0.5 + Y / 2.2): deep blue overhead, violet a few
-// degrees up, orange along the horizon; below it (seen only by rays the waves send down) the
-// dark of the sea.  Over it an aureole, the glow of light scattered forward about the sun
-// (falling from its centre to 2.5 degrees away), and the sun, a disc of the `spherical`
+// degrees up, orange along the horizon; below it, dark.  Over it an aureole, the glow of light
+// scattered forward about the sun (falling from its centre to nothing 1.2 degrees away), and
+// the sun, a disc of the `spherical`
 // pattern about its direction (the pattern falls from 1 at the centre to 0 at the disc's
 // angular radius; transparent outside), limb-darkened and reddened by the long path through
 // the air (little blue is left).  Its limb fades in over a thousandth of its radius (1"), so
