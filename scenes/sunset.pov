@@ -111,14 +111,13 @@ sky_sphere {
 // 6 km, blended into the far sea over the next 3 km) it shows its own dark colour: a swell there
 // (tried: POV-Ray's `bumps`, 150 m across, with a Fresnel reflection) reflects only the dark
 // sky degrees up and rendered as this colour, uniform, at the cost of a reflected ray a pixel.
-// Farther out, where the rays meet the sea within hundredths of a degree and the duct's paths
+// Farther out, where the rays meet the sea at a tenth of a degree or less and the duct's paths
 // run on for tens of kilometres, it is a flat, dim mirror (15 %): the sun's and the sky's
 // reflections below them.  A swell's glitter there is chaos (a path moved within its
 // tolerance meets the sea elsewhere along the line of sight, on another slope, so that every
 // channel and every sampling of the same ray finds the sun or the sky at random: coloured
 // streaks, and the check of the tracer's two samplings, tests/trace/near_sampling_test.cpp,
-// fails), while a flat
-// mirror's image moves with the paths as the rest of the picture does.
+// fails), while a flat mirror's image moves with the paths as the rest of the picture does.
 #declare Near_Sea = texture {
     pigment { color rgb <0.0044, 0.0065, 0.0123> }
     finish { ambient 1 diffuse 0 }
