@@ -45,7 +45,7 @@ global_settings { assumed_gamma 1.0 }
 #ifndef (Sun_Elevation)                                      // true, degrees
     #declare Sun_Elevation = (clock_on ? -0.5 - 0.385 * (1 - pow(1 - clock, 1.5)) : -0.7);
 #end
-#ifndef (Angle) #declare Angle = (clock_on ? 0.6 : 0.8); #end   // the lens: horizontal field, degrees
+#ifndef (Angle) #declare Angle = (clock_on ? 0.6 : 0.8); #end  // the lens: horizontal, degrees
 #ifndef (View) #declare View = (clock_on ? 0.08 : 0); #end      // the camera's elevation, degrees
 #declare Eye = 15;                                           // m above the sea
 
