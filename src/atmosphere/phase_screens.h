@@ -80,6 +80,13 @@ class PhaseScreens {
     /// divided by sqrt(|d . axis|) (a slanted ray crosses 1 / |d . axis| times as much air, and
     /// the variance of its turn grows as the path), at most that of |d . axis| = kMinObliquity.
     glm::dvec3 turn(int j, const glm::dvec3& p, double t, const glm::dvec3& d) const;
+    /// The same with slant(d) given (it is the same at every screen a straight stretch
+    /// crosses).
+    glm::dvec3 turn(int j, const glm::dvec3& p, double t, const glm::dvec3& d,
+                    double slant) const;
+    /// The factor of a ray of unit direction d's turns: 1 / sqrt(|d . axis|), at most
+    /// 1 / sqrt(kMinObliquity).
+    double slant(const glm::dvec3& d) const;
 
     std::span<const ScreenMode> modes(int j) const { return screens_[j].modes; }
     const TurbulenceSettings& settings() const { return settings_; }
@@ -91,12 +98,15 @@ class PhaseScreens {
   private:
     struct Screen {
         std::vector<ScreenMode> modes;
-        // For the tilt's sum, by component so that it vectorizes: the wavevector, the phase and
-        // the amplitude times the aperture's average 2 J1(x) / x.
-        std::vector<double> kx, ky, kz, phase, weight;
+        // For the tilt's sum, by component so that it vectorizes, padded with modes of no
+        // weight to a whole number of kTiltLanes: the wavevector's components along u_ and v_
+        // in turns per metre (k / 2 pi), the phase in turns, and the mode's tilt per unit of
+        // its sine along u_ and v_, -amplitude * 2 J1(x) / x * (k . u_ or k . v_).
+        std::vector<double> turns_u, turns_v, turns_phase, tilt_u, tilt_v;
     };
     TurbulenceSettings settings_;
     ScreenLayout layout_;
+    glm::dvec3 u_{1.0, 0.0, 0.0}, v_{0.0, 1.0, 0.0};  // unit, across the axis and each other
     double spacing_ = 0.0;
     std::vector<Screen> screens_;
 };
