@@ -102,7 +102,8 @@ TEST(PhaseScreens, TiltIsTheSumOfItsModesGradients) {
             direct -= m.amplitude * std::sin(phase) * m.wavevector;
             scale += m.amplitude * glm::length(m.wavevector);
         }
-        EXPECT_LT(glm::length(s.tilt(j, p, t) - direct), 1e-8 * scale) << i;
+        // The sine's error bound, 1.15e-9 per mode (phase_screens.cpp), and rounding.
+        EXPECT_LT(glm::length(s.tilt(j, p, t) - direct), 2e-9 * scale) << i;
     }
 }
 
