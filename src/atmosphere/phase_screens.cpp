@@ -35,8 +35,8 @@ double disc_average(double qr) {
 // nearest whole number (rounded by adding and taking away 1.5 * 2^52, for |t| below 2^51; the
 // subtraction is exact), then sin(2 pi f) = f P(f^2), P the minimax polynomial of degree 6 in
 // f^2 (Remez, absolute error), whose error is below 1.15e-9 over the whole turn, evaluated
-// in double arithmetic as well (checked on 2e5 points).  Plain double arithmetic, no fused multiply-add: the same bytes on every
-// thread and in every one of its compiled versions below.
+// in double arithmetic as well (checked on 2e5 points).  Without a branch or a table: the same
+// bytes on every thread.
 inline double sin_turns(double t) {
     constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
     const double f = t - ((t + kRound) - kRound);
@@ -55,11 +55,12 @@ inline double sin_turns(double t) {
 // their tilts per unit sine, in kTiltLanes partial sums (mode k in lane k % kTiltLanes, each
 // lane in the modes' order) added in a fixed order at the end, so the result does not depend
 // on how wide the machine's vectors are.  Compiled twice on x86-64 (GCC and Clang pick one when
-// the program starts): for AVX2, four doubles to a vector, and for the baseline's two.  The
-// AVX2 version has no fused multiply-add (that would round differently), so both give the same
-// bytes.
+// the program starts): for AVX2 and FMA (x86-64-v3), four doubles to a vector, and for the
+// baseline's two.  The AVX2 version fuses multiplications and additions, which rounds a little
+// differently from the baseline's (as the library's own exp, log and sin do on such machines):
+// the same bytes on every thread of one machine.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__INTEL_COMPILER)
-#define MIRAGE_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#define MIRAGE_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define MIRAGE_VECTOR_CLONES
 #endif
@@ -169,8 +170,8 @@ Result<PhaseScreens> PhaseScreens::make(const TurbulenceSettings& settings,
         }
         // Modes of no weight up to a whole number of lanes: each adds a zero.
         while (screen.turns_u.size() % kTiltLanes != 0) {
-            for (auto* c : {&screen.turns_u, &screen.turns_v, &screen.turns_phase,
-                            &screen.tilt_u, &screen.tilt_v})
+            for (auto* c : {&screen.turns_u, &screen.turns_v, &screen.turns_phase, &screen.tilt_u,
+                            &screen.tilt_v})
                 c->push_back(0.0);
         }
     }
@@ -191,13 +192,16 @@ double PhaseScreens::phase(int j, const glm::dvec3& p, double t) const {
 }
 
 glm::dvec3 PhaseScreens::tilt(int j, const glm::dvec3& p, double t) const {
-    MIRAGE_CHECK(j >= 0 && j < count());
     const glm::dvec3 x = p - settings_.wind * t;  // frozen flow
-    const Screen& s = screens_[j];
-    const glm::dvec2 g =
-        screen_tilt(s.turns_u.data(), s.turns_v.data(), s.turns_phase.data(), s.tilt_u.data(),
-                    s.tilt_v.data(), s.turns_u.size(), glm::dot(x, u_), glm::dot(x, v_));
+    const glm::dvec2 g = tilt_across(j, glm::dvec2(glm::dot(x, u_), glm::dot(x, v_)));
     return g.x * u_ + g.y * v_;
+}
+
+glm::dvec2 PhaseScreens::tilt_across(int j, const glm::dvec2& at) const {
+    MIRAGE_CHECK(j >= 0 && j < count());
+    const Screen& s = screens_[j];
+    return screen_tilt(s.turns_u.data(), s.turns_v.data(), s.turns_phase.data(), s.tilt_u.data(),
+                       s.tilt_v.data(), s.turns_u.size(), at.x, at.y);
 }
 
 glm::dvec3 PhaseScreens::turn(int j, const glm::dvec3& p, double t, const glm::dvec3& d) const {
@@ -228,14 +232,24 @@ void ScreenWalk::cross(const glm::dvec3& a, const glm::dvec3& d, double length, 
     const int last = screens_->count() - 1;
     double done = 0.0;  // arc length from a to which offset_ is carried
     const double slant = screens_->slant(d);
+    // The same across the axis: the screens' coordinates of a (the wind's motion taken away)
+    // and of d.
+    const glm::dvec3 &u = screens_->across_u(), &v = screens_->across_v();
+    const glm::dvec3 still = a - screens_->settings().wind * t_;  // frozen flow
+    const glm::dvec2 a_across(glm::dot(still, u), glm::dot(still, v));
+    const glm::dvec2 d_across(glm::dot(d, u), glm::dot(d, v));
     auto at_screen = [&](int j) {
         const double zj = screens_->distance(j);
         const double s = length * (zj - za) / (zb - za);
         offset_ += turn_ * (s - done);
+        offset_across_ += turn_across_ * (s - done);
         done = s;
-        const glm::dvec3 p = a + s * d + offset_;
-        out.push_back(p);
-        turn_ += screens_->turn(j, p, t_, d, slant);
+        out.push_back(a + s * d + offset_);
+        // The screen's gradient there, less its part along d, times the slant (turn()).
+        const glm::dvec2 g = screens_->tilt_across(j, a_across + s * d_across + offset_across_);
+        const double along = g.x * d_across.x + g.y * d_across.y;  // g . d
+        turn_across_ += (g - along * d_across) * slant;
+        turn_ += (g.x * u + g.y * v - along * d) * slant;
     };
     if (zb > za) {
         const int first = std::max(0, static_cast<int>(std::floor(za / dz - 0.5)) + 1);
@@ -253,6 +267,7 @@ void ScreenWalk::cross(const glm::dvec3& a, const glm::dvec3& d, double length, 
         }
     }
     offset_ += turn_ * (length - done);
+    offset_across_ += turn_across_ * (length - done);
 }
 
 void ScreenWalk::to(const glm::dvec3& p, std::vector<glm::dvec3>& out) {

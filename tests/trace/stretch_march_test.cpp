@@ -82,9 +82,10 @@ TEST(StretchMarch, EndsAsQueryingEverySegmentDoes) {
             if (a.surface.primitive != 0 && !chord.segment_to(points.back())) ++kink_hits;
         }
     }
-    std::printf("  %d hits (%d on the ground, %d only through the kinks), %d of 4000 with "
-                "fewer queries\n",
-                hits, ground_hits, kink_hits, fewer);
+    std::printf(
+        "  %d hits (%d on the ground, %d only through the kinks), %d of 4000 with "
+        "fewer queries\n",
+        hits, ground_hits, kink_hits, fewer);
     EXPECT_GT(hits, 400);
     EXPECT_GT(ground_hits, 100);
     EXPECT_GT(kink_hits, 20);
