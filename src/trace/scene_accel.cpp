@@ -361,8 +361,7 @@ bool SceneAccel::region_may_meet(const glm::dvec3& origin, const glm::dvec2& hea
     return false;
 }
 
-bool SceneAccel::segment_may_meet(const glm::dvec3& a, const glm::dvec3& b,
-                                  double margin) const {
+bool SceneAccel::segment_may_meet(const glm::dvec3& a, const glm::dvec3& b, double margin) const {
     MIRAGE_CHECK(margin >= 0.0);
     if (nodes_.empty()) return false;
     // The segment a + t (b - a), t in [0, 1], against each box grown by the margin (a
