@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <span>
 #include <vector>
@@ -80,6 +81,20 @@ class PhaseScreens {
     /// divided by sqrt(|d . axis|) (a slanted ray crosses 1 / |d . axis| times as much air, and
     /// the variance of its turn grows as the path), at most that of |d . axis| = kMinObliquity.
     glm::dvec3 turn(int j, const glm::dvec3& p, double t, const glm::dvec3& d) const;
+    /// The same with slant(d) given (it is the same at every screen a straight stretch
+    /// crosses).
+    glm::dvec3 turn(int j, const glm::dvec3& p, double t, const glm::dvec3& d, double slant) const;
+    /// The factor of a ray of unit direction d's turns: 1 / sqrt(|d . axis|), at most
+    /// 1 / sqrt(kMinObliquity).
+    double slant(const glm::dvec3& d) const;
+
+    /// Screen j's tilt at the point whose coordinates across the axis (along u and v of
+    /// across()) are `at`, the wind's motion already taken away: tilt() without the
+    /// projections, in the same coordinates.
+    glm::dvec2 tilt_across(int j, const glm::dvec2& at) const;
+    /// The two unit vectors across the axis that the screens' coordinates are taken along.
+    const glm::dvec3& across_u() const { return u_; }
+    const glm::dvec3& across_v() const { return v_; }
 
     std::span<const ScreenMode> modes(int j) const { return screens_[j].modes; }
     const TurbulenceSettings& settings() const { return settings_; }
@@ -91,12 +106,15 @@ class PhaseScreens {
   private:
     struct Screen {
         std::vector<ScreenMode> modes;
-        // For the tilt's sum, by component so that it vectorizes: the wavevector, the phase and
-        // the amplitude times the aperture's average 2 J1(x) / x.
-        std::vector<double> kx, ky, kz, phase, weight;
+        // For the tilt's sum, by component so that it vectorizes, padded with modes of no
+        // weight to a whole number of kTiltLanes: the wavevector's components along u_ and v_
+        // in turns per metre (k / 2 pi), the phase in turns, and the mode's tilt per unit of
+        // its sine along u_ and v_, -amplitude * 2 J1(x) / x * (k . u_ or k . v_).
+        std::vector<double> turns_u, turns_v, turns_phase, tilt_u, tilt_v;
     };
     TurbulenceSettings settings_;
     ScreenLayout layout_;
+    glm::dvec3 u_{1.0, 0.0, 0.0}, v_{0.0, 1.0, 0.0};  // unit, across the axis and each other
     double spacing_ = 0.0;
     std::vector<Screen> screens_;
 };
@@ -140,6 +158,10 @@ class ScreenWalk {
     glm::dvec3 at_;           // the unperturbed point reached
     glm::dvec3 offset_{0.0};  // the perturbed point minus the unperturbed, m
     glm::dvec3 turn_{0.0};    // the direction's change so far, rad
+    // offset_ and turn_ across the axis, in the screens' coordinates (PhaseScreens::across),
+    // kept beside them: the next crossing's screen coordinates wait on them alone, not on a
+    // projection of the three-dimensional sums.
+    glm::dvec2 offset_across_{0.0}, turn_across_{0.0};
 };
 
 }  // namespace mirage

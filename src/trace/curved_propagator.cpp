@@ -8,6 +8,7 @@
 
 #include "atmosphere/sky_exit.h"
 #include "scene/camera.h"
+#include "trace/stretch_march.h"
 #include "util/check.h"
 
 namespace mirage {
@@ -317,19 +318,16 @@ class Shimmer {
     Shimmer(const CurvedSettings& s, const glm::dvec3& start)
         : unit_(s.unit_m), walk_(*s.turbulence, s.turbulence_time_s, start * s.unit_m) {}
 
-    /// Marches on to the image of the path's point `to`: the kinks on the way, then it.  True
-    /// on a hit.
-    bool to(PolylineMarch& march, const glm::dvec3& to) {
+    /// Marches on to the image of the path's point `to`: the kinks on the way, then it,
+    /// queried only where they can meet something (march_stretch).  True on a hit.
+    bool to(PolylineMarch& march, const SceneAccel& accel, const glm::dvec3& to) {
         walk_.to(to * unit_, points());
-        for (const glm::dvec3& p : points())
-            if (march.segment_to(p / unit_)) return true;
-        return false;
+        return march_stretch(march, accel, in_scene_units());
     }
     /// The last straight ray along unit d: the kinks ahead, then the ray turned by them all.
-    bool ray(PolylineMarch& march, const glm::dvec3& d) {
+    bool ray(PolylineMarch& march, const SceneAccel& accel, const glm::dvec3& d) {
         walk_.ray(d, points());
-        for (const glm::dvec3& p : points())
-            if (march.segment_to(p / unit_)) return true;
+        if (march_stretch(march, accel, in_scene_units())) return true;
         return march.ray(walk_.direction(d));
     }
     glm::dvec3 direction(const glm::dvec3& d) const { return walk_.direction(d); }
@@ -346,6 +344,13 @@ class Shimmer {
   private:
     static std::vector<glm::dvec3>& points() {
         thread_local std::vector<glm::dvec3> p;
+        return p;
+    }
+    // points() in scene units.
+    const std::vector<glm::dvec3>& in_scene_units() const {
+        thread_local std::vector<glm::dvec3> p;
+        p.clear();
+        for (const glm::dvec3& q : points()) p.push_back(q / unit_);
         return p;
     }
     double unit_;
@@ -381,8 +386,8 @@ PathEndDirections end_directions(const glm::dvec2& heading, const CurvedPath& cp
 
 // Marches `cp` from `origin` on from the march's current point (which is `origin`), through
 // the screens of `shimmer` when given.
-PathHit march_from(PolylineMarch& march, const glm::dvec3& origin, const glm::dvec2& heading,
-                   const CurvedPath& cp, Shimmer* shimmer = nullptr) {
+PathHit march_from(PolylineMarch& march, const SceneAccel& accel, const glm::dvec3& origin,
+                   const glm::dvec2& heading, const CurvedPath& cp, Shimmer* shimmer = nullptr) {
     const auto& points = cp.path.points;
     const auto& clear = cp.path.clear_length;
     auto world = [&](const glm::dvec2& p) {
@@ -391,9 +396,9 @@ PathHit march_from(PolylineMarch& march, const glm::dvec3& origin, const glm::dv
     // The first sample is the start itself.
     for (std::size_t k = 1; k < points.size(); ++k) {
         if (shimmer) {
-            // A stretch known clear of the scene is tested all the same: the perturbed path
-            // is not the one the sampler cleared.
-            if (shimmer->to(march, world(points[k]))) return march.result();
+            // The sampler's clear stretches are not the perturbed path's: each stretch is
+            // tested as walked, untested where it passes far from everything.
+            if (shimmer->to(march, accel, world(points[k]))) return march.result();
         } else if (k <= clear.size() && clear[k - 1] > 0.0) {
             march.skip_to(world(points[k]), clear[k - 1]);
         } else if (march.segment_to(world(points[k]))) {
@@ -402,7 +407,7 @@ PathHit march_from(PolylineMarch& march, const glm::dvec3& origin, const glm::dv
     }
     const PathEndDirections end = end_directions(heading, cp);
     if (shimmer) {
-        shimmer->ray(march, end.final_direction);
+        shimmer->ray(march, accel, end.final_direction);
     } else if (cp.path.end_clear) {
         march.skip_ray(end.final_direction);
     } else {
@@ -420,9 +425,9 @@ PathHit march(const SceneAccel& accel, const glm::dvec3& origin, const glm::dvec
     PolylineMarch march(accel, origin);
     if (settings.turbulence) {
         Shimmer shimmer(settings, origin);
-        return march_from(march, origin, heading, cp, &shimmer);
+        return march_from(march, accel, origin, heading, cp, &shimmer);
     }
-    return march_from(march, origin, heading, cp);
+    return march_from(march, accel, origin, heading, cp);
 }
 
 // A straight ray, walked through the screens when the settings have them.
@@ -431,7 +436,7 @@ PathHit march_straight(const SceneAccel& accel, const RayStart& start,
     if (!settings.turbulence) return straight.propagate(accel, start);
     PolylineMarch march(accel, start.origin);
     Shimmer shimmer(settings, start.origin);
-    shimmer.ray(march, start.direction);
+    shimmer.ray(march, accel, start.direction);
     return march.result();
 }
 
@@ -504,7 +509,7 @@ PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& sta
         PolylineMarch march(accel, start.origin);
         std::optional<Shimmer> shimmer;
         if (settings_.turbulence) shimmer.emplace(settings_, start.origin);
-        if (shimmer ? shimmer->to(march, at_ground) : march.segment_to(at_ground))
+        if (shimmer ? shimmer->to(march, accel, at_ground) : march.segment_to(at_ground))
             return march.result();
         RayStart rest = start;
         rest.origin = at_ground;
@@ -513,13 +518,14 @@ PathHit CurvedPropagator::propagate(const SceneAccel& accel, const RayStart& sta
             curved_path(settings_, accel, rest.origin, rest.direction, rest.travelled);
         if (!cp) {
             if (shimmer) {
-                shimmer->ray(march, start.direction);
+                shimmer->ray(march, accel, start.direction);
             } else {
                 march.ray(start.direction);
             }
             return march.result();
         }
-        return march_from(march, rest.origin, cp->heading, *cp, shimmer ? &*shimmer : nullptr);
+        return march_from(march, accel, rest.origin, cp->heading, *cp,
+                          shimmer ? &*shimmer : nullptr);
     }
     // One path per thread, its storage reused from ray to ray.
     thread_local CurvedPath cp;

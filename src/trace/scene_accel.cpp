@@ -361,6 +361,38 @@ bool SceneAccel::region_may_meet(const glm::dvec3& origin, const glm::dvec2& hea
     return false;
 }
 
+bool SceneAccel::segment_may_meet(const glm::dvec3& a, const glm::dvec3& b, double margin) const {
+    MIRAGE_CHECK(margin >= 0.0);
+    if (nodes_.empty()) return false;
+    // The segment a + t (b - a), t in [0, 1], against each box grown by the margin (a
+    // point, b == a, is tested as a ray in every face's plane: inside where it lies).
+    const SlabRay ray(a, b - a);
+    const glm::dvec3 grow(margin);
+    auto meets = [&](const Aabb& box) {
+        Aabb grown;
+        grown.lo = box.lo - grow;
+        grown.hi = box.hi + grow;
+        return slab_test(grown, ray, 0.0, 1.0);
+    };
+    std::array<int, kMaxDepth + 8> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        if (!meets(node.box)) continue;
+        if (node.count > 0) {
+            for (int k = node.first; k < node.first + node.count; ++k) {
+                if (meets(boxes_[order_[k]])) return true;
+            }
+            continue;
+        }
+        MIRAGE_CHECK(top + 2 <= static_cast<int>(stack.size()));
+        stack[top++] = node.first;
+        stack[top++] = static_cast<int>(&node - nodes_.data()) + 1;
+    }
+    return false;
+}
+
 bool SceneAccel::any_shadow_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
                                 double t_max) const {
     Candidate best;

@@ -69,6 +69,11 @@ class SceneAccel {
     bool region_may_meet(const glm::dvec3& origin, const glm::dvec2& heading,
                          const PathRegion& region) const;
 
+    /// Whether the box of a finite primitive, grown by `margin` on every side, meets the
+    /// segment from a to b: false only when every point within `margin` of the segment is
+    /// outside every finite primitive's box, so no query along it can meet one.  Thread-safe.
+    bool segment_may_meet(const glm::dvec3& a, const glm::dvec3& b, double margin) const;
+
     /// Whether a plane covers the ground, y = 0 (with normal +y or -y).
     bool has_ground_plane() const { return ground_plane_; }
     /// Whether an unbounded primitive other than a ground plane is in the scene (a plane
