@@ -15,7 +15,7 @@ namespace mirage {
 namespace {
 
 using testing::integrate_kappa;
-using testing::tilt_correlation;
+using testing::TiltCorrelations;
 using testing::tilt_variance_ap;
 using testing::tilt_variance_integral;
 using testing::uniform;
@@ -328,8 +328,8 @@ TEST(PhaseScreens, TiltsDecorrelateAsTheWindMovesTheAir) {
         EXPECT_LT(glm::length(later - moved), 1e-9 * glm::length(later));
         EXPECT_GT(glm::length(later - f.tilt(2, p, 0.5)), 1e-3 * glm::length(later));
     }
-    const std::vector<double> rhos = {0.002, 0.005, 0.01, 0.02};
-    std::vector<double> c0(rhos.size(), 0.0), c1(rhos.size(), 0.0), c2(rhos.size(), 0.0);
+    TiltCorrelations corr({0.002, 0.005, 0.01, 0.02});
+    const std::vector<double>& rhos = corr.rhos();
     std::mt19937_64 rng(99);
     for (int r = 0; r < 300; ++r) {
         s.seed = 50000 + r;
@@ -339,20 +339,11 @@ TEST(PhaseScreens, TiltsDecorrelateAsTheWindMovesTheAir) {
             const double now = plane_wave_tilt(f, a, 0.0).y;
             for (std::size_t j = 0; j < rhos.size(); ++j) {
                 const double later = plane_wave_tilt(f, a, rhos[j] / s.wind.x).y;
-                c0[j] += now * now;
-                c1[j] += now * later;
-                c2[j] += later * later;
+                corr.add(j, now, later);
             }
         }
     }
-    for (std::size_t j = 0; j < rhos.size(); ++j) {
-        const double rho = rhos[j];
-        const double expected = tilt_correlation(s, rho);
-        const double measured = c1[j] / std::sqrt(c0[j] * c2[j]);
-        std::printf("  rho = %.3f m: tilt correlation %.3f, expected %.3f\n", rho, measured,
-                    expected);
-        EXPECT_NEAR(measured, expected, 0.08) << "rho = " << rho;
-    }
+    corr.expect_near(s, 0.08, "tilt correlation");
 }
 
 // The walk: a point at distance L is seen moved by sum_j turn_j (L - z_j) (the spherical wave's

@@ -14,7 +14,7 @@ namespace mirage {
 namespace {
 
 using testing::integrate_kappa;
-using testing::tilt_correlation;
+using testing::TiltCorrelations;
 using testing::tilt_variance_ap;
 using testing::tilt_variance_integral;
 using testing::uniform;
@@ -280,8 +280,8 @@ TEST(Turbulence, TiltsDecorrelateAsTheWindMovesTheAir) {
     s.wind = glm::dvec3(0.0, 0.0, 5.0);
     const double length = 10.0;
     const int realizations = 1500, rays = 16;
-    const std::vector<double> rhos = {0.002, 0.005, 0.01, 0.02};
-    std::vector<double> c0(rhos.size(), 0.0), c1(rhos.size(), 0.0), c2(rhos.size(), 0.0);
+    TiltCorrelations corr({0.002, 0.005, 0.01, 0.02});
+    const std::vector<double>& rhos = corr.rhos();
     std::mt19937_64 rng(99);
     for (int r = 0; r < realizations; ++r) {
         s.seed = 50000 + r;
@@ -292,20 +292,11 @@ TEST(Turbulence, TiltsDecorrelateAsTheWindMovesTheAir) {
             const double now = deflection(f, path, 0.0).y;
             for (std::size_t j = 0; j < rhos.size(); ++j) {
                 const double later = deflection(f, path, rhos[j] / s.wind.z).y;
-                c0[j] += now * now;
-                c1[j] += now * later;
-                c2[j] += later * later;
+                corr.add(j, now, later);
             }
         }
     }
-    for (std::size_t j = 0; j < rhos.size(); ++j) {
-        const double rho = rhos[j];
-        const double expected = tilt_correlation(s, rho);
-        const double measured = c1[j] / std::sqrt(c0[j] * c2[j]);
-        std::printf("  rho = %.3f m: tilt correlation %.3f, expected %.3f\n", rho, measured,
-                    expected);
-        EXPECT_NEAR(measured, expected, 0.08) << "rho = " << rho;
-    }
+    corr.expect_near(s, 0.08, "tilt correlation");
 }
 
 }  // namespace

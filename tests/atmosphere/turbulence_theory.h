@@ -5,7 +5,12 @@
 
 #include <cmath>
 #include <numbers>
+#include <cstdio>
 #include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
 
 #include "atmosphere/turbulence.h"
 
@@ -64,5 +69,34 @@ inline double tilt_correlation(const TurbulenceSettings& s, double rho) {
     });
     return b / b0;
 }
+
+/// A tilt (or image shift) now and a separation's worth of wind later, summed over samples for
+/// each separation: the measured correlation c1 / sqrt(c0 c2), held to tilt_correlation.
+class TiltCorrelations {
+  public:
+    explicit TiltCorrelations(std::vector<double> rhos)
+        : rhos_(std::move(rhos)), c0_(rhos_.size()), c1_(rhos_.size()), c2_(rhos_.size()) {}
+    const std::vector<double>& rhos() const { return rhos_; }
+    void add(std::size_t j, double now, double later) {
+        c0_[j] += now * now;
+        c1_[j] += now * later;
+        c2_[j] += later * later;
+    }
+    /// Each separation's measured correlation within `tolerance` of tilt_correlation(s, rho);
+    /// `what` names it in the printed table.
+    void expect_near(const TurbulenceSettings& s, double tolerance, const std::string& what) const {
+        for (std::size_t j = 0; j < rhos_.size(); ++j) {
+            const double rho = rhos_[j];
+            const double expected = tilt_correlation(s, rho);
+            const double measured = c1_[j] / std::sqrt(c0_[j] * c2_[j]);
+            std::printf("  rho = %.3f m: %s %.3f, expected %.3f\n", rho, what.c_str(), measured,
+                        expected);
+            EXPECT_NEAR(measured, expected, tolerance) << "rho = " << rho;
+        }
+    }
+
+  private:
+    std::vector<double> rhos_, c0_, c1_, c2_;
+};
 
 }  // namespace mirage::testing

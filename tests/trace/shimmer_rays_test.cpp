@@ -19,7 +19,7 @@ namespace mirage {
 namespace {
 
 using testing::integrate_kappa;
-using testing::tilt_correlation;
+using testing::TiltCorrelations;
 using testing::tilt_variance_ap;
 using testing::tilt_variance_integral;
 using testing::uniform;
@@ -112,8 +112,8 @@ TEST(ShimmerRays, SuccessiveFramesAreCorrelatedAsTheWindSays) {
     t.inner_scale_m = 0.01;
     t.outer_scale_m = 100.0;
     t.wind = glm::dvec3(0.0, 4.0, 0.0);  // rising air: the vertical shift decorrelates
-    const std::vector<double> rhos = {0.002, 0.005, 0.01, 0.02};
-    std::vector<double> c0(rhos.size()), c1(rhos.size()), c2(rhos.size());
+    TiltCorrelations corr({0.002, 0.005, 0.01, 0.02});
+    const std::vector<double>& rhos = corr.rhos();
     std::mt19937_64 rng(4);
     for (int r = 0; r < 200; ++r) {
         t.seed = 500 + r;
@@ -129,20 +129,11 @@ TEST(ShimmerRays, SuccessiveFramesAreCorrelatedAsTheWindSays) {
             const double a = image_shift(now, setup.parsed.accel, d).x;
             for (std::size_t j = 0; j < rhos.size(); ++j) {
                 const double b = image_shift(later[j], setup.parsed.accel, d).x;
-                c0[j] += a * a;
-                c1[j] += a * b;
-                c2[j] += b * b;
+                corr.add(j, a, b);
             }
         }
     }
-    for (std::size_t j = 0; j < rhos.size(); ++j) {
-        const double rho = rhos[j];
-        const double expected = tilt_correlation(t, rho);
-        const double measured = c1[j] / std::sqrt(c0[j] * c2[j]);
-        std::printf("  rho = %.3f m: shift correlation %.3f, expected %.3f\n", rho, measured,
-                    expected);
-        EXPECT_NEAR(measured, expected, 0.08) << "rho = " << rho;
-    }
+    corr.expect_near(t, 0.08, "shift correlation");
 }
 
 // The same air in a scene drawn in centimetres: the same shifts (the screens are in metres).
